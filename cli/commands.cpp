@@ -1,0 +1,83 @@
+#include "cli/commands.hpp"
+
+#include "forward/io/input_error.hpp"
+#include "forward/material/material_card.hpp"
+#include "forward/scenes/material_point_scene.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+
+namespace spifit::cli {
+
+void add_lankford_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  struct Opts { double r0 = 0, r45 = 0, r90 = 0; bool json = false; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("lankford", "Hill 1948 coefficients from Lankford r-values (thesis eq. C.3, G + H = 2, N = L = M)");
+  cmd->add_option("--r0", o->r0, "r-value at 0 deg to RD")->required()->check(CLI::PositiveNumber);
+  cmd->add_option("--r45", o->r45, "r-value at 45 deg to RD")->required()->check(CLI::PositiveNumber);
+  cmd->add_option("--r90", o->r90, "r-value at 90 deg to RD")->required()->check(CLI::PositiveNumber);
+  cmd->add_flag("--json", o->json, "print JSON (keys F, G, H, N, L, M)");
+  cmd->callback([o, &g, &exit_code] {
+    const auto h = material::hill_from_lankford({o->r0, o->r45, o->r90});
+    const auto a = material::abaqus_potential_from_hill(h);
+    if (o->json) {
+      nlohmann::json j{{"F", h.F}, {"G", h.G}, {"H", h.H}, {"N", h.N}, {"L", h.L}, {"M", h.M},
+                       {"abaqus_potential", {{"R11", a.R11}, {"R22", a.R22}, {"R33", a.R33}, {"R12", a.R12}, {"R13", a.R13}, {"R23", a.R23}}}};
+      std::cout << j.dump(2) << "\n";
+    } else if (!g.quiet) {
+      std::printf("Hill 1948 (thesis notation, G + H = 2, N = L = M) from r0 = %g, r45 = %g, r90 = %g:\n", o->r0, o->r45, o->r90);
+      std::printf("  F = %.4f  G = %.4f  H = %.4f  N = L = M = %.4f\n", h.F, h.G, h.H, h.N);
+      std::printf("Abaqus *POTENTIAL: R11 = %.4f  R22 = %.4f  R33 = %.4f  R12 = R13 = R23 = %.4f\n", a.R11, a.R22, a.R33, a.R12);
+    }
+    exit_code = 0;
+  });
+}
+
+void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  auto* cmd = app.add_subcommand("material", "Inspect material cards");
+  cmd->require_subcommand(1);
+  auto card = std::make_shared<std::string>();
+  auto* show = cmd->add_subcommand("show", "Summary of a card: parameters, initial yield stress, predicted r-values");
+  show->add_option("CARD", *card, "material card (TOML)")->required();
+  show->callback([card, &g, &exit_code] {
+    const auto c = material::load_material_card(*card);
+    if (!g.quiet) std::cout << material::describe_material_card(c);
+    exit_code = 0;
+  });
+}
+
+void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  struct Opts { std::string scene, out; bool force = false; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json (+ DIR/curve.csv for material points)");
+  cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
+  cmd->add_option("--out", o->out, "output directory")->required();
+  cmd->add_flag("--force", o->force, "replace an existing output directory");
+  cmd->callback([o, &g, &exit_code] {
+    const auto scene = scene::read_scene_file(o->scene);  // input errors before touching --out
+    const auto dir = io::OutputDirectory::prepare(o->out, o->force);
+    const auto rep = scene::run_material_point_scene(scene, dir);
+    const auto& s = rep.summary;
+    if (!rep.ok) {
+      std::cerr << "spifit: " << scene.name << " failed: " << s.value("message", std::string("?")) << "\n";
+      exit_code = 1;
+      return;
+    }
+    if (!g.quiet) {
+      std::printf("%-16s %-12s %-14s", scene.name.c_str(), s["kind"].get<std::string>().c_str(), scene.card.name.c_str());
+      if (s.contains("r_value") && !s["r_value"].is_null()) std::printf("  r(%.2f) = %.4f", s["r_value_strain"].get<double>(), s["r_value"].get<double>());
+      if (s.contains("initial_yield_stress")) std::printf("  sigma_y0 = %.3f", s["initial_yield_stress"].get<double>());
+      if (s.contains("yield_stress") && !s["yield_stress"].is_null()) std::printf("  sigma_0.2 = %.3f", s["yield_stress"].get<double>());
+      if (s.contains("reverse_yield_stress")) std::printf("  reverse yield = %.3f", s["reverse_yield_stress"].get<double>());
+      std::printf("  final stress = %.3f MPa at strain %.3f  (%.2f ms, %d increments)\n", s["final_stress"].get<double>(),
+                  s["final_strain"].get<double>(), 1e3 * s["wall_seconds"].get<double>(), s["increments"].get<int>());
+      if (g.verbose) std::printf("  -> %s/summary.json, %s/curve.csv\n", o->out.c_str(), o->out.c_str());
+    }
+    exit_code = 0;
+  });
+}
+
+}  // namespace spifit::cli

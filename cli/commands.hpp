@@ -1,0 +1,18 @@
+#pragma once
+// Subcommands of the spifit executable. The CLI only parses options and calls the libraries.
+#include <CLI/CLI.hpp>
+
+namespace spifit::cli {
+
+struct GlobalOptions {
+  int threads = 0;  // 0: OpenMP default
+  bool quiet = false;
+  bool verbose = false;
+};
+
+// Each registers a subcommand; its callback sets the process exit code through `exit_code`.
+void add_lankford_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
+void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
+void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
+
+}  // namespace spifit::cli

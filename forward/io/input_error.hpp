@@ -1,0 +1,27 @@
+#pragma once
+// Errors a user can cause (bad file, key or value). Reported on one line as
+//   FILE: KEY = VALUE: what is wrong
+// by the CLI, with exit code 2. Numerical failures are not InputErrors.
+#include <stdexcept>
+#include <string>
+
+namespace spifit::io {
+
+class InputError : public std::runtime_error {
+ public:
+  InputError(std::string file, std::string key, std::string value, std::string message);
+  const std::string& file() const { return file_; }
+  const std::string& key() const { return key_; }
+  const std::string& value() const { return value_; }
+  const std::string& message() const { return message_; }
+
+ private:
+  std::string file_, key_, value_, message_;
+};
+
+// Collapses a (possibly multi-line) text to one line of at most max_chars characters.
+std::string one_line(const std::string& text, std::size_t max_chars = 200);
+// Shortest round-trip text for a number, as written in an error message.
+std::string format_number(double v);
+
+}  // namespace spifit::io

@@ -1,0 +1,148 @@
+#include "forward/io/toml_reader.hpp"
+
+#include <toml.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+namespace spifit::io {
+
+struct TomlTable::Impl {
+  std::shared_ptr<const toml::value> root;
+  const toml::value* table = nullptr;
+  std::string file;
+  std::string prefix;  // "" or "section."
+};
+
+namespace {
+std::string scalar_text(const toml::value& v) {
+  if (v.is_floating()) return format_number(v.as_floating());
+  if (v.is_integer()) return std::to_string(v.as_integer());
+  if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
+  if (v.is_string()) return "\"" + v.as_string().str + "\"";
+  if (v.is_array()) return "[array]";
+  if (v.is_table()) return "{table}";
+  return "?";
+}
+const char* type_name(const toml::value& v) {
+  if (v.is_floating() || v.is_integer()) return "a number";
+  if (v.is_boolean()) return "a boolean";
+  if (v.is_string()) return "a string";
+  if (v.is_array()) return "an array";
+  if (v.is_table()) return "a table";
+  return "a date or time";
+}
+}  // namespace
+
+TomlTable::TomlTable(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+
+TomlTable TomlTable::parse_file(const std::string& path) {
+  if (!std::filesystem::exists(path)) throw InputError(path, "", "", "file not found");
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "", "not a regular file");
+  auto impl = std::make_shared<Impl>();
+  try {
+    impl->root = std::make_shared<const toml::value>(toml::parse(path));
+  } catch (const toml::syntax_error& e) {
+    // toml11 prints a multi-line excerpt; keep its first lines as one line.
+    throw InputError(path, "", "", "malformed TOML: " + one_line(e.what(), 240));
+  } catch (const std::exception& e) {
+    throw InputError(path, "", "", std::string("cannot read TOML: ") + one_line(e.what(), 240));
+  }
+  impl->table = impl->root.get();
+  impl->file = path;
+  return TomlTable(impl);
+}
+
+const std::string& TomlTable::file() const { return impl_->file; }
+std::string TomlTable::key_path(const std::string& key) const { return impl_->prefix + key; }
+bool TomlTable::has(const std::string& key) const { return impl_->table->contains(key); }
+
+std::vector<std::string> TomlTable::keys() const {
+  std::vector<std::string> out;
+  for (const auto& kv : impl_->table->as_table()) out.push_back(kv.first);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+void TomlTable::fail(const std::string& key, const std::string& message) const {
+  throw InputError(impl_->file, key_path(key), has(key) ? value_text(key) : "", message);
+}
+
+std::string TomlTable::value_text(const std::string& key) const {
+  return has(key) ? scalar_text(impl_->table->at(key)) : "";
+}
+
+double TomlTable::number(const std::string& key) const {
+  if (!has(key)) fail(key, "required key is missing");
+  const toml::value& v = impl_->table->at(key);
+  double x = 0.0;
+  if (v.is_floating()) x = v.as_floating();
+  else if (v.is_integer()) x = static_cast<double>(v.as_integer());
+  else fail(key, std::string("expected a number, got ") + type_name(v));
+  if (!std::isfinite(x)) fail(key, "must be finite");
+  return x;
+}
+double TomlTable::number(const std::string& key, double fallback) const {
+  return has(key) ? number(key) : fallback;
+}
+int TomlTable::integer(const std::string& key, int fallback) const {
+  if (!has(key)) return fallback;
+  const toml::value& v = impl_->table->at(key);
+  if (!v.is_integer()) fail(key, std::string("expected an integer, got ") + type_name(v));
+  const auto i = v.as_integer();
+  if (i < -1000000000 || i > 1000000000) fail(key, "integer out of range");
+  return static_cast<int>(i);
+}
+std::string TomlTable::string(const std::string& key) const {
+  if (!has(key)) fail(key, "required key is missing");
+  const toml::value& v = impl_->table->at(key);
+  if (!v.is_string()) fail(key, std::string("expected a string, got ") + type_name(v));
+  return v.as_string().str;
+}
+std::string TomlTable::string(const std::string& key, const std::string& fallback) const {
+  return has(key) ? string(key) : fallback;
+}
+bool TomlTable::boolean(const std::string& key, bool fallback) const {
+  if (!has(key)) return fallback;
+  const toml::value& v = impl_->table->at(key);
+  if (!v.is_boolean()) fail(key, std::string("expected true or false, got ") + type_name(v));
+  return v.as_boolean();
+}
+std::vector<double> TomlTable::number_list(const std::string& key) const {
+  if (!has(key)) fail(key, "required key is missing");
+  const toml::value& v = impl_->table->at(key);
+  if (!v.is_array()) fail(key, std::string("expected an array of numbers, got ") + type_name(v));
+  std::vector<double> out;
+  for (const auto& e : v.as_array()) {
+    if (e.is_floating()) out.push_back(e.as_floating());
+    else if (e.is_integer()) out.push_back(static_cast<double>(e.as_integer()));
+    else fail(key, std::string("array entries must be numbers, found ") + type_name(e));
+    if (!std::isfinite(out.back())) fail(key, "array entries must be finite");
+  }
+  return out;
+}
+std::optional<TomlTable> TomlTable::table(const std::string& key) const {
+  if (!has(key)) return std::nullopt;
+  const toml::value& v = impl_->table->at(key);
+  if (!v.is_table()) fail(key, std::string("expected a table [") + key_path(key) + "], got " + type_name(v));
+  auto impl = std::make_shared<Impl>(*impl_);
+  impl->table = &v;
+  impl->prefix = impl_->prefix + key + ".";
+  return TomlTable(impl);
+}
+
+void TomlTable::allow_only(const std::vector<std::string>& allowed) const {
+  for (const auto& k : keys()) {
+    if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {
+      std::ostringstream os;
+      os << "unknown key (allowed:";
+      for (const auto& a : allowed) os << ' ' << a;
+      os << ')';
+      fail(k, os.str());
+    }
+  }
+}
+
+}  // namespace spifit::io

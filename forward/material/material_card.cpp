@@ -1,0 +1,199 @@
+#include "forward/material/material_card.hpp"
+
+#include "forward/io/toml_reader.hpp"
+#include "forward/material/swift_hardening.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace spifit::material {
+
+using io::format_number;
+using io::InputError;
+
+std::string to_string(KinematicLaw law) {
+  switch (law) {
+    case KinematicLaw::armstrong_frederick: return "armstrong_frederick";
+    case KinematicLaw::ziegler: return "ziegler";
+    default: return "none";
+  }
+}
+
+bool kinematic_law_from_string(const std::string& s, KinematicLaw* law) {
+  if (s == "none") *law = KinematicLaw::none;
+  else if (s == "armstrong_frederick" || s == "af") *law = KinematicLaw::armstrong_frederick;
+  else if (s == "ziegler") *law = KinematicLaw::ziegler;
+  else return false;
+  return true;
+}
+
+Hill48 MaterialCard::hill() const {
+  return {params.F, params.G, params.H, params.L, params.M, params.N};
+}
+
+void MaterialCard::set_hill(const Hill48& h) {
+  params.F = h.F; params.G = h.G; params.H = h.H;
+  params.L = h.L; params.M = h.M; params.N = h.N;
+}
+
+MaterialCard read_material_card(const io::TomlTable& root) {
+  root.allow_only({"card", "elastic", "hill", "swift", "armstrong_frederick", "ziegler", "density"});
+  MaterialCard card;
+  card.file = root.file();
+  auto& p = card.params;
+
+  if (auto t = root.table("card")) {
+    t->allow_only({"name", "description", "source", "units"});
+    card.name = t->string("name", "");
+    card.description = t->string("description", "");
+    card.source = t->string("source", "");
+    const std::string units = t->string("units", "mm-N-MPa");
+    if (units != "mm-N-MPa") t->fail("units", "only mm-N-MPa (mm, N, MPa, s, t) is supported");
+  }
+  if (card.name.empty()) {
+    std::string stem = card.file;
+    const auto slash = stem.find_last_of('/');
+    if (slash != std::string::npos) stem = stem.substr(slash + 1);
+    const auto dot = stem.rfind(".toml");
+    card.name = dot == std::string::npos ? stem : stem.substr(0, dot);
+  }
+  card.density = root.number("density", card.density);
+
+  auto elastic = root.table("elastic");
+  if (!elastic) root.fail("elastic", "required table [elastic] (E, nu) is missing");
+  elastic->allow_only({"E", "nu"});
+  p.E = elastic->number("E");
+  p.nu = elastic->number("nu");
+
+  if (auto h = root.table("hill")) {
+    h->allow_only({"F", "G", "H", "N", "L", "M"});
+    p.F = h->number("F");
+    p.G = h->number("G");
+    p.H = h->number("H");
+    p.N = h->number("N");
+    p.L = h->number("L", p.N);
+    p.M = h->number("M", p.N);
+  }  // no [hill]: von Mises (F = G = H = 1, N = L = M = 3)
+
+  if (auto s = root.table("swift")) {
+    s->allow_only({"K", "eps0", "n"});
+    p.plastic = true;
+    p.K = s->number("K");
+    p.eps0 = s->number("eps0");
+    p.n = s->number("n");
+  } else {
+    p.plastic = false;  // elastic-only card
+  }
+
+  auto af = root.table("armstrong_frederick");
+  auto zi = root.table("ziegler");
+  if (af && zi) root.fail("ziegler", "a card has at most one kinematic law ([armstrong_frederick] or [ziegler])");
+  if ((af || zi) && !p.plastic) root.fail(af ? "armstrong_frederick" : "ziegler", "kinematic hardening needs a [swift] table");
+  if (af) {
+    af->allow_only({"CX", "Xsat"});
+    p.kinematic = KinematicLaw::armstrong_frederick;
+    p.CX = af->number("CX");
+    p.Xsat = af->number("Xsat");
+  }
+  if (zi) {
+    zi->allow_only({"CA", "GA"});
+    p.kinematic = KinematicLaw::ziegler;
+    p.CA = zi->number("CA");
+    p.GA = zi->number("GA");
+  }
+  validate_material_card(card);
+  return card;
+}
+
+MaterialCard load_material_card(const std::string& path) {
+  return read_material_card(io::TomlTable::parse_file(path));
+}
+
+void validate_material_card(const MaterialCard& card) {
+  const auto& p = card.params;
+  auto bad = [&](const std::string& key, double v, const std::string& msg) {
+    throw InputError(card.file, key, format_number(v), msg);
+  };
+  if (!(p.E > 0)) bad("elastic.E", p.E, "Young's modulus must be > 0 MPa");
+  if (!(p.nu > -1.0 && p.nu < 0.5)) bad("elastic.nu", p.nu, "Poisson's ratio must lie in (-1, 0.5)");
+  // Hill convexity (SPEC §2); name the coefficient involved in the violated condition.
+  if (!(p.N > 0)) bad("hill.N", p.N, "must be > 0");
+  if (!(p.L > 0)) bad("hill.L", p.L, "must be > 0");
+  if (!(p.M > 0)) bad("hill.M", p.M, "must be > 0");
+  if (!(p.F + p.G > 0)) bad("hill.F", p.F, "F + G = " + format_number(p.F + p.G) + " must be > 0 (convex Hill)");
+  if (!(p.G + p.H > 0)) bad("hill.G", p.G, "G + H = " + format_number(p.G + p.H) + " must be > 0 (convex Hill)");
+  if (!(p.H + p.F > 0)) bad("hill.H", p.H, "H + F = " + format_number(p.H + p.F) + " must be > 0 (convex Hill)");
+  if (const std::string msg = hill_convexity_violation(card.hill()); !msg.empty()) {
+    throw InputError(card.file, "hill", "F = " + format_number(p.F) + ", G = " + format_number(p.G) + ", H = " + format_number(p.H),
+                     "not a convex yield surface: " + msg);
+  }
+  if (p.plastic) {
+    if (!(p.K > 0)) bad("swift.K", p.K, "must be > 0 MPa");
+    if (!(p.eps0 > 0)) bad("swift.eps0", p.eps0, "must be > 0");
+    if (!(p.n >= 0 && p.n < 1)) bad("swift.n", p.n, "must satisfy 0 <= n < 1 (n = 0: perfectly plastic)");
+  }
+  if (p.kinematic == KinematicLaw::armstrong_frederick) {
+    if (!(p.CX >= 0)) bad("armstrong_frederick.CX", p.CX, "must be >= 0");
+    if (!(p.Xsat >= 0)) bad("armstrong_frederick.Xsat", p.Xsat, "must be >= 0 MPa");
+  }
+  if (p.kinematic == KinematicLaw::ziegler) {
+    if (!(p.CA >= 0)) bad("ziegler.CA", p.CA, "must be >= 0 MPa");
+    if (!(p.GA >= 0)) bad("ziegler.GA", p.GA, "must be >= 0");
+  }
+  if (!(card.density > 0)) bad("density", card.density, "must be > 0 t/mm^3");
+}
+
+std::string describe_material_card(const MaterialCard& card) {
+  const auto& p = card.params;
+  const Hill48 h = card.hill();
+  std::ostringstream os;
+  os << "material card  " << card.name << "\n";
+  if (!card.description.empty()) os << "description    " << card.description << "\n";
+  if (!card.source.empty()) os << "source         " << card.source << "\n";
+  if (!card.file.empty()) os << "file           " << card.file << "\n";
+  os << "elastic        E = " << format_number(p.E) << " MPa, nu = " << format_number(p.nu) << "\n";
+  os << "yield          Hill 1948 (thesis notation, eq. 3.5)" << (h.is_von_mises() ? " = von Mises" : "") << ": F = "
+     << format_number(h.F) << ", G = " << format_number(h.G) << ", H = " << format_number(h.H)
+     << ", N = " << format_number(h.N) << ", L = " << format_number(h.L) << ", M = " << format_number(h.M) << "\n";
+  if (std::abs(h.G + h.H - 2.0) > 1e-9) os << "               note: G + H = " << format_number(h.G + h.H) << " (not normalised to 2)\n";
+  if (!p.plastic) {
+    os << "hardening      none (elastic-only card)\n";
+    return os.str();
+  }
+  const double s0 = swift_yield_stress(p, 0.0);
+  os << "hardening      Swift K = " << format_number(p.K) << " MPa, eps0 = " << format_number(p.eps0)
+     << ", n = " << format_number(p.n) << (p.n == 0.0 ? " (perfectly plastic)" : "") << "\n";
+  if (p.kinematic == KinematicLaw::armstrong_frederick) {
+    os << "kinematic      Armstrong-Frederick CX = " << format_number(p.CX) << ", Xsat = " << format_number(p.Xsat)
+       << " MPa (uniaxial von Mises offset saturates at 1.5 Xsat = " << format_number(1.5 * p.Xsat) << " MPa)\n";
+  } else if (p.kinematic == KinematicLaw::ziegler) {
+    os << "kinematic      Ziegler CA = " << format_number(p.CA) << " MPa, GA = " << format_number(p.GA);
+    if (p.GA > 0) os << " (uniaxial offset saturates at CA/GA = " << format_number(p.CA / p.GA) << " MPa)";
+    os << "\n";
+  } else {
+    os << "kinematic      none (isotropic hardening)\n";
+  }
+  char line[160];
+  os << "initial yield  sigma_F(0) = K eps0^n = " << format_number(s0) << " MPa\n";
+  os << "uniaxial       angle   r-value   initial yield [MPa]\n";
+  for (double deg : {0.0, 45.0, 90.0}) {
+    const double a = deg * std::numbers::pi / 180.0;
+    std::snprintf(line, sizeof line, "               %5.0f   %7.4f   %8.3f\n", deg, r_value_at_angle(h, a),
+                  s0 / uniaxial_stress_factor(h, a));
+    os << line;
+  }
+  const Lankford r = lankford_from_hill(h);
+  std::snprintf(line, sizeof line, "               r_bar = (r0 + 2 r45 + r90)/4 = %.4f, delta_r = (r0 - 2 r45 + r90)/2 = %.4f\n",
+                (r.r0 + 2 * r.r45 + r.r90) / 4, (r.r0 - 2 * r.r45 + r.r90) / 2);
+  os << line;
+  std::snprintf(line, sizeof line, "shear          initial yield tau = sigma_F(0)/sqrt(N) = %.3f MPa\n", s0 / shear_stress_factor(h));
+  os << line;
+  const AbaqusPotential a = abaqus_potential_from_hill(h);
+  std::snprintf(line, sizeof line, "Abaqus         *POTENTIAL R11..R23 = %.4f, %.4f, %.4f, %.4f, %.4f, %.4f\n", a.R11,
+                a.R22, a.R33, a.R12, a.R13, a.R23);
+  os << line;
+  return os.str();
+}
+
+}  // namespace spifit::material

@@ -1,0 +1,36 @@
+#pragma once
+// A material card: the constitutive parameters of one material, read from a TOML file
+// (schema in docs/file-formats.md) and validated.
+#include "forward/material/hill48.hpp"
+#include "forward/material/material_params.hpp"
+
+#include <string>
+
+namespace spifit::io { class TomlTable; }
+
+namespace spifit::material {
+
+struct MaterialCard {
+  std::string name;         // short identifier, e.g. "aa3003o_c3c4"
+  std::string description;  // one line
+  std::string source;       // provenance (thesis tables)
+  std::string file;         // where it was read from ("" if built in code)
+  double density = 2.7e-9;  // t/mm^3
+  MaterialParams<double> params;
+
+  Hill48 hill() const;
+  void set_hill(const Hill48& h);
+};
+
+// Reads and validates a card; throws io::InputError naming file, key and value.
+MaterialCard load_material_card(const std::string& path);
+MaterialCard read_material_card(const io::TomlTable& root);
+
+// Validates the parameters (convex Hill, E > 0, -1 < nu < 0.5, K > 0, eps0 > 0, 0 <= n < 1,
+// kinematic constants >= 0); throws io::InputError with the card's file and the key.
+void validate_material_card(const MaterialCard& card);
+
+// Readable summary: parameters, initial yield stress, predicted r-values (closed form).
+std::string describe_material_card(const MaterialCard& card);
+
+}  // namespace spifit::material

@@ -1,0 +1,40 @@
+#pragma once
+// Constitutive parameters of the Hill48 + Swift + {none, Armstrong-Frederick, Ziegler} law,
+// templated on the scalar type so that ceres::Jet gives exact parameter derivatives of a
+// material-point curve (NUMERICS.md, "Template the scalar type where cheap").
+#include <string>
+
+namespace spifit::material {
+
+enum class KinematicLaw { none, armstrong_frederick, ziegler };
+
+std::string to_string(KinematicLaw law);
+// Accepts "none", "armstrong_frederick" (alias "af"), "ziegler"; returns false otherwise.
+bool kinematic_law_from_string(const std::string& s, KinematicLaw* law);
+
+template <typename T>
+struct MaterialParams {
+  // Isotropic elasticity [MPa, -].
+  T E = T(72600.0), nu = T(0.36);
+  // Hill 1948, thesis notation (factor 1/2, L on xz, M on yz).
+  T F = T(1.0), G = T(1.0), H = T(1.0), L = T(3.0), M = T(3.0), N = T(3.0);
+  // Swift hardening sigma_F = K (eps0 + p)^n  [MPa, -, -]; n = 0 is perfect plasticity at K.
+  bool plastic = true;
+  T K = T(180.0), eps0 = T(0.00109), n = T(0.21);
+  // Kinematic hardening. Armstrong-Frederick (eq. 3.8): dX = CX (Xsat deps_p - X dp).
+  // Ziegler (eq. 3.9): dX = CA (sigma - X) dp / sigma_F - GA X dp.
+  KinematicLaw kinematic = KinematicLaw::none;
+  T CX = T(0.0), Xsat = T(0.0), CA = T(0.0), GA = T(0.0);
+
+  template <typename U>
+  MaterialParams<U> cast() const {
+    MaterialParams<U> o;
+    o.E = U(E); o.nu = U(nu);
+    o.F = U(F); o.G = U(G); o.H = U(H); o.L = U(L); o.M = U(M); o.N = U(N);
+    o.plastic = plastic; o.K = U(K); o.eps0 = U(eps0); o.n = U(n);
+    o.kinematic = kinematic; o.CX = U(CX); o.Xsat = U(Xsat); o.CA = U(CA); o.GA = U(GA);
+    return o;
+  }
+};
+
+}  // namespace spifit::material

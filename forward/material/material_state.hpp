@@ -1,0 +1,32 @@
+#pragma once
+// State of one integration point, and the status a constitutive update reports instead of
+// throwing (NUMERICS.md; MGIS/MFront's integrate -> ok / failed + suggested step factor).
+#include <Eigen/Core>
+
+namespace spifit::material {
+
+template <typename T, int Dim>
+struct MaterialState {
+  using Vec = Eigen::Matrix<T, Dim, 1>;
+  Vec stress = Vec::Zero();          // Kirchhoff stress [MPa], tensor components
+  Vec plastic_strain = Vec::Zero();  // logarithmic, engineering shear
+  // Back-stress [MPa]. In plane stress (Dim = 3) this is the shifted in-plane back-stress
+  // X~ = (Xxx - Xzz, Xyy - Xzz, Xxy) that enters the yield function; Xzz is kept below.
+  Vec back_stress = Vec::Zero();
+  T back_stress_zz = T(0.0);  // plane stress only
+  T eqps = T(0.0);            // equivalent plastic strain, work-conjugate to sigma_eq (eq. 3.2)
+  T plastic_work = T(0.0);    // sum of sigma . d eps_p [MJ/m^3 = MPa]
+};
+
+enum class UpdateStatus { ok, failed };
+
+struct UpdateResult {
+  UpdateStatus status = UpdateStatus::ok;
+  double suggested_scale = 1.0;  // < 1 on failure: retry with this fraction of the increment
+  int iterations = 0;
+  bool plastic = false;
+  const char* reason = "";
+  bool ok() const { return status == UpdateStatus::ok; }
+};
+
+}  // namespace spifit::material

@@ -1,0 +1,260 @@
+#pragma once
+// Implicit return mapping for Hill48 + Swift + {none, Armstrong-Frederick, Ziegler}
+// hardening, in 3D (Dim = 6) or plane stress (Dim = 3), with the consistent tangent.
+//
+// Algorithm (docs/numerics-material.md gives the derivation):
+//  * Elastic predictor sigma_tr = sigma_0 + C d_eps; xi = sigma - X is the shifted stress.
+//  * Plastic corrector, closest-point projection: d_eps_p = dl * P xi / (2 sigma_F) and
+//    sigma = sigma_tr - C d_eps_p, with dl the equivalent plastic strain increment.
+//  * The back-stress ODE is integrated exponentially over the step with the end-of-step flow
+//    direction (exact for proportional loading, e.g. von Mises uniaxial AF and Ziegler):
+//      AF:      X1 = m X0 + k psi(CX dl) A d_eps_p,    m = exp(-CX dl), k = CX Xsat
+//      Ziegler: X1 = m X0 + psi(GA dl) dl CA xi / sigma_F,  m = exp(-GA dl)
+//    with psi(x) = (1 - e^-x)/x. psi -> 1 recovers backward Euler at small steps.
+//  * For a given dl, xi solves the linear system  Mat(dl) xi = b(dl) with
+//      Mat = a I + q (C + e A) P,  q = dl / (2 sigma_F(p0 + dl)),  b = sigma_tr - m X0,
+//    (a, e, m) depending on the law. The scalar consistency condition
+//      phi(dl) = sigma_eq(xi(dl)) - sigma_F(p0 + dl) = 0
+//    is solved by Newton's method safeguarded by bisection on a bracket, so that large
+//    increments (10 % strain and more) converge.
+//  * The consistent tangent follows from implicit differentiation of (xi, dl).
+// With T = ceres::Jet the converged result carries exact parameter derivatives: a final
+// Newton update is always applied at the converged point.
+#include "forward/material/material_params.hpp"
+#include "forward/material/material_state.hpp"
+#include "forward/material/scalar.hpp"
+#include "forward/material/stress_space.hpp"
+#include "forward/material/swift_hardening.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+#include <type_traits>
+
+namespace spifit::material {
+
+struct ReturnMappingOptions {
+  double tolerance = 1e-13;  // |phi| <= tolerance * sigma_F
+  int max_iterations = 80;
+};
+
+template <typename T, int Dim>
+class ReturnMapping {
+ public:
+  using Space = StressSpace<T, Dim>;
+  using Vec = typename Space::Vec;
+  using Mat = typename Space::Mat;
+  using State = MaterialState<T, Dim>;
+
+  explicit ReturnMapping(const MaterialParams<T>& params, ReturnMappingOptions options = {})
+      : m_(params), options_(options), C_(Space::elastic(params)), P_(Space::hill(params)),
+        A_(Space::kinematic_map()) {}
+
+  const MaterialParams<T>& params() const { return m_; }
+  const Mat& elastic_matrix() const { return C_; }
+  const Mat& hill_matrix() const { return P_; }
+
+  T equivalent_stress(const Vec& xi) const {
+    using std::sqrt;
+    const T q = 0.5 * xi.dot(P_ * xi);
+    return value_of(q) > 0.0 ? sqrt(q) : T(0.0);
+  }
+  T yield_stress(const T& p) const { return swift_yield_stress(m_, p); }
+  T yield_function(const State& s) const {
+    return equivalent_stress(s.stress - s.back_stress) - yield_stress(s.eqps);
+  }
+  // d sigma_eq / d sigma at the shifted stress: the plastic strain rate (engineering shear)
+  // per unit equivalent plastic strain rate.
+  Vec flow_direction(const State& s) const {
+    const Vec xi = s.stress - s.back_stress;
+    const T seq = equivalent_stress(xi);
+    return value_of(seq) > 0.0 ? Vec(P_ * xi / (2.0 * seq)) : Vec(Vec::Zero());
+  }
+  // Rate of the back-stress decay per unit plastic strain; the scenes bound rate * dl per
+  // sub-step for accuracy (0 for isotropic hardening, where the update is exact for
+  // proportional loading).
+  double kinematic_rate(const State& s) const {
+    switch (m_.kinematic) {
+      case KinematicLaw::armstrong_frederick: return value_of(m_.CX);
+      case KinematicLaw::ziegler: return value_of(m_.GA + m_.CA / yield_stress(s.eqps));
+      default: return 0.0;
+    }
+  }
+
+  // Integrates from the committed state s0 over the strain increment d_eps (engineering
+  // shear) into s1; fills the consistent tangent d sigma_1 / d eps if requested.
+  UpdateResult integrate(const State& s0, const Vec& d_eps, State& s1, Mat* tangent) const {
+    UpdateResult result;
+    s1 = s0;
+    const Vec sigma_tr = s0.stress + C_ * d_eps;
+    s1.stress = sigma_tr;
+    for (int i = 0; i < Dim; ++i) {
+      if (!is_finite(sigma_tr(i))) return fail(result, "non-finite trial stress (strain increment or state is NaN/inf)");
+    }
+    if (!m_.plastic) {
+      if (tangent) *tangent = C_;
+      return result;
+    }
+    const T s_ref = yield_stress(s0.eqps);
+    const T f_tr = equivalent_stress(sigma_tr - s0.back_stress) - s_ref;
+    if (!is_finite(f_tr)) return fail(result, "non-finite trial stress");
+    if (value_of(f_tr) <= options_.tolerance * value_of(s_ref)) {
+      if (tangent) *tangent = C_;
+      return result;
+    }
+    result.plastic = true;
+
+    Eval ev;
+    T dl = T(0.0);
+    evaluate(s0, sigma_tr, dl, ev);
+    double lo = 0.0, hi = std::numeric_limits<double>::infinity();
+    bool converged = false;
+    constexpr bool exact_derivatives = !std::is_same_v<T, double>;
+    for (int it = 0; it < options_.max_iterations; ++it) {
+      result.iterations = it + 1;
+      const double phi = value_of(ev.phi);
+      const double dl_v = value_of(dl);
+      if (ev.valid) {
+        if (phi > 0.0) lo = std::max(lo, dl_v); else hi = std::min(hi, dl_v);
+      } else {
+        hi = std::min(hi, dl_v);
+      }
+      if (ev.valid && std::abs(phi) <= options_.tolerance * value_of(ev.s) && it > 0) {
+        converged = true;
+        break;
+      }
+      if (hi - lo <= 1e-15 * std::max(1.0, hi) && std::isfinite(hi)) {
+        converged = ev.valid;
+        break;
+      }
+      const double dphi = ev.valid ? value_of(ev.dphi) : 0.0;
+      const double cand = dphi < 0.0 ? dl_v - phi / dphi : -1.0;
+      if (dphi < 0.0 && cand > lo && cand < hi && std::isfinite(cand)) {
+        dl = dl - ev.phi / ev.dphi;  // Newton update carried out in T (derivatives)
+      } else if (std::isfinite(hi)) {
+        dl = T(0.5 * (lo + hi));
+      } else {
+        dl = T(std::max(4.0 * dl_v, 1e-6));
+      }
+      evaluate(s0, sigma_tr, dl, ev);
+    }
+    if (!converged) return fail(result, "return mapping did not converge");
+    if constexpr (exact_derivatives) {
+      dl = dl - ev.phi / ev.dphi;
+      evaluate(s0, sigma_tr, dl, ev);
+    }
+    if (!ev.valid) return fail(result, "return mapping ended in an invalid state");
+
+    // Converged: assemble the end-of-step state.
+    const Vec d_eps_p = ev.q * (P_ * ev.xi);
+    s1.stress = sigma_tr - C_ * d_eps_p;
+    s1.back_stress = s1.stress - ev.xi;
+    s1.plastic_strain = s0.plastic_strain + d_eps_p;
+    s1.eqps = s0.eqps + dl;
+    s1.plastic_work = s0.plastic_work + s1.stress.dot(d_eps_p);
+    if constexpr (Dim == 3) {
+      const T d_eps_p_zz = -(d_eps_p(0) + d_eps_p(1));
+      switch (m_.kinematic) {
+        case KinematicLaw::armstrong_frederick:
+          s1.back_stress_zz = ev.m * s0.back_stress_zz + ev.e * d_eps_p_zz;
+          break;
+        case KinematicLaw::ziegler:
+          s1.back_stress_zz = ev.m * s0.back_stress_zz / ev.a;
+          break;
+        default:
+          break;
+      }
+    }
+    for (int i = 0; i < Dim; ++i) {
+      if (!is_finite(s1.stress(i)) || !is_finite(s1.back_stress(i))) {
+        return fail(result, "non-finite stress after return mapping");
+      }
+    }
+    if (tangent) {
+      const Mat& Minv = ev.Minv;
+      const Vec grad = P_ * ev.xi / (2.0 * ev.seq);
+      const Vec phi_tr = Minv.transpose() * grad;
+      const Vec g = -phi_tr / ev.dphi;  // d dl / d sigma_tr
+      const Mat dxi = Minv + ev.dxi * g.transpose();
+      const Mat CP = C_ * P_;
+      const Mat dsig_dtr = Mat::Identity() - ev.q * CP * dxi - (CP * ev.xi) * (ev.dq * g.transpose());
+      *tangent = dsig_dtr * C_;
+    }
+    return result;
+  }
+
+ private:
+  struct Eval {
+    T s, ds, q, dq, a, e, m;
+    Vec xi, dxi;
+    T seq, phi, dphi;
+    Mat Minv;  // inverse of Mat(dl): closed-form cofactors for 3x3, LU for 6x6
+    bool valid = false;
+  };
+
+  static UpdateResult fail(UpdateResult r, const char* why) {
+    r.status = UpdateStatus::failed;
+    r.suggested_scale = 0.5;
+    r.reason = why;
+    return r;
+  }
+
+  // xi(dl), phi(dl) and d phi / d dl for the current law (see the header comment).
+  void evaluate(const State& s0, const Vec& sigma_tr, const T& dl, Eval& ev) const {
+    using std::exp;
+    // Swift: one pow per evaluation; the slope is n sigma_F / (eps0 + p).
+    ev.s = yield_stress(s0.eqps + dl);
+    ev.ds = m_.n * ev.s / (m_.eps0 + s0.eqps + dl);
+    ev.q = dl / (2.0 * ev.s);
+    ev.dq = (ev.s - dl * ev.ds) / (2.0 * ev.s * ev.s);
+    T a = T(1.0), da = T(0.0), e = T(0.0), de = T(0.0), m = T(1.0), dm = T(0.0);
+    switch (m_.kinematic) {
+      case KinematicLaw::armstrong_frederick: {
+        const T x = m_.CX * dl;
+        const T k = m_.CX * m_.Xsat;
+        e = k * psi_exp(x);
+        de = k * m_.CX * psi_exp_derivative(x);
+        m = exp(-x);
+        dm = -m_.CX * m;
+        break;
+      }
+      case KinematicLaw::ziegler: {
+        const T x = m_.GA * dl;
+        const T psi = psi_exp(x);
+        a = 1.0 + m_.CA * psi * dl / ev.s;
+        da = m_.CA * (m_.GA * psi_exp_derivative(x) * dl / ev.s + psi / ev.s - psi * dl * ev.ds / (ev.s * ev.s));
+        m = exp(-x);
+        dm = -m_.GA * m;
+        break;
+      }
+      default:
+        break;
+    }
+    ev.a = a;
+    ev.e = e;
+    ev.m = m;
+    const Mat KP = (C_ + e * A_) * P_;
+    const Mat M = a * Mat::Identity() + ev.q * KP;
+    const Mat dM = da * Mat::Identity() + ev.dq * KP + (ev.q * de) * (A_ * P_);
+    const Vec b = sigma_tr - m * s0.back_stress;
+    const Vec db = -dm * s0.back_stress;
+    if constexpr (Dim <= 4) ev.Minv = M.inverse();
+    else ev.Minv = M.partialPivLu().inverse();
+    ev.xi = ev.Minv * b;
+    ev.seq = equivalent_stress(ev.xi);
+    ev.phi = ev.seq - ev.s;
+    ev.dxi = ev.Minv * (db - dM * ev.xi);
+    ev.valid = is_finite(ev.phi) && value_of(ev.seq) > 0.0 && is_finite(ev.Minv(0, 0));
+    if (ev.valid) {
+      const Vec grad = P_ * ev.xi / (2.0 * ev.seq);
+      ev.dphi = grad.dot(ev.dxi) - ev.ds;
+      ev.valid = is_finite(ev.dphi);
+    }
+  }
+
+  MaterialParams<T> m_;
+  ReturnMappingOptions options_;
+  Mat C_, P_, A_;
+};
+
+}  // namespace spifit::material

@@ -1,0 +1,180 @@
+// The spifit executable: version/help, lankford, material show, run; exit codes and the
+// one-line error contract; the --out/--force rule.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+Result run(const std::string& args) {
+  const fs::path tmp = fs::temp_directory_path() / ("spifit_cli_err_" + std::to_string(::getpid()));
+  const std::string cmd = std::string(SPIFIT_EXE) + " " + args + " 2>" + tmp.string();
+  Result r;
+  FILE* p = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p)) r.out += buf.data();
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream f(tmp);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  r.err = ss.str();
+  fs::remove(tmp);
+  return r;
+}
+
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("spifit_cli_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+std::string write_temp(const std::string& name, const std::string& text) {
+  const fs::path p = fs::temp_directory_path() / ("spifit_cli_" + std::to_string(::getpid()) + "_" + name);
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+}  // namespace
+
+TEST(Cli, VersionAndHelp) {
+  const auto v = run("--version");
+  EXPECT_EQ(v.code, 0);
+  EXPECT_NE(v.out.find("spifit "), std::string::npos);
+  for (const char* sub : {"--help", "lankford --help", "material --help", "material show --help", "run --help"}) {
+    const auto h = run(sub);
+    EXPECT_EQ(h.code, 0) << sub;
+    EXPECT_NE(h.out.find("Usage"), std::string::npos) << sub;
+  }
+  EXPECT_EQ(run("").code, 2);
+  EXPECT_EQ(run("frobnicate").code, 2);
+}
+
+TEST(Cli, LankfordJson) {
+  const auto r = run("lankford --r0 0.68 --r45 0.73 --r90 0.66 --json");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["F"].get<double>(), 1.2266, 1e-4);
+  EXPECT_NEAR(j["G"].get<double>(), 1.1905, 1e-4);
+  EXPECT_NEAR(j["H"].get<double>(), 0.8095, 1e-4);
+  EXPECT_NEAR(j["N"].get<double>(), 2.9729, 1e-4);
+  const auto t = nlohmann::json::parse(run("lankford --r0 0.6765 --r45 0.7317 --r90 0.6593 --json").out);
+  EXPECT_NEAR(t["F"].get<double>(), 1.224, 5e-4);  // Table C.2
+  EXPECT_NEAR(t["N"].get<double>(), 2.977, 5e-4);
+  EXPECT_EQ(run("lankford --r0 -1 --r45 0.73 --r90 0.66").code, 2);
+  EXPECT_EQ(run("lankford --r0 0.68").code, 2);
+}
+
+TEST(Cli, MaterialShow) {
+  const auto r = run("material show " + src("materials/aa3003o_c3c4.toml"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("42.967"), std::string::npos);
+  EXPECT_NE(r.out.find("0.6764"), std::string::npos);  // r0 = H/G
+  const auto m = run("material show /nonexistent/card.toml");
+  EXPECT_EQ(m.code, 2);
+  EXPECT_EQ(count_lines(m.err), 1);
+  EXPECT_NE(m.err.find("/nonexistent/card.toml"), std::string::npos);
+}
+
+TEST(Cli, RunTensileWritesSummaryAndCurve) {
+  const auto out = fresh_dir("tensile");
+  const auto r = run("run " + src("experiments/aa3003o/scenes/tensile_45.toml") + " --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream f(out / "summary.json");
+  const auto s = nlohmann::json::parse(f);
+  EXPECT_EQ(s["kind"], "tensile");
+  EXPECT_EQ(s["status"], "ok");
+  EXPECT_EQ(s["material"], "aa3003o_c3c4");
+  EXPECT_GT(s["wall_seconds"].get<double>(), 0.0);
+  EXPECT_NEAR(s["r_value"].get<double>(), 1.1798, 1e-4);
+  EXPECT_NEAR(s["initial_yield_stress"].get<double>(), 37.439, 1e-2);
+  EXPECT_TRUE(s["yield_stress"].is_number());
+  std::ifstream c(out / "curve.csv");
+  std::string header;
+  std::getline(c, header);
+  EXPECT_EQ(header.rfind("increment,segment,strain,cumulative_strain,stress,", 0), 0u) << header;
+  int rows = 0;
+  for (std::string line; std::getline(c, line);) ++rows;
+  EXPECT_EQ(rows, 201);
+
+  // An existing --out is never overwritten without --force ...
+  const auto again = run("run " + src("experiments/aa3003o/scenes/tensile_45.toml") + " --out " + out.string());
+  EXPECT_EQ(again.code, 2);
+  EXPECT_EQ(count_lines(again.err), 1);
+  EXPECT_NE(again.err.find("--force"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "curve.csv"));
+  // ... and is replaced with it.
+  EXPECT_EQ(run("run " + src("experiments/aa3003o/scenes/tensile_00.toml") + " --out " + out.string() + " --force").code, 0);
+  std::ifstream f2(out / "summary.json");
+  EXPECT_EQ(nlohmann::json::parse(f2)["angle_deg"].get<double>(), 0.0);
+  fs::remove_all(out);
+}
+
+TEST(Cli, BadScenesExitTwoWithOneLine) {
+  const std::string mat = src("materials/aa3003o_c3c4.toml");
+  struct Case { std::string name, text, must_contain; };
+  const std::vector<Case> cases{
+      {"malformed.toml", "[scene\nkind = 1", "malformed TOML"},
+      {"unknown_key.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"" + mat + "\"\nangel = 45.0\n", "scene.angel"},
+      {"wrong_type.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"" + mat + "\"\nincrements = \"many\"\n", "scene.increments = \"many\""},
+      {"unknown_kind.toml", "[scene]\nkind = \"tensle\"\nmaterial = \"" + mat + "\"\n", "scene.kind = \"tensle\""},
+      {"missing_card.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"nope.toml\"\n", "scene.material = \"nope.toml\""},
+      {"negative_K.toml", "", "swift.K = -180"},
+  };
+  const std::string bad_card = write_temp("bad_card.toml", "[elastic]\nE = 72600.0\nnu = 0.36\n[swift]\nK = -180.0\neps0 = 0.001\nn = 0.2\n");
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string text = c.text.empty() ? "[scene]\nkind = \"tensile\"\nmaterial = \"" + bad_card + "\"\n" : c.text;
+    const std::string path = write_temp(c.name, text);
+    const auto out = fresh_dir("bad");
+    const auto r = run("run " + path + " --out " + out.string());
+    EXPECT_EQ(r.code, 2);
+    EXPECT_EQ(count_lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(c.must_contain), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << "input errors must not create the output directory";
+    fs::remove(path);
+  }
+  fs::remove(bad_card);
+  const auto missing = run("run /nonexistent/scene.toml --out " + fresh_dir("x").string());
+  EXPECT_EQ(missing.code, 2);
+  EXPECT_NE(missing.err.find("/nonexistent/scene.toml"), std::string::npos);
+}
+
+// A numerically failing run leaves only a summary marked failed (exit code 1).
+TEST(Cli, FailedRunLeavesOnlyAFailedSummary) {
+  const std::string mat = src("materials/aa3003o_c3c4.toml");
+  const std::string path = write_temp("failing.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"" + mat +
+                                                          "\"\nstrain_path = [0.3]\nincrements = 1\n[solver]\nmax_newton_iterations = 1\nmax_cutbacks = 0\n");
+  const auto out = fresh_dir("failing");
+  const auto r = run("run " + path + " --out " + out.string());
+  EXPECT_EQ(r.code, 1);
+  ASSERT_TRUE(fs::exists(out / "summary.json"));
+  EXPECT_FALSE(fs::exists(out / "curve.csv"));
+  std::ifstream f(out / "summary.json");
+  const auto s = nlohmann::json::parse(f);
+  EXPECT_EQ(s["status"], "failed");
+  EXPECT_NE(s["message"].get<std::string>().find("control strain"), std::string::npos);
+  fs::remove_all(out);
+  fs::remove(path);
+}

@@ -1,0 +1,79 @@
+// With T = ceres::Jet the material-point curve carries exact parameter derivatives
+// (needed by the Ceres fits): compare them with central differences of double runs.
+#include "forward/scenes/material_point_test.hpp"
+#include "tests/support/cards.hpp"
+#include "tests/support/scenes.hpp"
+
+#include <ceres/jet.h>
+#include <gtest/gtest.h>
+
+using namespace spifit;
+using Jet = ceres::Jet<double, 4>;
+
+namespace {
+
+material::MaterialParams<Jet> seeded(const material::MaterialParams<double>& p) {
+  auto j = p.cast<Jet>();
+  j.K.v[0] = 1.0;     // d/dK
+  j.n.v[1] = 1.0;     // d/dn
+  j.N.v[2] = 1.0;     // d/dN (Hill shear coefficient)
+  j.L = j.N;
+  j.M = j.N;
+  if (p.kinematic == material::KinematicLaw::armstrong_frederick) j.CX.v[3] = 1.0;
+  if (p.kinematic == material::KinematicLaw::ziegler) j.CA.v[3] = 1.0;
+  return j;
+}
+
+material::MaterialParams<double> perturbed(material::MaterialParams<double> p, int k, double h) {
+  switch (k) {
+    case 0: p.K += h; break;
+    case 1: p.n += h; break;
+    case 2: p.N += h; p.L = p.N; p.M = p.N; break;
+    case 3:
+      if (p.kinematic == material::KinematicLaw::armstrong_frederick) p.CX += h;
+      else p.CA += h;
+      break;
+  }
+  return p;
+}
+
+double step_for(const material::MaterialParams<double>& p, int k) {
+  switch (k) {
+    case 0: return 1e-4 * p.K;
+    case 1: return 1e-5;
+    case 2: return 1e-5;
+    default: return 1e-4 * (p.kinematic == material::KinematicLaw::ziegler ? p.CA : std::max(p.CX, 1.0));
+  }
+}
+
+}  // namespace
+
+class JetDerivatives : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(JetDerivatives, TensileCurveMatchesCentralDifferences) {
+  const auto card = test::card(GetParam());
+  auto setup = test::tensile(45.0, {0.2, 0.1}, 60);
+  setup.driver.kinematic_substep = 0.0;  // fixed steps: the discrete curve is smooth in the parameters
+  const auto rj = scene::run_material_point(seeded(card.params), setup);
+  ASSERT_TRUE(rj.ok) << rj.message;
+  const int nk = card.params.kinematic == material::KinematicLaw::none ? 3 : 4;
+  for (int k = 0; k < nk; ++k) {
+    SCOPED_TRACE(k);
+    const double h = step_for(card.params, k);
+    const auto rp = scene::run_material_point(perturbed(card.params, k, h), setup);
+    const auto rm = scene::run_material_point(perturbed(card.params, k, -h), setup);
+    ASSERT_TRUE(rp.ok && rm.ok);
+    for (std::size_t i : {std::size_t(20), std::size_t(40), rj.curve.size() - 1}) {
+      const double fd = (rp.curve[i].stress - rm.curve[i].stress) / (2 * h);
+      const double ad = rj.curve[i].stress.v[k];
+      EXPECT_NEAR(ad, fd, 1e-5 * std::max(1.0, std::abs(fd))) << "point " << i;
+    }
+    const double fd_r = (*rp.r_value - *rm.r_value) / (2 * h);
+    EXPECT_NEAR(rj.r_value->v[k], fd_r, 1e-5 * std::max(1.0, std::abs(fd_r)));
+    const double fd_y = (*rp.offset_yield_stress - *rm.offset_yield_stress) / (2 * h);
+    EXPECT_NEAR(rj.offset_yield_stress->v[k], fd_y, 1e-4 * std::max(1.0, std::abs(fd_y)));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cards, JetDerivatives,
+                         ::testing::Values("aa3003o_c3c4", "aa3003o_c7_af_shell", "aa3003o_c8_ziegler_shell"));

@@ -1,0 +1,70 @@
+#pragma once
+// Closed-form material-point responses used as references (derivations in
+// docs/material-point-scenes.md). All in Kirchhoff stress vs the law's strain measure.
+#include "forward/material/hill48.hpp"
+#include "forward/material/material_params.hpp"
+#include "forward/material/swift_hardening.hpp"
+
+#include <cmath>
+#include <functional>
+
+namespace spifit::test {
+
+using material::KinematicLaw;
+using material::MaterialParams;
+
+// Uniaxial stress along alpha (Hill + Swift + isotropic, or von Mises + AF / Ziegler):
+//   tau = sigma_F(p)/h + offset(p), eps = tau/E + h p   (h = Hill uniaxial factor).
+struct UniaxialClosedForm {
+  MaterialParams<double> m;
+  double h = 1.0;  // sigma_eq of a unit uniaxial stress
+  double offset(double p) const {
+    switch (m.kinematic) {
+      case KinematicLaw::armstrong_frederick: return 1.5 * m.Xsat * (1.0 - std::exp(-m.CX * p));
+      case KinematicLaw::ziegler: return m.CA / m.GA * (1.0 - std::exp(-m.GA * p));
+      default: return 0.0;
+    }
+  }
+  double stress_at_p(double p) const { return material::swift_yield_stress(m, p) / h + offset(p); }
+  double strain_at_p(double p) const { return stress_at_p(p) / m.E + h * p; }
+  // Stress for a total (monotonic, tensile) strain.
+  double stress(double eps) const {
+    const double s0 = stress_at_p(0.0);
+    if (eps * m.E <= s0) return eps * m.E;
+    double lo = 0.0, hi = eps / h;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (strain_at_p(mid) < eps ? lo : hi) = mid;
+    }
+    return stress_at_p(0.5 * (lo + hi));
+  }
+};
+
+// Simple shear at alpha = 0 (pure shear stress tau_xy), any card:
+//   tau = sigma_F(p)/sqrt(N) + Xxy(p), gamma = tau/mu + sqrt(N) p,
+//   AF: Xxy = sqrt(N) Xsat/2 (1 - e^{-CX p}); Ziegler: Xxy = CA/(sqrt(N) GA)(1 - e^{-GA p}).
+struct ShearClosedForm {
+  MaterialParams<double> m;
+  double back_stress(double p) const {
+    const double r = std::sqrt(m.N);
+    switch (m.kinematic) {
+      case KinematicLaw::armstrong_frederick: return r * m.Xsat / 2.0 * (1.0 - std::exp(-m.CX * p));
+      case KinematicLaw::ziegler: return m.CA / (r * m.GA) * (1.0 - std::exp(-m.GA * p));
+      default: return 0.0;
+    }
+  }
+  double mu() const { return m.E / (2.0 * (1.0 + m.nu)); }
+  double stress_at_p(double p) const { return material::swift_yield_stress(m, p) / std::sqrt(m.N) + back_stress(p); }
+  double strain_at_p(double p) const { return stress_at_p(p) / mu() + std::sqrt(m.N) * p; }
+  double stress(double gamma) const {
+    if (!m.plastic || gamma * mu() <= stress_at_p(0.0)) return gamma * mu();
+    double lo = 0.0, hi = gamma;
+    for (int i = 0; i < 200; ++i) {
+      const double mid = 0.5 * (lo + hi);
+      (strain_at_p(mid) < gamma ? lo : hi) = mid;
+    }
+    return stress_at_p(0.5 * (lo + hi));
+  }
+};
+
+}  // namespace spifit::test
