@@ -59,3 +59,38 @@ BENCHMARK_CAPTURE(tensile_curve, c7_af_45deg, "aa3003o_c7_af_shell", 45.0)->Unit
 BENCHMARK_CAPTURE(tensile_curve, c8_ziegler_00deg, "aa3003o_c8_ziegler_shell", 0.0)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();
+
+// Speed/accuracy trade of the kinematic sub-step bound (DriverOptions::kinematic_substep):
+// card C.7 (Hill + Armstrong-Frederick, no closed form), tension to 0.3 then back to 0.15 at
+// 45 deg, 180 increments; error = max |stress - reference| / max |reference| where the
+// reference is the same law with 20x the increments and kinematic_substep = 1e-4.
+// Argument = kinematic_substep x 1000.
+static void kinematic_substep_trade(benchmark::State& state) {
+  static const auto card = load("aa3003o_c7_af_shell");
+  scene::MaterialPointSetup s;
+  s.kind = scene::MaterialPointKind::tensile;
+  s.angle_deg = 45.0;
+  s.strain_path = {0.3, 0.15};
+  s.increments = 180;
+  static const auto reference = [] {
+    scene::MaterialPointSetup f;
+    f.kind = scene::MaterialPointKind::tensile;
+    f.angle_deg = 45.0;
+    f.strain_path = {0.3, 0.15};
+    f.increments = 180 * 20;
+    f.driver.kinematic_substep = 1e-4;
+    return scene::run_material_point(card.params, f);
+  }();
+  s.driver.kinematic_substep = static_cast<double>(state.range(0)) / 1000.0;
+  scene::MaterialPointResult<double> r;
+  for (auto _ : state) {
+    r = scene::run_material_point(card.params, s);
+    benchmark::DoNotOptimize(r.curve.data());
+  }
+  double scale = 0.0, err = 0.0;
+  for (const auto& p : reference.curve) scale = std::max(scale, std::abs(p.stress));
+  for (std::size_t i = 0; i < r.curve.size(); ++i) err = std::max(err, std::abs(r.curve[i].stress - reference.curve[20 * i].stress));
+  state.counters["max_rel_error"] = err / scale;
+  state.counters["substeps"] = r.substeps;
+}
+BENCHMARK(kinematic_substep_trade)->Arg(0)->Arg(200)->Arg(50)->Arg(20)->Arg(5)->Unit(benchmark::kMicrosecond);
