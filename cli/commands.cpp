@@ -6,19 +6,35 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 
 namespace spifit::cli {
 
+namespace {
+// r-values must be positive numbers; CLI11's PositiveNumber would print its whole range.
+const CLI::Validator kPositive(
+    [](std::string& text) -> std::string {
+      try {
+        std::size_t used = 0;
+        const double v = std::stod(text, &used);
+        if (used == text.size() && v > 0 && std::isfinite(v)) return "";
+      } catch (const std::exception&) {
+      }
+      return "must be a number > 0, got '" + text + "'";
+    },
+    "NUMBER > 0");
+}  // namespace
+
 void add_lankford_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { double r0 = 0, r45 = 0, r90 = 0; bool json = false; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("lankford", "Hill 1948 coefficients from Lankford r-values (thesis eq. C.3, G + H = 2, N = L = M)");
-  cmd->add_option("--r0", o->r0, "r-value at 0 deg to RD")->required()->check(CLI::PositiveNumber);
-  cmd->add_option("--r45", o->r45, "r-value at 45 deg to RD")->required()->check(CLI::PositiveNumber);
-  cmd->add_option("--r90", o->r90, "r-value at 90 deg to RD")->required()->check(CLI::PositiveNumber);
+  cmd->add_option("--r0", o->r0, "r-value at 0 deg to RD")->required()->check(kPositive);
+  cmd->add_option("--r45", o->r45, "r-value at 45 deg to RD")->required()->check(kPositive);
+  cmd->add_option("--r90", o->r90, "r-value at 90 deg to RD")->required()->check(kPositive);
   cmd->add_flag("--json", o->json, "print JSON (keys F, G, H, N, L, M)");
   cmd->callback([o, &g, &exit_code] {
     const auto h = material::hill_from_lankford({o->r0, o->r45, o->r90});

@@ -22,10 +22,52 @@ std::string scalar_text(const toml::value& v) {
   if (v.is_integer()) return std::to_string(v.as_integer());
   if (v.is_boolean()) return v.as_boolean() ? "true" : "false";
   if (v.is_string()) return "\"" + v.as_string().str + "\"";
-  if (v.is_array()) return "[array]";
+  if (v.is_array()) {
+    std::string out = "[";
+    for (const auto& e : v.as_array()) {
+      if (out.size() > 1) out += ", ";
+      out += scalar_text(e);
+      if (out.size() > 60) return out + ", ...]";
+    }
+    return out + "]";
+  }
   if (v.is_table()) return "{table}";
   return "?";
 }
+// toml11 reports syntax errors as a multi-line excerpt:
+//   [error] toml::parse_key: an invalid key appeared.
+//    --> file.toml
+//     1 | [scene
+//       | ^--- is not a valid key
+// Condensed to "line 1: an invalid key appeared (is not a valid key): [scene".
+std::string condense_syntax_error(const std::string& what) {
+  std::istringstream in(what);
+  std::string line, headline, number, excerpt, hint;
+  while (std::getline(in, line)) {
+    if (headline.empty() && line.rfind("[error]", 0) == 0) {
+      headline = line.substr(7);
+      const auto colon = headline.find(": ");
+      if (headline.find("toml::") != std::string::npos && colon != std::string::npos) headline = headline.substr(colon + 2);
+      continue;
+    }
+    const auto bar = line.find(" | ");
+    if (bar == std::string::npos) continue;
+    const std::string left = one_line(line.substr(0, bar)), right = line.substr(bar + 3);
+    if (number.empty() && !left.empty() && std::all_of(left.begin(), left.end(), ::isdigit)) {
+      number = left;
+      excerpt = one_line(right, 60);
+    } else if (hint.empty() && left.empty() && right.find('^') != std::string::npos) {
+      hint = one_line(right.substr(right.find_first_not_of("^-~ ")), 80);
+    }
+  }
+  if (headline.empty() || number.empty()) return one_line(what, 200);
+  std::string out = "line " + number + ": " + one_line(headline, 120);
+  if (!out.empty() && out.back() == '.') out.pop_back();
+  if (!hint.empty()) out += " (" + hint + ")";
+  if (!excerpt.empty()) out += ": " + excerpt;
+  return out;
+}
+
 const char* type_name(const toml::value& v) {
   if (v.is_floating() || v.is_integer()) return "a number";
   if (v.is_boolean()) return "a boolean";
@@ -46,7 +88,7 @@ TomlTable TomlTable::parse_file(const std::string& path) {
     impl->root = std::make_shared<const toml::value>(toml::parse(path));
   } catch (const toml::syntax_error& e) {
     // toml11 prints a multi-line excerpt; keep its first lines as one line.
-    throw InputError(path, "", "", "malformed TOML: " + one_line(e.what(), 240));
+    throw InputError(path, "", "", "malformed TOML, " + condense_syntax_error(e.what()));
   } catch (const std::exception& e) {
     throw InputError(path, "", "", std::string("cannot read TOML: ") + one_line(e.what(), 240));
   }

@@ -125,7 +125,7 @@ void validate_material_card(const MaterialCard& card) {
   if (!(p.G + p.H > 0)) bad("hill.G", p.G, "G + H = " + format_number(p.G + p.H) + " must be > 0 (convex Hill)");
   if (!(p.H + p.F > 0)) bad("hill.H", p.H, "H + F = " + format_number(p.H + p.F) + " must be > 0 (convex Hill)");
   if (const std::string msg = hill_convexity_violation(card.hill()); !msg.empty()) {
-    throw InputError(card.file, "hill", "F = " + format_number(p.F) + ", G = " + format_number(p.G) + ", H = " + format_number(p.H),
+    throw InputError(card.file, "hill.F/G/H", format_number(p.F) + "/" + format_number(p.G) + "/" + format_number(p.H),
                      "not a convex yield surface: " + msg);
   }
   if (p.plastic) {

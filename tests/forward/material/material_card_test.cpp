@@ -103,7 +103,7 @@ TEST(MaterialCard, Errors) {
   expect_error("nu = 0.36", "nu = 0.36\nnuu = 0.3", "elastic.nuu", "0.3");
   expect_error("N = 4.06", "N = -4.06", "hill.N", "-4.06");
   expect_error("F = 1.224\nG = 1.193", "F = -1.5\nG = -1.5", "hill.F", "-1.5");
-  expect_error("H = 0.807", "H = -0.7", "hill", "F = 1.224, G = 1.193, H = -0.7");
+  expect_error("H = 0.807", "H = -0.7", "hill.F/G/H", "1.224/1.193/-0.7");
   expect_error("[swift]", "[armstrong_frederick]\nCX = -1.0\nXsat = 3.0\n[swift]", "armstrong_frederick.CX", "-1");
   expect_error("E = 72600.0\n", "", "elastic.E", "");
 }
