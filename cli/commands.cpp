@@ -74,7 +74,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_flag("--force", o->force, "replace an existing output directory");
   cmd->callback([o, &g, &exit_code] {
     const auto scene = scene::read_scene_file(o->scene);  // input errors before touching --out
-    const auto dir = io::OutputDirectory::prepare(o->out, o->force);
+    const auto dir = io::OutputDirectory::prepare(o->out, o->force, {scene.file, scene.card.file});
     const auto rep = scene::run_material_point_scene(scene, dir);
     const auto& s = rep.summary;
     if (!rep.ok) {

@@ -104,6 +104,10 @@ class ReturnMapping {
     }
     result.plastic = true;
 
+    // Convergence floor: the trial deviator is only known to about eps_mach * |sigma_tr|
+    // (a large pressure), so |phi| cannot go below that.
+    const double phi_tol = std::max(options_.tolerance * value_of(s_ref),
+                                    64.0 * std::numeric_limits<double>::epsilon() * value_of(sigma_tr.cwiseAbs().maxCoeff()));
     Eval ev;
     T dl = T(0.0);
     evaluate(s0, sigma_tr, dl, ev);
@@ -119,7 +123,7 @@ class ReturnMapping {
       } else {
         hi = std::min(hi, dl_v);
       }
-      if (ev.valid && std::abs(phi) <= options_.tolerance * value_of(ev.s) && it > 0) {
+      if (ev.valid && std::abs(phi) <= std::max(phi_tol, options_.tolerance * value_of(ev.s)) && it > 0) {
         converged = true;
         break;
       }
@@ -127,10 +131,18 @@ class ReturnMapping {
         converged = ev.valid;
         break;
       }
-      const double dphi = ev.valid ? value_of(ev.dphi) : 0.0;
-      const double cand = dphi < 0.0 ? dl_v - phi / dphi : -1.0;
-      if (dphi < 0.0 && cand > lo && cand < hi && std::isfinite(cand)) {
-        dl = dl - ev.phi / ev.dphi;  // Newton update carried out in T (derivatives)
+      // Newton on r(dl) = sigma_F / sigma_eq - 1, which has the same root as phi but is
+      // nearly linear in dl (exactly so for von Mises without hardening), so large steps
+      // converge in a few iterations; phi's sign keeps the bracket.
+      const double seq = ev.valid ? value_of(ev.seq) : 0.0;
+      const double dseq = ev.valid ? value_of(ev.dphi + ev.ds) : 0.0;
+      const double r = ev.valid ? value_of(ev.s) / seq - 1.0 : 0.0;
+      const double dr = ev.valid ? (value_of(ev.ds) * seq - value_of(ev.s) * dseq) / (seq * seq) : 0.0;
+      const double cand = dr > 0.0 ? dl_v - r / dr : -1.0;
+      if (dr > 0.0 && cand > lo && cand < hi && std::isfinite(cand)) {
+        const T rT = ev.s / ev.seq - 1.0;
+        const T drT = (ev.ds * ev.seq - ev.s * (ev.dphi + ev.ds)) / (ev.seq * ev.seq);
+        dl = dl - rT / drT;  // carried out in T (Jet derivatives)
       } else if (std::isfinite(hi)) {
         dl = T(0.5 * (lo + hi));
       } else {
@@ -148,7 +160,7 @@ class ReturnMapping {
     // Converged: assemble the end-of-step state.
     const Vec d_eps_p = ev.q * (P_ * ev.xi);
     s1.stress = sigma_tr - C_ * d_eps_p;
-    s1.back_stress = s1.stress - ev.xi;
+    if (m_.kinematic != KinematicLaw::none) s1.back_stress = s1.stress - ev.xi;  // else X1 = X0 exactly
     s1.plastic_strain = s0.plastic_strain + d_eps_p;
     s1.eqps = s0.eqps + dl;
     s1.plastic_work = s0.plastic_work + s1.stress.dot(d_eps_p);
@@ -240,10 +252,26 @@ class ReturnMapping {
     const Vec db = -dm * s0.back_stress;
     if constexpr (Dim <= 4) ev.Minv = M.inverse();
     else ev.Minv = M.partialPivLu().inverse();
-    ev.xi = ev.Minv * b;
+    if constexpr (Dim == 6) {
+      // P h = 0 for the hydrostatic direction h, so M h = a h: solve the deviatoric part
+      // only and add the hydrostatic part exactly (a large pressure would otherwise swamp
+      // the deviatoric digits that decide yielding).
+      const T bh = (b(0) + b(1) + b(2)) / 3.0;
+      const T dbh = (db(0) + db(1) + db(2)) / 3.0;
+      Vec bd = b, dbd = db;
+      for (int i = 0; i < 3; ++i) { bd(i) -= bh; dbd(i) -= dbh; }
+      const Vec xid = ev.Minv * bd;
+      ev.xi = xid;
+      for (int i = 0; i < 3; ++i) ev.xi(i) += bh / a;
+      // d xi / d dl: deviatoric part from the solve, hydrostatic part d(bh / a).
+      ev.dxi = ev.Minv * (dbd - dM * xid);
+      for (int i = 0; i < 3; ++i) ev.dxi(i) += dbh / a - bh * da / (a * a);
+    } else {
+      ev.xi = ev.Minv * b;
+      ev.dxi = ev.Minv * (db - dM * ev.xi);
+    }
     ev.seq = equivalent_stress(ev.xi);
     ev.phi = ev.seq - ev.s;
-    ev.dxi = ev.Minv * (db - dM * ev.xi);
     ev.valid = is_finite(ev.phi) && value_of(ev.seq) > 0.0 && is_finite(ev.Minv(0, 0));
     if (ev.valid) {
       const Vec grad = P_ * ev.xi / (2.0 * ev.seq);

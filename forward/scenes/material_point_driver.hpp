@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -21,6 +22,7 @@ struct DriverOptions {
   int max_newton_iterations = 30;
   int max_cutbacks = 20;             // halvings of one increment before giving up
   double kinematic_substep = 0.05;   // bound on (back-stress decay rate) * d eps_p per sub-step
+  int max_substeps = 2000;           // per call of advance(); beyond it the accuracy bound is waived
   material::ReturnMappingOptions return_mapping;
 };
 
@@ -41,6 +43,11 @@ struct PointState {
   double ratio[3] = {0.0, 0.0, 0.0};  // last d eps_i / d control, a Newton start
   bool plastic = false;               // last committed step was plastic
   double substep_hint = 0.0;          // next sub-step size (0: whole increment)
+};
+
+struct DriverCounters {
+  int substeps = 0, cutbacks = 0, newton_iterations = 0;
+  int accuracy_limited = 0;  // sub-steps accepted beyond the kinematic bound (max_substeps reached)
 };
 
 struct DriverStatus {
@@ -69,9 +76,8 @@ class MaterialPointDriver {
   void set_segment(int segment) { segment_ = segment; }
   const std::vector<YieldEvent<T>>& yield_events() const { return events_; }
   void set_yield_events(const std::vector<YieldEvent<T>>& e) { events_ = e; }
-  int substeps() const { return substeps_; }
-  int cutbacks() const { return cutbacks_; }
-  int newton_iterations() const { return newton_; }
+  const DriverCounters& counters() const { return counters_; }
+  void set_counters(const DriverCounters& c) { counters_ = c; }
 
   Vec3 stress_loading(const MState& m) const { return Q_.transpose() * m.stress; }
   Vec3 to_loading_strain(const Vec3& e_material) const { return Qinv_ * e_material; }
@@ -97,26 +103,25 @@ class MaterialPointDriver {
   // size predicted from the measured ratio, and the next sub-step starts from that prediction
   // (kept in the state, so re-running from a saved state reproduces the same sub-steps).
   DriverStatus advance(double d) {
+    const double target = state_.control_strain + d;  // assigned exactly on the last piece
     double remaining = d;
-    int retries = 0;
+    int cutbacks = 0, accuracy_retries = 0, pieces = 0;
     while (remaining != 0.0) {
       double size = remaining;
       if (state_.substep_hint > 0.0 && state_.substep_hint < std::abs(remaining)) {
-        size = std::copysign(state_.substep_hint, remaining);
-        // Avoid a sliver at the end of the increment: split the rest evenly instead.
-        const double pieces = std::ceil(std::abs(remaining) / state_.substep_hint - 1e-9);
-        size = remaining / pieces;
+        // Split the rest evenly instead of leaving a sliver at the end of the increment.
+        const double n = std::ceil(std::abs(remaining) / state_.substep_hint - 1e-9);
+        size = remaining / n;
       }
       Trial trial;
       DriverStatus st = solve(size, trial);
       if (!st.ok) {
-        if (++retries > options_.max_cutbacks) {
-          st.message = "material point failed at control strain " + std::to_string(state_.control_strain) +
-                       " (increment " + std::to_string(size) + ") after " + std::to_string(options_.max_cutbacks) +
-                       " cut-backs: " + st.message;
+        if (++cutbacks > options_.max_cutbacks) {
+          st.message = "material point failed at control strain " + format(state_.control_strain) + " (sub-step " +
+                       format(size) + ") after " + std::to_string(options_.max_cutbacks) + " cut-backs: " + st.message;
           return st;
         }
-        ++cutbacks_;
+        ++counters_.cutbacks;
         state_.substep_hint = std::abs(size) * trial.suggested_scale;
         continue;
       }
@@ -124,19 +129,27 @@ class MaterialPointDriver {
       if (options_.kinematic_substep > 0.0) {
         const double dl = value_of(trial.material.eqps - state_.material.eqps);
         kappa = law_.kinematic_rate(trial.material) * dl;
-        if (kappa > options_.kinematic_substep && retries < options_.max_cutbacks) {
-          ++retries;
-          state_.substep_hint = std::abs(size) * std::max(0.05, 0.9 * options_.kinematic_substep / kappa);
-          continue;
+        if (kappa > options_.kinematic_substep) {
+          if (pieces < options_.max_substeps && accuracy_retries < 20) {
+            ++accuracy_retries;
+            state_.substep_hint = std::abs(size) * std::max(0.05, 0.9 * options_.kinematic_substep / kappa);
+            continue;
+          }
+          ++counters_.accuracy_limited;
         }
       }
+      const bool last = std::abs(size) >= std::abs(remaining);
       commit(size, trial);
-      ++substeps_;
-      retries = 0;
-      remaining -= size;
-      if (std::abs(remaining) <= 1e-15 * std::abs(d)) remaining = 0.0;
-      // Next sub-step: predicted from this one when the back-stress moved, free otherwise.
-      state_.substep_hint = kappa > 0.0 ? std::abs(size) * std::min(2.0, 0.9 * options_.kinematic_substep / kappa) : 0.0;
+      ++counters_.substeps;
+      ++pieces;
+      cutbacks = accuracy_retries = 0;
+      remaining = last ? 0.0 : remaining - size;
+      if (last) state_.control_strain = target;
+      // Next sub-step: predicted from this one when the back-stress moved, free otherwise;
+      // past max_substeps the rest of the increment goes in one piece.
+      state_.substep_hint = (kappa > 0.0 && pieces < options_.max_substeps)
+                                ? std::abs(size) * std::min(2.0, 0.9 * options_.kinematic_substep / kappa)
+                                : 0.0;
     }
     return {};
   }
@@ -163,7 +176,7 @@ class MaterialPointDriver {
     bool converged = false, polished = false;
     Mat3 Dm;
     for (int it = 0; it < options_.max_newton_iterations; ++it) {
-      ++newton_;
+      ++counters_.newton_iterations;
       const auto r = law_.integrate(state_.material, Vec3(Q_ * de), trial.material, &Dm);
       if (!r.ok()) {
         trial.suggested_scale = r.suggested_scale;
@@ -230,7 +243,10 @@ class MaterialPointDriver {
     using std::sqrt;
     const T disc = b * b - 4.0 * a * cc;
     if (!(value_of(a) > 0.0) || value_of(disc) < 0.0) return;
-    const T theta = (-b + sqrt(disc)) / (2.0 * a);
+    T theta = (-b + sqrt(disc)) / (2.0 * a);
+    // A start state already on (within the return-mapping tolerance outside) the surface
+    // yields at the start of the increment.
+    if (value_of(theta) < 0.0 && value_of(cc) >= 0.0) theta = T(0.0);
     if (value_of(theta) < -1e-9 || value_of(theta) > 1.0 + 1e-9) return;
     PointState<T> at = state_;
     at.strain += theta * de;
@@ -261,7 +277,13 @@ class MaterialPointDriver {
   PointState<T> state_;
   std::vector<YieldEvent<T>> events_;
   int segment_ = 0;
-  int substeps_ = 0, cutbacks_ = 0, newton_ = 0;
+  DriverCounters counters_;
+
+  static std::string format(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+  }
 };
 
 }  // namespace spifit::scene

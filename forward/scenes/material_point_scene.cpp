@@ -64,6 +64,11 @@ SceneRunReport run_material_point_scene(const MaterialPointScene& scene, const i
   s["substeps"] = r.substeps;
   s["cutbacks"] = r.cutbacks;
   s["newton_iterations"] = r.newton_iterations;
+  s["accuracy_limited_substeps"] = r.accuracy_limited_substeps;
+  if (r.accuracy_limited_substeps > 0) {
+    s["warning"] = std::to_string(r.accuracy_limited_substeps) +
+                   " sub-steps exceeded the kinematic accuracy bound (max_substeps reached); raise [solver] max_substeps for accuracy";
+  }
   if (!r.ok) {
     s["status"] = "failed";
     s["message"] = r.message;

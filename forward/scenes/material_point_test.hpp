@@ -57,6 +57,7 @@ struct MaterialPointResult {
   std::optional<T> offset_yield_stress_kirchhoff;
   double offset_yield_strain = 0.0;                // total axial strain there
   int substeps = 0, cutbacks = 0, newton_iterations = 0;
+  int accuracy_limited_substeps = 0;  // sub-steps past DriverOptions::max_substeps (bound waived)
 };
 
 // Throws std::invalid_argument for a setup that makes no sense (checked before by the scene
@@ -101,17 +102,24 @@ void find_offset_yield(MaterialPointDriver<T>& drv, const PointState<T>& before,
     x1 = x; g1 = gv;
   }
   T sk = drv.stress_loading(s_root.material)(c);
+  T sc = sk / drv.jacobian(s_root);
   if constexpr (!std::is_same_v<T, double>) {
     const double h = 1e-7 * std::max(1e-3, std::abs(d));
     PointState<T> sh;
     if (const auto gh = run_to(x_root + h, &sh)) {
       const double dgdx = (value_of(*gh) - value_of(g_root)) / h;
-      const double dsdx = (value_of(drv.stress_loading(sh.material)(c)) - value_of(sk)) / h;
-      if (dgdx != 0.0) sk = sk - (dsdx / dgdx) * (g_root - T(value_of(g_root)));
+      const T skh = drv.stress_loading(sh.material)(c);
+      const double dkdx = (value_of(skh) - value_of(sk)) / h;
+      const double dcdx = (value_of(skh / drv.jacobian(sh)) - value_of(sc)) / h;
+      const T dg = g_root - T(value_of(g_root));  // zero value, derivative d g / d p
+      if (dgdx != 0.0) {
+        sk = sk - (dkdx / dgdx) * dg;
+        sc = sc - (dcdx / dgdx) * dg;
+      }
     }
   }
   out.offset_yield_stress_kirchhoff = sk;
-  out.offset_yield_stress = sk / drv.jacobian(s_root);
+  out.offset_yield_stress = sc;
   out.offset_yield_strain = s_root.control_strain;
 }
 
@@ -153,6 +161,7 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
   double cumulative = 0.0;
   prev = 0.0;
   double prev_dir = 0.0;
+  bool reversed = false;  // r-value and offset yield belong to the first monotonic stretch
   for (std::size_t seg = 0; seg < setup.strain_path.size(); ++seg) {
     const double target = setup.strain_path[seg];
     const double len = std::abs(target - prev);
@@ -160,18 +169,23 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
     const int n = std::max(1, static_cast<int>(std::lround(setup.increments * len / total)));
     drv.set_segment(static_cast<int>(seg));
     if (prev_dir != 0.0 && dir != prev_dir) {
+      reversed = true;
       auto s = drv.state();
       s.plastic = false;  // a reversal starts elastic: look for the reverse yield onset
       drv.set_state(s);
     }
+    double last_goal = prev;
     for (int k = 1; k <= n; ++k) {
-      const double goal = prev + (target - prev) * static_cast<double>(k) / n;
+      const double goal = k == n ? target : prev + (target - prev) * static_cast<double>(k) / n;
       const PointState<T> before = drv.state();
       const auto events_before = drv.yield_events();
+      const auto counters_before = drv.counters();
       const double d = goal - before.control_strain;
-      // r-value at an exact strain (tensile, first segment).
-      if (tensile && seg == 0 && !out.r_value && (before.control_strain - setup.r_value_strain) * (goal - setup.r_value_strain) <= 0.0 &&
-          goal != before.control_strain) {
+      const bool first_stretch = tensile && !reversed;
+      // r-value at an exact strain (tensile, first monotonic stretch); the crossing is tested
+      // on the grid of increment goals, so a strain on a boundary is found once.
+      if (first_stretch && !out.r_value && (last_goal - setup.r_value_strain) * (goal - setup.r_value_strain) <= 0.0 &&
+          goal != last_goal) {
         DriverStatus st = drv.advance(setup.r_value_strain - before.control_strain);
         if (st.ok && value_of(drv.state().material.eqps) > 0.0) {
           const auto n_m = law.flow_direction(drv.state().material);
@@ -181,7 +195,9 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
         }
         drv.set_state(before);
         drv.set_yield_events(events_before);
+        drv.set_counters(counters_before);
       }
+      last_goal = goal;
       DriverStatus st = drv.advance(d);
       if (!st.ok) {
         out.ok = false;
@@ -191,12 +207,14 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
       ++inc;
       cumulative += std::abs(d);
       // 0.2 %-offset yield stress: root of eps_p_ll(x) = offset inside this increment.
-      if (tensile && seg == 0 && !out.offset_yield_stress && value_of(axial_plastic(drv.state())) >= setup.offset_strain) {
+      if (first_stretch && !out.offset_yield_stress && value_of(axial_plastic(drv.state())) >= setup.offset_strain) {
         const PointState<T> after = drv.state();
         const auto events_after = drv.yield_events();
+        const auto counters_after = drv.counters();
         find_offset_yield(drv, before, d, setup.offset_strain, out);
         drv.set_state(after);
         drv.set_yield_events(events_after);
+        drv.set_counters(counters_after);  // side runs are not counted as work of the curve
       }
       record(inc, static_cast<int>(seg), cumulative);
     }
@@ -205,9 +223,11 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
     prev_dir = dir;
   }
   out.yield_events = drv.yield_events();
-  out.substeps = drv.substeps();
-  out.cutbacks = drv.cutbacks();
-  out.newton_iterations = drv.newton_iterations();
+  const auto& counters = drv.counters();
+  out.substeps = counters.substeps;
+  out.cutbacks = counters.cutbacks;
+  out.newton_iterations = counters.newton_iterations;
+  out.accuracy_limited_substeps = counters.accuracy_limited;
   return out;
 }
 

@@ -125,16 +125,18 @@ MaterialPointScene read_scene_file(const std::string& path) {
   }
 
   if (auto so = root.table("solver")) {
-    so->allow_only({"tolerance", "kinematic_substep", "max_cutbacks", "max_newton_iterations", "return_mapping_tolerance"});
+    so->allow_only({"tolerance", "kinematic_substep", "max_substeps", "max_cutbacks", "max_newton_iterations", "return_mapping_tolerance"});
     auto& d = s.driver;
     d.tolerance = so->number("tolerance", d.tolerance);
     if (!(d.tolerance > 0 && d.tolerance < 1e-2)) so->fail("tolerance", "must lie in (0, 1e-2)");
     d.kinematic_substep = so->number("kinematic_substep", d.kinematic_substep);
     if (!(d.kinematic_substep >= 0)) so->fail("kinematic_substep", "must be >= 0 (0 disables the accuracy sub-stepping)");
+    d.max_substeps = so->integer("max_substeps", d.max_substeps);
+    if (d.max_substeps < 1) so->fail("max_substeps", "must be >= 1");
     d.max_cutbacks = so->integer("max_cutbacks", d.max_cutbacks);
     if (d.max_cutbacks < 0 || d.max_cutbacks > 60) so->fail("max_cutbacks", "must lie in [0, 60]");
     d.max_newton_iterations = so->integer("max_newton_iterations", d.max_newton_iterations);
-    if (d.max_newton_iterations < 1) so->fail("max_newton_iterations", "must be >= 1");
+    if (d.max_newton_iterations < 2) so->fail("max_newton_iterations", "must be >= 2 (a residual check and at least one update)");
     d.return_mapping.tolerance = so->number("return_mapping_tolerance", d.return_mapping.tolerance);
     if (!(d.return_mapping.tolerance > 0 && d.return_mapping.tolerance < 1e-3))
       so->fail("return_mapping_tolerance", "must lie in (0, 1e-3)");

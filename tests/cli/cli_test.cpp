@@ -129,6 +129,34 @@ TEST(Cli, RunTensileWritesSummaryAndCurve) {
   std::ifstream f2(out / "summary.json");
   EXPECT_EQ(nlohmann::json::parse(f2)["angle_deg"].get<double>(), 0.0);
   fs::remove_all(out);
+
+  // --force never clears a directory that is not a spifit output, or that holds the inputs.
+  const auto foreign = fresh_dir("foreign");
+  fs::create_directories(foreign);
+  std::ofstream(foreign / "notes.txt") << "keep";
+  const auto fr = run("run " + src("experiments/aa3003o/scenes/tensile_00.toml") + " --out " + foreign.string() + " --force");
+  EXPECT_EQ(fr.code, 2);
+  EXPECT_TRUE(fs::exists(foreign / "notes.txt"));
+  fs::remove_all(foreign);
+  const auto own = fresh_dir("own");
+  fs::create_directories(own);
+  fs::copy_file(src("experiments/aa3003o/scenes/tensile_00.toml"), own / "scene.toml");
+  std::string text;
+  {
+    std::ifstream in(own / "scene.toml");
+    std::stringstream ss;
+    ss << in.rdbuf();
+    text = ss.str();
+  }
+  const auto pos = text.find("../../../materials/");
+  text.replace(pos, std::string("../../../materials/").size(), src("materials/"));
+  std::ofstream(own / "scene.toml") << text;
+  std::ofstream(own / "summary.json") << "{}";
+  const auto g = run("run " + (own / "scene.toml").string() + " --out " + own.string() + " --force");
+  EXPECT_EQ(g.code, 2) << g.err;
+  EXPECT_NE(g.err.find("holds an input"), std::string::npos) << g.err;
+  EXPECT_TRUE(fs::exists(own / "scene.toml"));
+  fs::remove_all(own);
 }
 
 TEST(Cli, BadScenesExitTwoWithOneLine) {
@@ -141,6 +169,7 @@ TEST(Cli, BadScenesExitTwoWithOneLine) {
       {"unknown_kind.toml", "[scene]\nkind = \"tensle\"\nmaterial = \"" + mat + "\"\n", "scene.kind = \"tensle\""},
       {"missing_card.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"nope.toml\"\n", "scene.material = \"nope.toml\""},
       {"negative_K.toml", "", "swift.K = -180"},
+      {"one_newton.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"" + mat + "\"\n[solver]\nmax_newton_iterations = 1\n", "solver.max_newton_iterations = 1"},
   };
   const std::string bad_card = write_temp("bad_card.toml", "[elastic]\nE = 72600.0\nnu = 0.36\n[swift]\nK = -180.0\neps0 = 0.001\nn = 0.2\n");
   for (const auto& c : cases) {
@@ -165,7 +194,7 @@ TEST(Cli, BadScenesExitTwoWithOneLine) {
 TEST(Cli, FailedRunLeavesOnlyAFailedSummary) {
   const std::string mat = src("materials/aa3003o_c3c4.toml");
   const std::string path = write_temp("failing.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"" + mat +
-                                                          "\"\nstrain_path = [0.3]\nincrements = 1\n[solver]\nmax_newton_iterations = 1\nmax_cutbacks = 0\n");
+                                                          "\"\nstrain_path = [0.3]\nincrements = 1\n[solver]\nmax_newton_iterations = 2\nmax_cutbacks = 0\n");
   const auto out = fresh_dir("failing");
   const auto r = run("run " + path + " --out " + out.string());
   EXPECT_EQ(r.code, 1);
