@@ -3,6 +3,7 @@
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/scenes/material_point_test.hpp"
+#include "tests/support/closed_form.hpp"  // closed forms shared with the tests
 
 #include <benchmark/benchmark.h>
 
@@ -14,17 +15,6 @@ namespace {
 
 material::MaterialCard load(const char* name) {
   return material::load_material_card(std::string(SPIFIT_SOURCE_DIR) + "/materials/" + name + ".toml");
-}
-
-// Closed-form Kirchhoff stress of a Hill + Swift uniaxial test at total strain eps.
-double closed_form(const material::MaterialParams<double>& m, double h, double eps) {
-  if (eps * m.E <= material::swift_yield_stress(m, 0.0) / h) return eps * m.E;
-  double lo = 0.0, hi = eps / h;
-  for (int i = 0; i < 200; ++i) {
-    const double p = 0.5 * (lo + hi);
-    (material::swift_yield_stress(m, p) / h / m.E + h * p < eps ? lo : hi) = p;
-  }
-  return material::swift_yield_stress(m, 0.5 * (lo + hi)) / h;
 }
 
 void tensile_curve(benchmark::State& state, const char* card_name, double angle) {
@@ -41,9 +31,9 @@ void tensile_curve(benchmark::State& state, const char* card_name, double angle)
   }
   double err = 0.0;
   if (card.params.kinematic == material::KinematicLaw::none) {
-    const double h = material::uniaxial_stress_factor(card.hill(), angle * std::numbers::pi / 180.0);
+    const test::UniaxialClosedForm cf{card.params, material::uniaxial_stress_factor(card.hill(), angle * std::numbers::pi / 180.0)};
     for (const auto& p : r.curve) {
-      if (p.control_strain > 0) err = std::max(err, std::abs(p.stress_kirchhoff / closed_form(card.params, h, p.control_strain) - 1.0));
+      if (p.control_strain > 0) err = std::max(err, std::abs(p.stress_kirchhoff / cf.stress(p.control_strain) - 1.0));
     }
     state.counters["max_rel_error"] = err;
   }

@@ -11,6 +11,18 @@
 namespace spifit::test {
 
 using material::KinematicLaw;
+
+// Equivalent plastic strain p at which a closed form's total strain reaches `strain`
+// (strain_at_p is monotonic in p): bisection to round-off.
+template <typename ClosedForm>
+double plastic_strain_at(const ClosedForm& cf, double strain, double p_max) {
+  double lo = 0.0, hi = p_max;
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (cf.strain_at_p(mid) < strain ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
 using material::MaterialParams;
 
 // Uniaxial stress along alpha (Hill + Swift + isotropic, or von Mises + AF / Ziegler):
@@ -29,14 +41,8 @@ struct UniaxialClosedForm {
   double strain_at_p(double p) const { return stress_at_p(p) / m.E + h * p; }
   // Stress for a total (monotonic, tensile) strain.
   double stress(double eps) const {
-    const double s0 = stress_at_p(0.0);
-    if (eps * m.E <= s0) return eps * m.E;
-    double lo = 0.0, hi = eps / h;
-    for (int i = 0; i < 200; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (strain_at_p(mid) < eps ? lo : hi) = mid;
-    }
-    return stress_at_p(0.5 * (lo + hi));
+    if (eps * m.E <= stress_at_p(0.0)) return eps * m.E;
+    return stress_at_p(plastic_strain_at(*this, eps, eps / h));
   }
 };
 
@@ -58,12 +64,7 @@ struct ShearClosedForm {
   double strain_at_p(double p) const { return stress_at_p(p) / mu() + std::sqrt(m.N) * p; }
   double stress(double gamma) const {
     if (!m.plastic || gamma * mu() <= stress_at_p(0.0)) return gamma * mu();
-    double lo = 0.0, hi = gamma;
-    for (int i = 0; i < 200; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (strain_at_p(mid) < gamma ? lo : hi) = mid;
-    }
-    return stress_at_p(0.5 * (lo + hi));
+    return stress_at_p(plastic_strain_at(*this, gamma, gamma));
   }
 };
 

@@ -44,12 +44,7 @@ TEST(Bauschinger, ReverseYieldEveryPlasticCard) {
     const auto r = scene::run_material_point(card.params, test::shear(0.0, {g1, -g1, g1}, 300));
     ASSERT_TRUE(r.ok) << r.message;
     ASSERT_EQ(r.yield_events.size(), 3u);  // forward, reverse, re-loading
-    double lo = 0.0, hi = g1;
-    for (int i = 0; i < 200; ++i) {
-      const double mid = 0.5 * (lo + hi);
-      (cf.strain_at_p(mid) < g1 ? lo : hi) = mid;
-    }
-    const double p1 = 0.5 * (lo + hi);
+    const double p1 = test::plastic_strain_at(cf, g1, g1);
     const double tau_rev = cf.back_stress(p1) - material::swift_yield_stress(card.params, p1) / std::sqrt(card.params.N);
     EXPECT_LT(rel(r.yield_events[1].stress_kirchhoff, tau_rev), 1e-6);
     // The cumulative strain is a monotone abscissa through the reversals.

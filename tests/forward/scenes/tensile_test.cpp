@@ -86,12 +86,7 @@ TEST_P(TensileVonMisesKinematic, MonotonicAndReverseYield) {
 
   // Reverse yield at the analytic value: sigma_rev = offset(p1) - sigma_F(p1).
   ASSERT_EQ(r.yield_events.size(), 2u);
-  double lo = 0.0, hi = eps_rev;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (cf.strain_at_p(mid) < eps_rev ? lo : hi) = mid;
-  }
-  const double p1 = 0.5 * (lo + hi);
+  const double p1 = test::plastic_strain_at(cf, eps_rev, eps_rev);
   const double s_rev = cf.offset(p1) - material::swift_yield_stress(card.params, p1);
   EXPECT_EQ(r.yield_events[1].segment, 1);
   EXPECT_LT(rel(r.yield_events[1].stress_kirchhoff, s_rev), 1e-6) << card.name;
