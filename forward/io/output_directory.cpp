@@ -49,7 +49,9 @@ OutputDirectory OutputDirectory::prepare(const std::string& path, bool force, co
 
 void OutputDirectory::write_file(const std::string& name, const std::string& contents) const {
   const fs::path target = path_ / name;
-  const fs::path tmp = path_ / ("." + name + ".tmp");
+  std::error_code ec;
+  fs::create_directories(target.parent_path(), ec);
+  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
     if (!f) throw std::runtime_error("cannot write " + tmp.string());

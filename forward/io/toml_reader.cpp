@@ -175,6 +175,22 @@ std::optional<TomlTable> TomlTable::table(const std::string& key) const {
   return TomlTable(impl);
 }
 
+std::vector<TomlTable> TomlTable::table_array(const std::string& key) const {
+  std::vector<TomlTable> out;
+  if (!has(key)) return out;
+  const toml::value& v = impl_->table->at(key);
+  if (!v.is_array()) fail(key, std::string("expected an array of tables [[") + key_path(key) + "]], got " + type_name(v));
+  const auto& arr = v.as_array();
+  for (std::size_t i = 0; i < arr.size(); ++i) {
+    if (!arr[i].is_table()) fail(key, "entries must be tables ([[" + key_path(key) + "]])");
+    auto impl = std::make_shared<Impl>(*impl_);
+    impl->table = &arr[i];
+    impl->prefix = impl_->prefix + key + "[" + std::to_string(i) + "].";
+    out.push_back(TomlTable(impl));
+  }
+  return out;
+}
+
 void TomlTable::allow_only(const std::vector<std::string>& allowed) const {
   for (const auto& k : keys()) {
     if (std::find(allowed.begin(), allowed.end(), k) == allowed.end()) {

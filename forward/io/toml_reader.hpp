@@ -29,6 +29,8 @@ class TomlTable {
   bool boolean(const std::string& key, bool fallback) const;
   std::vector<double> number_list(const std::string& key) const;
   std::optional<TomlTable> table(const std::string& key) const;
+  // [[key]] arrays of tables; empty when absent. Entry i is named "key[i]" in errors.
+  std::vector<TomlTable> table_array(const std::string& key) const;
 
   // Rejects any key not in `allowed` (typos must not be silently ignored).
   void allow_only(const std::vector<std::string>& allowed) const;

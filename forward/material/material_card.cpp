@@ -144,6 +144,38 @@ void validate_material_card(const MaterialCard& card) {
   if (!(card.density > 0)) bad("density", card.density, "must be > 0 t/mm^3");
 }
 
+std::string material_card_to_toml(const MaterialCard& card) {
+  const auto& p = card.params;
+  std::ostringstream os;
+  auto esc = [](std::string s) {
+    std::string o;
+    for (char ch : s) {
+      if (ch == '"' || ch == '\\') o += '\\';
+      o += ch;
+    }
+    return o;
+  };
+  os << "# Units: mm, N, MPa, s, t.\n";
+  os << "density = " << format_number(card.density) << "\n\n";
+  os << "[card]\nname = \"" << esc(card.name) << "\"\n";
+  if (!card.description.empty()) os << "description = \"" << esc(card.description) << "\"\n";
+  if (!card.source.empty()) os << "source = \"" << esc(card.source) << "\"\n";
+  os << "units = \"mm-N-MPa\"\n\n";
+  os << "[elastic]\nE = " << format_number(p.E) << "\nnu = " << format_number(p.nu) << "\n\n";
+  os << "[hill]  # thesis notation, eq. 3.5 (factor 1/2)\nF = " << format_number(p.F) << "\nG = " << format_number(p.G)
+     << "\nH = " << format_number(p.H) << "\nN = " << format_number(p.N) << "\nL = " << format_number(p.L)
+     << "\nM = " << format_number(p.M) << "\n";
+  if (p.plastic) {
+    os << "\n[swift]\nK = " << format_number(p.K) << "\neps0 = " << format_number(p.eps0) << "\nn = " << format_number(p.n) << "\n";
+  }
+  if (p.kinematic == KinematicLaw::armstrong_frederick) {
+    os << "\n[armstrong_frederick]\nCX = " << format_number(p.CX) << "\nXsat = " << format_number(p.Xsat) << "\n";
+  } else if (p.kinematic == KinematicLaw::ziegler) {
+    os << "\n[ziegler]\nCA = " << format_number(p.CA) << "\nGA = " << format_number(p.GA) << "\n";
+  }
+  return os.str();
+}
+
 std::string describe_material_card(const MaterialCard& card) {
   const auto& p = card.params;
   const Hill48 h = card.hill();

@@ -30,6 +30,9 @@ MaterialCard read_material_card(const io::TomlTable& root);
 // kinematic constants >= 0); throws io::InputError with the card's file and the key.
 void validate_material_card(const MaterialCard& card);
 
+// The card as TOML in the schema read by load_material_card (round-trips exactly).
+std::string material_card_to_toml(const MaterialCard& card);
+
 // Readable summary: parameters, initial yield stress, predicted r-values (closed form).
 std::string describe_material_card(const MaterialCard& card);
 

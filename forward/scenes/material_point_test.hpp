@@ -25,6 +25,8 @@ struct MaterialPointSetup {
   int increments = 200;               // recorded increments over the whole path
   double r_value_strain = 0.10;       // tensile: strain at which r is evaluated
   double offset_strain = 0.002;       // tensile: axial plastic strain of the offset yield stress
+  bool want_r_value = true;           // tensile: evaluate the r-value (costs one side run)
+  bool want_offset_yield = true;      // tensile: search the offset yield stress (costs ~15 side runs)
   DriverOptions driver;
 };
 
@@ -184,7 +186,7 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
       const bool first_stretch = tensile && !reversed;
       // r-value at an exact strain (tensile, first monotonic stretch); the crossing is tested
       // on the grid of increment goals, so a strain on a boundary is found once.
-      if (first_stretch && !out.r_value && (last_goal - setup.r_value_strain) * (goal - setup.r_value_strain) <= 0.0 &&
+      if (first_stretch && setup.want_r_value && !out.r_value && (last_goal - setup.r_value_strain) * (goal - setup.r_value_strain) <= 0.0 &&
           goal != last_goal) {
         DriverStatus st = drv.advance(setup.r_value_strain - before.control_strain);
         if (st.ok && value_of(drv.state().material.eqps) > 0.0) {
@@ -207,7 +209,7 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
       ++inc;
       cumulative += std::abs(d);
       // 0.2 %-offset yield stress: root of eps_p_ll(x) = offset inside this increment.
-      if (first_stretch && !out.offset_yield_stress && value_of(axial_plastic(drv.state())) >= setup.offset_strain) {
+      if (first_stretch && setup.want_offset_yield && !out.offset_yield_stress && value_of(axial_plastic(drv.state())) >= setup.offset_strain) {
         const PointState<T> after = drv.state();
         const auto events_after = drv.yield_events();
         const auto counters_after = drv.counters();

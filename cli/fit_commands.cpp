@@ -1,0 +1,85 @@
+// `spifit fit` and `spifit synth`: thin wrappers over inverse/.
+#include "cli/commands.hpp"
+
+#include "forward/io/input_error.hpp"
+#include "forward/io/output_directory.hpp"
+#include "inverse/ceres_fit.hpp"
+#include "inverse/fit_file.hpp"
+#include "inverse/fit_output.hpp"
+#include "inverse/synthetic.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <thread>
+
+namespace spifit::cli {
+
+void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  struct Opts { std::string file, out, algorithm; bool force = false; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("fit", "Identify material parameters: fit a card to the experiments of a fit file (Ceres)");
+  cmd->add_option("FIT", o->file, "fit file (TOML)")->required();
+  cmd->add_option("--out", o->out, "output directory (fit.json, card.toml, experiments/*.csv)")->required();
+  cmd->add_option("--algorithm", o->algorithm, std::string("override the fit file: ") + inverse::fit_algorithm_names());
+  cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
+  cmd->callback([o, &g, &exit_code] {
+    if (!o->algorithm.empty() && !inverse::is_fit_algorithm(o->algorithm)) {
+      throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
+    }
+    const auto problem = inverse::read_fit_file(o->file);
+    const auto dir = io::OutputDirectory::prepare(o->out, o->force, {o->file, problem.parameters->base().file});
+    nlohmann::json running{{"status", "running"}, {"fit_file", o->file}};
+    dir.write_file("summary.json", running.dump(2) + "\n");
+    const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const auto result = inverse::fit_with_ceres(problem, {o->algorithm, threads});
+    inverse::write_fit_outputs(problem, result, dir);
+    nlohmann::json summary{{"status", result.usable ? "ok" : "failed"},
+                           {"kind", "fit"},
+                           {"fit", problem.name},
+                           {"wall_seconds", result.wall_seconds},
+                           {"termination", result.termination}};
+    dir.write_file("summary.json", summary.dump(2) + "\n");
+    if (!g.quiet) std::cout << inverse::fit_table(problem, result);
+    if (!result.usable) {
+      std::cerr << "spifit: fit " << problem.name << " failed: " << result.termination << "\n";
+      exit_code = 1;
+      return;
+    }
+    exit_code = 0;
+  });
+}
+
+void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, const std::string& command_line) {
+  struct Opts { std::string scene, out, material; inverse::SyntheticOptions syn; bool force = false; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("synth", "Write a SYNTHETIC measurement (twin experiment): a scene's curve with seeded noise");
+  cmd->add_option("SCENE", o->scene, "material-point scene file (TOML)")->required();
+  cmd->add_option("--out", o->out, "CSV file to write")->required();
+  cmd->add_option("--material", o->material, "generating card (default: the scene's)");
+  cmd->add_option("--x", o->syn.x, "abscissa column (strain, cumulative_strain, increment)");
+  cmd->add_option("--y", o->syn.y, "response column (stress, eps_ww, eps_zz, ...)");
+  cmd->add_option("--noise", o->syn.noise, "standard deviation of the Gaussian noise on y (units of y)");
+  cmd->add_option("--seed", o->syn.seed, "random seed");
+  cmd->add_option("--every", o->syn.every, "keep every k-th increment");
+  cmd->add_flag("--force", o->force, "overwrite an existing file");
+  cmd->callback([o, &g, &exit_code, command_line] {
+    auto scene = scene::read_scene_file(o->scene);
+    if (!o->material.empty()) scene.card = material::load_material_card(o->material);
+    if (std::filesystem::exists(o->out) && !o->force) throw io::InputError("", "--out", o->out, "file exists; pass --force to overwrite");
+    o->syn.command = command_line;
+    const std::string csv = inverse::synthetic_measurement_csv(scene, o->syn);
+    const std::string tmp = o->out + ".tmp";
+    {
+      std::ofstream f(tmp, std::ios::trunc);
+      if (!f) throw io::InputError("", "--out", o->out, "cannot write");
+      f << csv;
+    }
+    std::filesystem::rename(tmp, o->out);
+    if (!g.quiet) std::cout << "wrote " << o->out << " (synthetic, card " << scene.card.name << ", noise " << o->syn.noise << ", seed " << o->syn.seed << ")\n";
+    exit_code = 0;
+  });
+}
+
+}  // namespace spifit::cli

@@ -1,0 +1,43 @@
+#pragma once
+// Least-squares identification with Ceres (Levenberg-Marquardt or dogleg), exact derivatives
+// through the material-point scenes (Jets), uncertainty at the solution.
+#include "inverse/fit_file.hpp"
+#include "inverse/uncertainty.hpp"
+
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct ExperimentCost {
+  std::string name, kind;
+  int points = 0;
+  double cost = 0.0;  // 1/2 sum r^2 of this experiment at the solution
+  double rms = 0.0;   // root-mean-square conditioned residual
+};
+
+struct FitResult {
+  std::string algorithm, termination;
+  bool usable = false;
+  std::vector<double> initial, values;  // physical values of the free parameters
+  double cost_initial = 0.0, cost_final = 0.0;  // 1/2 sum of squared conditioned residuals
+  int iterations = 0;
+  long forward_runs = 0;
+  double wall_seconds = 0.0;
+  std::vector<double> cost_history;  // per iteration
+  std::vector<ExperimentCost> experiment_costs;
+  Uncertainty uncertainty;
+  material::MaterialCard card;  // the fitted card
+};
+
+struct FitRunOptions {
+  std::string algorithm;  // overrides the fit file when not empty
+  int threads = 1;        // parallel evaluation of experiments (Ceres num_threads)
+};
+
+FitResult fit_with_ceres(const FitProblem& problem, const FitRunOptions& options = {});
+
+// Cost and conditioned residuals at an internal parameter vector (false: a forward run failed).
+bool evaluate_residuals(const FitProblem& problem, const std::vector<double>& internal, Eigen::VectorXd* residuals);
+
+}  // namespace spifit::inverse

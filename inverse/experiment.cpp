@@ -1,0 +1,133 @@
+#include "inverse/experiment.hpp"
+
+#include "forward/scenes/curve_columns.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace spifit::inverse {
+
+namespace {
+
+class CurveExperiment final : public Experiment {
+ public:
+  explicit CurveExperiment(CurveExperimentSpec s) : s_(std::move(s)) {
+    s_.scene.setup.want_r_value = false;  // a curve needs neither side run
+    s_.scene.setup.want_offset_yield = false;
+    name_ = s_.name;
+    kind_ = "curve";
+    weight_ = s_.weight;
+    if (s_.noise > 0) {
+      scale_ = s_.noise;
+    } else {
+      const auto [lo, hi] = std::minmax_element(s_.ys.begin(), s_.ys.end());
+      scale_ = *hi - *lo > 0 ? *hi - *lo : 1.0;
+    }
+    sqrt_w_.resize(s_.xs.size());
+    for (std::size_t i = 0; i < s_.xs.size(); ++i) {
+      const double wp = s_.point_weights.empty() ? 1.0 : s_.point_weights[i];
+      sqrt_w_[i] = std::sqrt(s_.weight * wp);
+    }
+  }
+  int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
+  bool residuals(const material::MaterialParams<double>& m, double* r) const override { return eval(m, r, nullptr); }
+  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  ExperimentCurve compare(const material::MaterialParams<double>& m) const override {
+    ExperimentCurve c{s_.x, s_.y, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
+    std::vector<double> sim(s_.xs.size());
+    std::vector<double> r(s_.xs.size());
+    if (eval(m, r.data(), &sim)) c.simulated = sim;
+    return c;
+  }
+
+ private:
+  template <typename T>
+  bool eval(const material::MaterialParams<T>& m, T* r, std::vector<double>* simulated) const {
+    const auto res = scene::run_material_point(m, s_.scene.setup);
+    if (!res.ok) return false;
+    const auto& curve = res.curve;
+    // Simulated abscissa (data, increasing; checked when the experiment was built).
+    std::size_t seg = 0;
+    for (std::size_t i = 0; i < s_.xs.size(); ++i) {
+      const double x = s_.xs[i];
+      while (seg + 2 < curve.size() && *scene::curve_abscissa(curve[seg + 1], s_.x) < x) ++seg;
+      const double x0 = *scene::curve_abscissa(curve[seg], s_.x), x1 = *scene::curve_abscissa(curve[seg + 1], s_.x);
+      const T y0 = *scene::curve_response(curve[seg], s_.y), y1 = *scene::curve_response(curve[seg + 1], s_.y);
+      const double t = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
+      const T y = y0 + (y1 - y0) * t;
+      r[i] = sqrt_w_[i] * (y - s_.ys[i]) / scale_;
+      if (simulated) (*simulated)[i] = value_of(y);
+    }
+    return true;
+  }
+
+  CurveExperimentSpec s_;
+  std::vector<double> sqrt_w_;
+};
+
+template <typename T>
+std::optional<T> scalar_observable(const scene::MaterialPointResult<T>& r, const std::string& name) {
+  if (name == "r_value") return r.r_value;
+  if (name == "yield_stress") return r.offset_yield_stress;
+  if (name == "initial_yield_stress") {
+    if (r.yield_events.empty()) return std::nullopt;
+    return r.yield_events.front().stress;
+  }
+  if (name == "reverse_yield_stress") {
+    for (const auto& e : r.yield_events) if (e.segment == 1) return e.stress;
+    return std::nullopt;
+  }
+  if (name == "final_stress") return r.curve.back().stress;
+  return std::nullopt;
+}
+
+class ScalarExperiment final : public Experiment {
+ public:
+  explicit ScalarExperiment(ScalarExperimentSpec s) : s_(std::move(s)) {
+    s_.scene.setup.want_r_value = s_.observable == "r_value";
+    s_.scene.setup.want_offset_yield = s_.observable == "yield_stress";
+    name_ = s_.name;
+    kind_ = "scalar";
+    weight_ = s_.weight;
+    scale_ = s_.noise > 0 ? s_.noise : (s_.value != 0.0 ? std::abs(s_.value) : 1.0);
+  }
+  int num_residuals() const override { return 1; }
+  bool residuals(const material::MaterialParams<double>& m, double* r) const override { return eval(m, r, nullptr); }
+  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  ExperimentCurve compare(const material::MaterialParams<double>& m) const override {
+    ExperimentCurve c{"", s_.observable, "", "", {0.0}, {s_.value}, {}};
+    double r = 0.0, sim = 0.0;
+    if (eval(m, &r, &sim)) c.simulated = {sim};
+    return c;
+  }
+
+ private:
+  template <typename T>
+  bool eval(const material::MaterialParams<T>& m, T* r, double* simulated) const {
+    const auto res = scene::run_material_point(m, s_.scene.setup);
+    if (!res.ok) return false;
+    const auto v = scalar_observable(res, s_.observable);
+    if (!v) return false;
+    r[0] = std::sqrt(s_.weight) * (*v - s_.value) / scale_;
+    if (simulated) *simulated = value_of(*v);
+    return true;
+  }
+  ScalarExperimentSpec s_;
+};
+
+}  // namespace
+
+const char* scalar_observable_names() { return "r_value, yield_stress, initial_yield_stress, reverse_yield_stress, final_stress"; }
+bool is_scalar_observable(const std::string& n) {
+  return n == "r_value" || n == "yield_stress" || n == "initial_yield_stress" || n == "reverse_yield_stress" || n == "final_stress";
+}
+
+std::unique_ptr<Experiment> make_curve_experiment(CurveExperimentSpec spec) {
+  return std::make_unique<CurveExperiment>(std::move(spec));
+}
+std::unique_ptr<Experiment> make_scalar_experiment(ScalarExperimentSpec spec) {
+  return std::make_unique<ScalarExperiment>(std::move(spec));
+}
+
+}  // namespace spifit::inverse

@@ -1,0 +1,73 @@
+#pragma once
+// An experiment = a scene + what is measured + how residuals are weighted (SPEC §6).
+// The identification sees the forward model only through this interface: parameter values
+// in, conditioned residuals out. Material-point experiments evaluate with Jets (exact
+// derivatives); black-box FE experiments (later issues) will report supports_jets() = false
+// and be differentiated by central differences.
+#include "forward/material/material_params.hpp"
+#include "forward/scenes/scene_file.hpp"
+
+#include <ceres/jet.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+constexpr int kJetSize = 8;  // derivative slots per pass (Ceres DynamicAutoDiffCostFunction stride)
+using Jet = ceres::Jet<double, kJetSize>;
+
+// Compared quantity for reports: abscissa, measured and simulated values.
+struct ExperimentCurve {
+  std::string x_name, y_name, x_unit, y_unit;
+  std::vector<double> x, measured, simulated;
+};
+
+class Experiment {
+ public:
+  virtual ~Experiment() = default;
+  const std::string& name() const { return name_; }
+  const std::string& kind() const { return kind_; }
+  double weight() const { return weight_; }
+  double scale() const { return scale_; }  // the conditioning divisor (noise or range)
+  virtual int num_residuals() const = 0;
+  // Residuals = sqrt(weights) * (simulated - measured) / scale. False: the forward run failed.
+  virtual bool residuals(const material::MaterialParams<double>& m, double* r) const = 0;
+  virtual bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const = 0;
+  virtual bool supports_jets() const { return true; }
+  // Measured vs simulated at m (for reports); empty simulated values if the run failed.
+  virtual ExperimentCurve compare(const material::MaterialParams<double>& m) const = 0;
+
+ protected:
+  std::string name_, kind_;
+  double weight_ = 1.0, scale_ = 1.0;
+};
+
+// A curve measured on a material-point scene: y(x) with x an abscissa of the simulated curve
+// (strain, cumulative_strain for curves that reverse, or increment).
+struct CurveExperimentSpec {
+  std::string name;
+  scene::MaterialPointScene scene;
+  std::string x, y;           // column names in the data file and in the simulated curve
+  std::vector<double> xs, ys, point_weights;
+  std::string x_unit, y_unit;
+  double noise = 0.0;         // measurement standard deviation of y; 0: use the range of y
+  double weight = 1.0;
+};
+std::unique_ptr<Experiment> make_curve_experiment(CurveExperimentSpec spec);
+
+// A scalar measured on a material-point scene (r_value, yield_stress, initial_yield_stress,
+// reverse_yield_stress, final_stress).
+struct ScalarExperimentSpec {
+  std::string name;
+  scene::MaterialPointScene scene;
+  std::string observable;
+  double value = 0.0, noise = 0.0, weight = 1.0;
+  std::string source;  // provenance, e.g. "thesis App. C.1"
+};
+std::unique_ptr<Experiment> make_scalar_experiment(ScalarExperimentSpec spec);
+const char* scalar_observable_names();
+bool is_scalar_observable(const std::string& name);
+
+}  // namespace spifit::inverse

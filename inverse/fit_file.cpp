@@ -1,0 +1,170 @@
+#include "inverse/fit_file.hpp"
+
+#include "forward/io/toml_reader.hpp"
+#include "forward/scenes/curve_columns.hpp"
+#include "inverse/measurement.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace spifit::inverse {
+
+namespace fs = std::filesystem;
+using io::format_number;
+using io::InputError;
+
+const char* fit_algorithm_names() { return "levenberg_marquardt, dogleg"; }
+bool is_fit_algorithm(const std::string& n) { return n == "levenberg_marquardt" || n == "dogleg"; }
+
+namespace {
+
+std::string resolve(const std::string& base_file, const std::string& p) {
+  fs::path q(p);
+  if (q.is_relative()) q = fs::path(base_file).parent_path() / q;
+  return q.lexically_normal().string();
+}
+
+// Range of the simulated abscissa of a scene: [0, end] and whether it increases.
+std::pair<double, double> abscissa_range(const scene::MaterialPointSetup& s, const std::string& x, bool* monotone) {
+  double prev = 0.0, total = 0.0, lo = 0.0, hi = 0.0;
+  bool increasing = true;
+  for (double t : s.strain_path) {
+    total += std::abs(t - prev);
+    if (t < prev) increasing = false;
+    lo = std::min(lo, t);
+    hi = std::max(hi, t);
+    prev = t;
+  }
+  if (x == "cumulative_strain") { *monotone = true; return {0.0, total}; }
+  if (x == "increment") { *monotone = true; return {0.0, double(s.increments)}; }
+  *monotone = increasing;
+  return {lo, hi};
+}
+
+ParameterSpec read_parameter(const io::TomlTable& t, const std::string& name, const material::MaterialCard& card) {
+  t.allow_only({"initial", "lower", "upper", "fixed", "log"});
+  ParameterSpec p;
+  p.name = name;
+  p.initial = t.number("initial", parameter_value(card, name));
+  p.fixed = t.boolean("fixed", false);
+  p.log_scale = t.boolean("log", false);
+  if (!p.fixed) {
+    p.lower = t.number("lower");
+    p.upper = t.number("upper");
+    if (!(p.lower < p.upper)) t.fail("upper", "must be > lower = " + format_number(p.lower));
+    if (p.initial < p.lower || p.initial > p.upper)
+      t.fail(t.has("initial") ? "initial" : "lower", "initial value " + format_number(p.initial) + " lies outside [lower, upper]");
+    if (p.log_scale && !(p.lower > 0)) t.fail("lower", "log-scaled parameters need lower > 0");
+  } else {
+    p.lower = p.upper = p.initial;
+  }
+  return p;
+}
+
+}  // namespace
+
+FitProblem read_fit_file(const std::string& path) {
+  const auto root = io::TomlTable::parse_file(path);
+  root.allow_only({"fit", "parameters", "experiment"});
+  FitProblem fp;
+  fp.file = path;
+  const auto ft = root.table("fit");
+  if (!ft) root.fail("fit", "required table [fit] is missing");
+  ft->allow_only({"name", "description", "card", "normalise_hill", "algorithm", "max_iterations", "function_tolerance",
+                  "parameter_tolerance", "gradient_tolerance"});
+  fp.name = ft->string("name", fs::path(path).stem().string());
+  fp.description = ft->string("description", "");
+  const std::string card_path = resolve(path, ft->string("card"));
+  if (!fs::exists(card_path)) ft->fail("card", "starting card not found at " + card_path);
+  const auto card = material::load_material_card(card_path);
+  const bool normalise = ft->boolean("normalise_hill", true);
+  auto& st = fp.settings;
+  st.algorithm = ft->string("algorithm", st.algorithm);
+  if (!is_fit_algorithm(st.algorithm)) ft->fail("algorithm", std::string("unknown algorithm (known: ") + fit_algorithm_names() + ")");
+  st.max_iterations = ft->integer("max_iterations", st.max_iterations);
+  if (st.max_iterations < 1) ft->fail("max_iterations", "must be >= 1");
+  st.function_tolerance = ft->number("function_tolerance", st.function_tolerance);
+  st.parameter_tolerance = ft->number("parameter_tolerance", st.parameter_tolerance);
+  st.gradient_tolerance = ft->number("gradient_tolerance", st.gradient_tolerance);
+
+  std::vector<ParameterSpec> specs;
+  const auto pt = root.table("parameters");
+  if (!pt) root.fail("parameters", "required table [parameters] is missing");
+  for (const auto& name : pt->keys()) {
+    if (!is_known_parameter(name)) {
+      std::string known;
+      for (const auto& k : known_parameter_names()) known += (known.empty() ? "" : ", ") + k;
+      pt->fail(name, "unknown parameter (known: " + known + ")");
+    }
+    if (name == "hill.H" && normalise) pt->fail(name, "H = 2 - G while [fit] normalise_hill = true; fit hill.G instead");
+    specs.push_back(read_parameter(*pt->table(name), name, card));
+  }
+  fp.parameters = std::make_unique<ParameterSet>(card, specs, normalise);
+  if (fp.parameters->num_free() == 0) root.fail("parameters", "no free parameter (every listed parameter is fixed)");
+
+  const auto exps = root.table_array("experiment");
+  if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
+  for (const auto& e : exps) {
+    const bool scalar = e.has("observable");
+    if (scalar) e.allow_only({"name", "scene", "observable", "value", "noise", "weight", "source"});
+    else e.allow_only({"name", "scene", "data", "x", "y", "noise", "weight", "weight_column"});
+    const std::string scene_path = resolve(path, e.string("scene"));
+    if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
+    auto sc = scene::read_scene_file(scene_path);
+    const std::string name = e.string("name", sc.name);
+    const double noise = e.number("noise", 0.0);
+    if (noise < 0) e.fail("noise", "must be >= 0 (0: condition by the range of the data)");
+    const double weight = e.number("weight", 1.0);
+    if (!(weight > 0)) e.fail("weight", "must be > 0");
+    if (scalar) {
+      ScalarExperimentSpec s;
+      s.name = name;
+      s.scene = std::move(sc);
+      s.observable = e.string("observable");
+      if (!is_scalar_observable(s.observable)) e.fail("observable", std::string("unknown observable (known: ") + scalar_observable_names() + ")");
+      if (s.observable == "r_value" || s.observable == "yield_stress") {
+        if (s.scene.setup.kind != scene::MaterialPointKind::tensile) e.fail("observable", "r_value and yield_stress need a tensile scene");
+      }
+      s.value = e.number("value");
+      s.noise = noise;
+      s.weight = weight;
+      s.source = e.string("source", "");
+      fp.experiments.push_back(make_scalar_experiment(std::move(s)));
+      continue;
+    }
+    CurveExperimentSpec c;
+    c.name = name;
+    c.scene = std::move(sc);
+    c.noise = noise;
+    c.weight = weight;
+    c.x = e.string("x", "strain");
+    c.y = e.string("y", "stress");
+    scene::CurvePoint<double> probe;
+    if (!scene::curve_abscissa(probe, c.x)) e.fail("x", std::string("not an abscissa of a simulated curve (known: ") + scene::curve_abscissa_names() + ")");
+    if (!scene::curve_response(probe, c.y)) e.fail("y", std::string("not a column of a simulated curve (known: ") + scene::curve_response_names() + ")");
+    const std::string data_path = resolve(path, e.string("data"));
+    const auto table = read_measurement_csv(data_path);
+    c.xs = table.column(c.x);
+    c.ys = table.column(c.y);
+    c.x_unit = table.units.at(c.x);
+    c.y_unit = table.units.at(c.y);
+    if (e.has("weight_column")) {
+      c.point_weights = table.column(e.string("weight_column"));
+      for (double w : c.point_weights) if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
+    }
+    bool monotone = true;
+    const auto [lo, hi] = abscissa_range(c.scene.setup, c.x, &monotone);
+    if (!monotone) e.fail("x", "the scene's strain reverses: use x = \"cumulative_strain\" (or \"increment\") for curves that reverse");
+    for (std::size_t i = 0; i < c.xs.size(); ++i) {
+      if (i > 0 && !(c.xs[i] > c.xs[i - 1]))
+        throw InputError(data_path, "column " + c.x, format_number(c.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
+      if (c.xs[i] < lo - 1e-12 || c.xs[i] > hi + 1e-12)
+        throw InputError(data_path, "column " + c.x, format_number(c.xs[i]),
+                         "outside the simulated range [" + format_number(lo) + ", " + format_number(hi) + "] of scene " + c.scene.name);
+    }
+    fp.experiments.push_back(make_curve_experiment(std::move(c)));
+  }
+  return fp;
+}
+
+}  // namespace spifit::inverse

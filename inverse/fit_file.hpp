@@ -1,0 +1,35 @@
+#pragma once
+// A fit file (TOML, schema in docs/file-formats.md): the starting card, the named free and
+// fixed parameters with bounds, the experiments and the optimiser settings.
+#include "inverse/experiment.hpp"
+#include "inverse/parameters.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct FitSettings {
+  std::string algorithm = "levenberg_marquardt";  // levenberg_marquardt | dogleg
+  int max_iterations = 200;
+  double function_tolerance = 1e-14;
+  double parameter_tolerance = 1e-12;
+  double gradient_tolerance = 1e-14;
+};
+
+struct FitProblem {
+  std::string name, description, file;
+  std::unique_ptr<ParameterSet> parameters;
+  std::vector<std::unique_ptr<Experiment>> experiments;
+  FitSettings settings;
+};
+
+// Throws io::InputError naming file, key and value (unknown parameter, bad bounds, missing
+// data column, measured abscissa outside the simulated range, ...).
+FitProblem read_fit_file(const std::string& path);
+
+const char* fit_algorithm_names();
+bool is_fit_algorithm(const std::string& name);
+
+}  // namespace spifit::inverse

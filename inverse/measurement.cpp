@@ -1,0 +1,96 @@
+#include "inverse/measurement.hpp"
+
+#include "forward/io/input_error.hpp"
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace spifit::inverse {
+
+using io::InputError;
+
+namespace {
+std::string trim(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  const auto b = s.find_last_not_of(" \t\r");
+  return s.substr(a, b - a + 1);
+}
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  std::string cell;
+  while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
+  if (!line.empty() && line.back() == ',') out.push_back("");
+  return out;
+}
+}  // namespace
+
+const std::vector<double>& MeasurementTable::column(const std::string& name) const {
+  const auto it = columns.find(name);
+  if (it == columns.end()) {
+    std::string have;
+    for (const auto& n : names) have += (have.empty() ? "" : ", ") + n;
+    throw InputError(file, "column", name, "no such column (columns: " + have + ")");
+  }
+  return it->second;
+}
+
+MeasurementTable read_measurement_csv(const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, "", "", "measurement file not found");
+  std::ifstream in(path);
+  MeasurementTable t;
+  t.file = path;
+  std::string line;
+  int lineno = 0;
+  bool header = false;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string s = trim(line);
+    if (s.empty()) continue;
+    if (s[0] == '#') {
+      t.comments.push_back(trim(s.substr(1)));
+      continue;
+    }
+    const auto cells = split(s);
+    if (!header) {
+      for (const auto& c : cells) {
+        std::string name = c, unit;
+        const auto br = c.find('[');
+        if (br != std::string::npos) {
+          const auto close = c.find(']', br);
+          if (close == std::string::npos) throw InputError(path, "line " + std::to_string(lineno), c, "unit bracket not closed");
+          name = trim(c.substr(0, br));
+          unit = trim(c.substr(br + 1, close - br - 1));
+        }
+        if (name.empty()) throw InputError(path, "line " + std::to_string(lineno), c, "empty column name");
+        if (t.columns.count(name)) throw InputError(path, "line " + std::to_string(lineno), name, "duplicate column name");
+        t.names.push_back(name);
+        t.units[name] = unit;
+        t.columns[name] = {};
+      }
+      header = true;
+      continue;
+    }
+    if (cells.size() != t.names.size()) {
+      throw InputError(path, "line " + std::to_string(lineno), s,
+                       "expected " + std::to_string(t.names.size()) + " values, found " + std::to_string(cells.size()));
+    }
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      char* end = nullptr;
+      const double v = std::strtod(cells[i].c_str(), &end);
+      if (cells[i].empty() || end != cells[i].c_str() + cells[i].size() || !std::isfinite(v)) {
+        throw InputError(path, "line " + std::to_string(lineno) + ", column " + t.names[i], cells[i], "not a finite number");
+      }
+      t.columns[t.names[i]].push_back(v);
+    }
+  }
+  if (!header) throw InputError(path, "", "", "no header row");
+  if (t.rows() == 0) throw InputError(path, "", "", "no data rows");
+  return t;
+}
+
+}  // namespace spifit::inverse

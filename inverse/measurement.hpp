@@ -1,0 +1,24 @@
+#pragma once
+// A measurement file: CSV with '#' comment lines (provenance), one header row naming the
+// columns as "name" or "name [unit]", then numbers. Errors name the file, line and value.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct MeasurementTable {
+  std::string file;
+  std::vector<std::string> comments;             // the '#' lines, without '#'
+  std::vector<std::string> names;                // column names without units
+  std::map<std::string, std::string> units;      // name -> unit ("" if none)
+  std::map<std::string, std::vector<double>> columns;
+
+  bool has(const std::string& name) const { return columns.count(name) > 0; }
+  const std::vector<double>& column(const std::string& name) const;  // throws InputError
+  std::size_t rows() const { return columns.empty() ? 0 : columns.begin()->second.size(); }
+};
+
+MeasurementTable read_measurement_csv(const std::string& path);
+
+}  // namespace spifit::inverse

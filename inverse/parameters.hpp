@@ -1,0 +1,89 @@
+#pragma once
+// Named, bounded parameters of an identification (SPEC §6) and their mapping between the
+// optimiser's vector (internal coordinates: log of the value for log-scaled parameters) and
+// a material card. Ties: hill.N also sets L and M. Normalisation G + H = 2 is eliminated by
+// fitting hill.G and setting H = 2 - G (never handed to the optimiser as a constraint).
+#include "forward/material/material_card.hpp"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct ParameterSpec {
+  std::string name;     // e.g. "swift.K"
+  double initial = 0;   // physical value where the fit starts
+  double lower = 0;     // physical bounds (finite)
+  double upper = 0;
+  bool fixed = false;
+  bool log_scale = false;  // optimise ln(value) (needs lower > 0)
+};
+
+// Names spifit knows, in a fixed order.
+const std::vector<std::string>& known_parameter_names();
+bool is_known_parameter(const std::string& name);
+// Current value of a named parameter in a card.
+double parameter_value(const material::MaterialCard& card, const std::string& name);
+
+class ParameterSet {
+ public:
+  // base: the card whose values are used for everything not fitted.
+  ParameterSet(material::MaterialCard base, std::vector<ParameterSpec> specs, bool normalise_hill);
+
+  const std::vector<ParameterSpec>& specs() const { return specs_; }
+  const std::vector<int>& free_indices() const { return free_; }  // into specs()
+  int num_free() const { return static_cast<int>(free_.size()); }
+  bool normalise_hill() const { return normalise_hill_; }
+  const material::MaterialCard& base() const { return base_; }
+
+  std::vector<double> initial_internal() const;
+  std::vector<double> lower_internal() const;
+  std::vector<double> upper_internal() const;
+  double to_physical(int free_index, double internal) const;
+  double to_internal(int free_index, double physical) const;
+  // d physical / d internal at an internal value (1, or the value for log scaling).
+  double physical_per_internal(int free_index, double internal) const;
+
+  // Material parameters for an internal vector (templated for Jets).
+  template <typename T>
+  material::MaterialParams<T> apply(const T* x) const {
+    using std::exp;
+    material::MaterialParams<T> m = base_.params.template cast<T>();
+    for (const auto& s : specs_) {
+      if (s.fixed) set(m, s.name, T(s.initial));
+    }
+    for (int k = 0; k < num_free(); ++k) {
+      const auto& s = specs_[free_[k]];
+      set(m, s.name, s.log_scale ? T(exp(x[k])) : x[k]);
+    }
+    if (normalise_hill_) m.H = 2.0 - m.G;
+    return m;
+  }
+  material::MaterialCard card_for(const std::vector<double>& internal) const;
+
+ private:
+  template <typename T>
+  static void set(material::MaterialParams<T>& m, const std::string& n, const T& v) {
+    if (n == "elastic.E") m.E = v;
+    else if (n == "elastic.nu") m.nu = v;
+    else if (n == "hill.F") m.F = v;
+    else if (n == "hill.G") m.G = v;
+    else if (n == "hill.H") m.H = v;
+    else if (n == "hill.N") { m.N = v; m.L = v; m.M = v; }  // tie N = L = M
+    else if (n == "swift.K") m.K = v;
+    else if (n == "swift.eps0") m.eps0 = v;
+    else if (n == "swift.n") m.n = v;
+    else if (n == "af.CX") m.CX = v;
+    else if (n == "af.Xsat") m.Xsat = v;
+    else if (n == "ziegler.CA") m.CA = v;
+    else if (n == "ziegler.GA") m.GA = v;
+  }
+
+  material::MaterialCard base_;
+  std::vector<ParameterSpec> specs_;
+  std::vector<int> free_;
+  bool normalise_hill_ = true;
+};
+
+}  // namespace spifit::inverse

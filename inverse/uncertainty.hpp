@@ -1,0 +1,32 @@
+#pragma once
+// Uncertainty and identifiability of a least-squares fit (SPEC §6): covariance
+// sigma^2 (J^T J)^+ with sigma^2 = SSE / (m - p), from a dense SVD of the Jacobian scaled by
+// the parameter magnitudes, so that a rank-deficient Jacobian is reported, not crashed on.
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct Uncertainty {
+  int m = 0, p = 0, dof = 0;
+  double sse = 0.0, sigma2 = 0.0;
+  std::vector<double> std_error;          // physical units; +inf where not identifiable
+  std::vector<double> ci95_lower, ci95_upper;
+  double t_quantile = 0.0;                // Student t(0.975, dof)
+  Eigen::MatrixXd covariance, correlation;
+  std::vector<double> singular_values;    // of J diag(|value|) (relative sensitivities)
+  double condition_number = 0.0;
+  std::vector<bool> identifiable;
+  std::vector<std::string> warnings;      // plain words
+};
+
+// J: m x p Jacobian of the conditioned residuals w.r.t. the physical parameter values.
+Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd& residuals, const std::vector<double>& values,
+                                const std::vector<std::string>& names);
+
+// Quantile of Student's t distribution (two-sided intervals use p = 0.975).
+double student_t_quantile(double p, int dof);
+
+}  // namespace spifit::inverse

@@ -1,0 +1,76 @@
+// Bad fit files are input errors naming file, key and value.
+#include "forward/io/input_error.hpp"
+#include "inverse/fit_file.hpp"
+#include "inverse/measurement.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using namespace spifit;
+
+namespace {
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+
+std::string write(const std::string& name, const std::string& text) {
+  const fs::path p = fs::temp_directory_path() / ("spifit_fitfile_" + std::to_string(::getpid()) + "_" + name);
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+std::string base_fit(const std::string& params, const std::string& experiment) {
+  return "[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") + "\"\n" + params + experiment;
+}
+
+const std::string kParam = "[parameters.\"swift.K\"]\nlower = 50.0\nupper = 500.0\n";
+std::string curve(const std::string& data, const std::string& extra = "") {
+  return "[[experiment]]\nname = \"t\"\nscene = \"" + src("experiments/aa3003o/scenes/tensile_00.toml") + "\"\ndata = \"" + data + "\"\n" + extra;
+}
+
+void expect_error(const std::string& fit_text, const std::string& key, const std::string& value_part) {
+  const std::string path = write("fit.toml", fit_text);
+  try {
+    inverse::read_fit_file(path);
+    FAIL() << "no error";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(e.key().find(key), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(value_part), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+  }
+  fs::remove(path);
+}
+}  // namespace
+
+TEST(FitFile, Errors) {
+  const std::string data = write("d.csv", "# synthetic\nstrain [-],stress [MPa]\n0.01,60\n0.02,70\n");
+  expect_error(base_fit("[parameters.\"swift.KK\"]\nlower = 1.0\nupper = 2.0\n", curve(data)), "parameters.swift.KK", "unknown parameter");
+  expect_error(base_fit("[parameters.\"swift.K\"]\nlower = 500.0\nupper = 50.0\n", curve(data)), "parameters.swift.K.upper", "50");
+  expect_error(base_fit("[parameters.\"swift.K\"]\ninitial = 1000.0\nlower = 50.0\nupper = 500.0\n", curve(data)), "parameters.swift.K.initial", "1000");
+  expect_error(base_fit("[parameters.\"swift.eps0\"]\nlower = 0.0\nupper = 1.0\nlog = true\n", curve(data)), "parameters.swift.eps0.lower", "0");
+  expect_error(base_fit(kParam, curve(data, "y = \"force\"\n")), "experiment[0].y", "force");
+  const std::string nocol = write("nocol.csv", "strain [-],stres [MPa]\n0.01,60\n");
+  expect_error(base_fit(kParam, curve(nocol)), "column", "stress");
+  const std::string outside = write("outside.csv", "strain [-],stress [MPa]\n0.01,60\n0.5,70\n");
+  expect_error(base_fit(kParam, curve(outside)), "column strain", "0.5");
+  const std::string badnum = write("badnum.csv", "strain [-],stress [MPa]\n0.01,6O\n");
+  expect_error(base_fit(kParam, curve(badnum)), "line 2, column stress", "6O");
+  expect_error(base_fit(kParam, "[[experiment]]\nscene = \"" + src("experiments/aa3003o/scenes/tensile_00.toml") + "\"\nobservable = \"r_valu\"\nvalue = 0.7\n"),
+               "experiment[0].observable", "r_valu");
+  expect_error(base_fit("[parameters.\"hill.H\"]\nlower = 0.5\nupper = 1.5\n", curve(data)), "parameters.hill.H", "H = 2 - G");
+}
+
+TEST(FitFile, MeasurementUnitsAndComments) {
+  const std::string data = write("units.csv", "# SYNTHETIC\n# seed 3\nstrain [-], stress [MPa]\n0.01, 60.5\n");
+  const auto t = inverse::read_measurement_csv(data);
+  EXPECT_EQ(t.comments.size(), 2u);
+  EXPECT_EQ(t.units.at("stress"), "MPa");
+  EXPECT_EQ(t.column("stress")[0], 60.5);
+}
+
+TEST(FitFile, BundledFitClassicLoads) {
+  const auto fp = inverse::read_fit_file(src("experiments/aa3003o/fit_classic.toml"));
+  EXPECT_EQ(fp.parameters->num_free(), 6);
+  EXPECT_EQ(fp.experiments.size(), 7u);
+}

@@ -1,0 +1,41 @@
+// Uncertainty analysis on problems with known answers.
+#include "inverse/uncertainty.hpp"
+
+#include <Eigen/Dense>
+#include <gtest/gtest.h>
+
+using namespace spifit::inverse;
+
+// Published t quantiles (two-sided 95 %): 12.706 (1 dof), 2.228 (10), 1.984 (100).
+TEST(Uncertainty, StudentTQuantiles) {
+  EXPECT_NEAR(student_t_quantile(0.975, 1), 12.7062, 1e-3);
+  EXPECT_NEAR(student_t_quantile(0.975, 10), 2.2281, 1e-4);
+  EXPECT_NEAR(student_t_quantile(0.975, 100), 1.9840, 1e-4);
+}
+
+// Straight line y = a + b x through 5 points: covariance s^2 (X^T X)^-1 in closed form.
+TEST(Uncertainty, LinearRegression) {
+  Eigen::MatrixXd J(5, 2);
+  Eigen::VectorXd r(5);
+  for (int i = 0; i < 5; ++i) { J(i, 0) = 1.0; J(i, 1) = i; }
+  r << 0.1, -0.2, 0.05, 0.1, -0.05;
+  const auto u = analyse_uncertainty(J, r, {1.0, 2.0}, {"a", "b"});
+  const double s2 = r.squaredNorm() / 3.0;
+  const Eigen::Matrix2d cov = s2 * (J.transpose() * J).inverse();
+  EXPECT_NEAR(u.std_error[0], std::sqrt(cov(0, 0)), 1e-12);
+  EXPECT_NEAR(u.std_error[1], std::sqrt(cov(1, 1)), 1e-12);
+  EXPECT_NEAR(u.correlation(0, 1), cov(0, 1) / std::sqrt(cov(0, 0) * cov(1, 1)), 1e-12);
+  EXPECT_TRUE(u.warnings.empty());
+}
+
+// Two parameters that only appear as a sum: rank deficient, both reported, nothing crashes.
+TEST(Uncertainty, RankDeficient) {
+  Eigen::MatrixXd J(4, 3);
+  J << 1, 1, 0.5, 2, 2, 0.1, 3, 3, 0.7, 4, 4, 0.2;
+  Eigen::VectorXd r = Eigen::VectorXd::Constant(4, 0.01);
+  const auto u = analyse_uncertainty(J, r, {1.0, 1.0, 1.0}, {"a", "b", "c"});
+  EXPECT_FALSE(u.identifiable[0]);
+  EXPECT_FALSE(u.identifiable[1]);
+  EXPECT_TRUE(u.identifiable[2]);
+  EXPECT_EQ(u.warnings.size(), 2u);
+}
