@@ -61,7 +61,14 @@ json fit_result_json(const FitProblem& fp, const FitResult& r) {
                       {"singular_values_scaled", u.singular_values}, {"condition_number", number_or_null(u.condition_number)}};
   j["warnings"] = u.warnings;
   json ex = json::array();
-  for (const auto& e : r.experiment_costs) ex.push_back({{"name", e.name}, {"kind", e.kind}, {"points", e.points}, {"cost", e.cost}, {"rms", e.rms}});
+  for (std::size_t i = 0; i < r.experiment_costs.size(); ++i) {
+    const auto& e = r.experiment_costs[i];
+    const auto c = fp.experiments[i]->compare(r.card.params);
+    ex.push_back({{"name", e.name}, {"kind", e.kind}, {"points", e.points}, {"cost", e.cost}, {"rms", e.rms},
+                  {"scale", fp.experiments[i]->scale()}, {"weight", fp.experiments[i]->weight()},
+                  {"x", c.x_name}, {"y", c.y_name}, {"x_unit", c.x_unit}, {"y_unit", c.y_unit},
+                  {"data_file", "experiments/" + e.name + ".csv"}});
+  }
   j["experiments"] = ex;
   return j;
 }
