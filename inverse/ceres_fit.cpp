@@ -97,14 +97,36 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
   out.iterations = static_cast<int>(summary.iterations.size());
   out.cost_final = summary.final_cost;
 
+  analyse_solution(fp, x, so.num_threads, &out);
+  out.forward_runs += runs.load();
+  out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int threads, FitResult* out_ptr) {
+  FitResult& out = *out_ptr;
+  const ParameterSet& ps = *fp.parameters;
+  const int p = ps.num_free();
+  std::vector<double> x = x_in;
+  out.values.clear();
   for (int k = 0; k < p; ++k) out.values.push_back(ps.to_physical(k, x[k]));
   out.card = ps.card_for(x);
-
-  // Jacobian at the solution (internal coordinates) -> physical coordinates.
+  std::atomic<long> runs{0};
+  ceres::Problem::Options popts;
+  popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+  ceres::Problem problem(popts);
+  for (const auto& e : fp.experiments) {
+    auto* cf = new ceres::DynamicAutoDiffCostFunction<ExperimentFunctor, kJetSize>(new ExperimentFunctor{&ps, e.get(), &runs});
+    cf->AddParameterBlock(p);
+    cf->SetNumResiduals(e->num_residuals());
+    problem.AddResidualBlock(cf, nullptr, x.data());
+  }
+  ceres::Problem::EvaluateOptions eo;
+  eo.num_threads = std::max(1, threads);
   double cost = 0.0;
   std::vector<double> res;
   ceres::CRSMatrix crs;
-  if (problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost, &res, nullptr, &crs)) {
+  if (problem.Evaluate(eo, &cost, &res, nullptr, &crs)) {
     Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
     for (int i = 0; i < crs.num_rows; ++i) {
       for (int j = crs.rows[i]; j < crs.rows[i + 1]; ++j) J(i, crs.cols[j]) = crs.values[j];
@@ -114,6 +136,7 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
     std::vector<std::string> names;
     for (int idx : ps.free_indices()) names.push_back(ps.specs()[idx].name);
     out.uncertainty = analyse_uncertainty(J, r, out.values, names);
+    out.experiment_costs.clear();
     int offset = 0;
     for (const auto& e : fp.experiments) {
       ExperimentCost ec{e->name(), e->kind(), e->num_residuals(), 0.0, 0.0};
@@ -125,9 +148,7 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
   } else {
     out.uncertainty.warnings.push_back("the forward model failed at the solution: no uncertainty estimate");
   }
-  out.forward_runs = runs.load();
-  out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return out;
+  out.forward_runs += runs.load();
 }
 
 }  // namespace spifit::inverse

@@ -18,6 +18,7 @@ struct ExperimentCost {
 
 struct FitResult {
   std::string algorithm, termination;
+  unsigned seed = 0;  // NLopt seed (0 for the deterministic Ceres algorithms)
   bool usable = false;
   std::vector<double> initial, values;  // physical values of the free parameters
   double cost_initial = 0.0, cost_final = 0.0;  // 1/2 sum of squared conditioned residuals
@@ -33,9 +34,17 @@ struct FitResult {
 struct FitRunOptions {
   std::string algorithm;  // overrides the fit file when not empty
   int threads = 1;        // parallel evaluation of experiments (Ceres num_threads)
+  unsigned seed = 42;     // NLopt's stochastic algorithms (reported in fit.json)
 };
 
+// Levenberg-Marquardt or dogleg (Ceres).
 FitResult fit_with_ceres(const FitProblem& problem, const FitRunOptions& options = {});
+// Dispatches on the algorithm: Ceres names or NLopt names (nlopt_fit.hpp).
+FitResult run_fit(const FitProblem& problem, const FitRunOptions& options = {});
+
+// Fills values, card, Jacobian-based uncertainty and per-experiment costs at the internal
+// point x (shared by the Ceres and NLopt drivers).
+void analyse_solution(const FitProblem& problem, const std::vector<double>& x, int threads, FitResult* out);
 
 // Cost and conditioned residuals at an internal parameter vector (false: a forward run failed).
 bool evaluate_residuals(const FitProblem& problem, const std::vector<double>& internal, Eigen::VectorXd* residuals);

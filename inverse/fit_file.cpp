@@ -3,6 +3,7 @@
 #include "forward/io/toml_reader.hpp"
 #include "forward/scenes/curve_columns.hpp"
 #include "inverse/measurement.hpp"
+#include "inverse/nlopt_fit.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -13,8 +14,10 @@ namespace fs = std::filesystem;
 using io::format_number;
 using io::InputError;
 
-const char* fit_algorithm_names() { return "levenberg_marquardt, dogleg"; }
-bool is_fit_algorithm(const std::string& n) { return n == "levenberg_marquardt" || n == "dogleg"; }
+const char* fit_algorithm_names() {
+  return "levenberg_marquardt, dogleg (Ceres); bobyqa, cobyla, nelder_mead, sbplx, direct_l, crs2, isres, mlsl (NLopt)";
+}
+bool is_fit_algorithm(const std::string& n) { return n == "levenberg_marquardt" || n == "dogleg" || is_nlopt_algorithm(n); }
 
 namespace {
 

@@ -22,6 +22,7 @@ json fit_result_json(const FitProblem& fp, const FitResult& r) {
   j["fit"] = fp.name;
   j["fit_file"] = fp.file;
   j["algorithm"] = r.algorithm;
+  j["seed"] = r.seed;
   j["termination"] = r.termination;
   j["usable"] = r.usable;
   j["iterations"] = r.iterations;

@@ -2,6 +2,8 @@
 // Constitutive parameters of the Hill48 + Swift + {none, Armstrong-Frederick, Ziegler} law,
 // templated on the scalar type so that ceres::Jet gives exact parameter derivatives of a
 // material-point curve (NUMERICS.md, "Template the scalar type where cheap").
+#include "forward/material/scalar.hpp"
+
 #include <string>
 
 namespace spifit::material {
@@ -36,5 +38,16 @@ struct MaterialParams {
     return o;
   }
 };
+
+// Values of a (possibly Jet) parameter set.
+template <typename T>
+MaterialParams<double> values_of(const MaterialParams<T>& p) {
+  MaterialParams<double> o;
+  o.E = value_of(p.E); o.nu = value_of(p.nu);
+  o.F = value_of(p.F); o.G = value_of(p.G); o.H = value_of(p.H); o.L = value_of(p.L); o.M = value_of(p.M); o.N = value_of(p.N);
+  o.plastic = p.plastic; o.K = value_of(p.K); o.eps0 = value_of(p.eps0); o.n = value_of(p.n);
+  o.kinematic = p.kinematic; o.CX = value_of(p.CX); o.Xsat = value_of(p.Xsat); o.CA = value_of(p.CA); o.GA = value_of(p.GA);
+  return o;
+}
 
 }  // namespace spifit::material

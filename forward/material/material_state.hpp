@@ -1,6 +1,8 @@
 #pragma once
 // State of one integration point, and the status a constitutive update reports instead of
 // throwing (NUMERICS.md; MGIS/MFront's integrate -> ok / failed + suggested step factor).
+#include "forward/material/scalar.hpp"
+
 #include <Eigen/Core>
 
 namespace spifit::material {
@@ -17,6 +19,20 @@ struct MaterialState {
   T eqps = T(0.0);            // equivalent plastic strain, work-conjugate to sigma_eq (eq. 3.2)
   T plastic_work = T(0.0);    // sum of sigma . d eps_p [MJ/m^3 = MPa]
 };
+
+template <typename T, int Dim>
+MaterialState<double, Dim> values_of(const MaterialState<T, Dim>& s) {
+  MaterialState<double, Dim> o;
+  for (int i = 0; i < Dim; ++i) {
+    o.stress(i) = value_of(s.stress(i));
+    o.plastic_strain(i) = value_of(s.plastic_strain(i));
+    o.back_stress(i) = value_of(s.back_stress(i));
+  }
+  o.back_stress_zz = value_of(s.back_stress_zz);
+  o.eqps = value_of(s.eqps);
+  o.plastic_work = value_of(s.plastic_work);
+  return o;
+}
 
 enum class UpdateStatus { ok, failed };
 

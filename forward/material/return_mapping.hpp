@@ -18,8 +18,8 @@
 //    is solved by Newton's method safeguarded by bisection on a bracket, so that large
 //    increments (10 % strain and more) converge.
 //  * The consistent tangent follows from implicit differentiation of (xi, dl).
-// With T = ceres::Jet the converged result carries exact parameter derivatives: a final
-// Newton update is always applied at the converged point.
+// With T = ceres::Jet the multiplier is converged in double precision on a value copy of the
+// law and one Newton update in Jets follows: exact parameter derivatives (integrate_jet).
 #include "forward/material/material_params.hpp"
 #include "forward/material/material_state.hpp"
 #include "forward/material/scalar.hpp"
@@ -29,6 +29,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <type_traits>
 
 namespace spifit::material {
@@ -48,9 +49,16 @@ class ReturnMapping {
 
   explicit ReturnMapping(const MaterialParams<T>& params, ReturnMappingOptions options = {})
       : m_(params), options_(options), C_(Space::elastic(params)), P_(Space::hill(params)),
-        A_(Space::kinematic_map()) {}
+        A_(Space::kinematic_map()) {
+    if constexpr (!std::is_same_v<T, double>) values_ = std::make_shared<const ReturnMapping<double, Dim>>(values_of(params), options);
+  }
 
   const MaterialParams<T>& params() const { return m_; }
+  // Jets: the same law on the parameter values (double precision iterations).
+  const ReturnMapping<double, Dim>& value_law() const {
+    if constexpr (std::is_same_v<T, double>) return *this;
+    else return *values_;
+  }
   const Mat& elastic_matrix() const { return C_; }
   const Mat& hill_matrix() const { return P_; }
 
@@ -103,6 +111,7 @@ class ReturnMapping {
       return result;
     }
     result.plastic = true;
+    if constexpr (!std::is_same_v<T, double>) return integrate_jet(s0, d_eps, sigma_tr, s1, tangent, result);
 
     // Convergence floor: the trial deviator is only known to about eps_mach * |sigma_tr|
     // (a large pressure), so |phi| cannot go below that.
@@ -113,7 +122,6 @@ class ReturnMapping {
     evaluate(s0, sigma_tr, dl, ev);
     double lo = 0.0, hi = std::numeric_limits<double>::infinity();
     bool converged = false;
-    constexpr bool exact_derivatives = !std::is_same_v<T, double>;
     for (int it = 0; it < options_.max_iterations; ++it) {
       result.iterations = it + 1;
       const double phi = value_of(ev.phi);
@@ -151,13 +159,23 @@ class ReturnMapping {
       evaluate(s0, sigma_tr, dl, ev);
     }
     if (!converged) return fail(result, "return mapping did not converge");
-    if constexpr (exact_derivatives) {
-      dl = dl - ev.phi / ev.dphi;
-      evaluate(s0, sigma_tr, dl, ev);
-    }
     if (!ev.valid) return fail(result, "return mapping ended in an invalid state");
 
-    // Converged: assemble the end-of-step state.
+    return assemble(s0, sigma_tr, dl, ev, s1, tangent, result);
+  }
+
+ private:
+  struct Eval {
+    T s, ds, q, dq, a, e, m;
+    Vec xi, dxi;
+    T seq, phi, dphi;
+    Mat Minv;  // inverse of Mat(dl): closed-form cofactors for 3x3, LU for 6x6
+    bool valid = false;
+  };
+
+  // End-of-step state (and tangent) from the converged evaluation.
+  UpdateResult assemble(const State& s0, const Vec& sigma_tr, const T& dl, const Eval& ev, State& s1, Mat* tangent,
+                        UpdateResult result) const {
     const Vec d_eps_p = ev.q * (P_ * ev.xi);
     s1.stress = sigma_tr - C_ * d_eps_p;
     if (m_.kinematic != KinematicLaw::none) s1.back_stress = s1.stress - ev.xi;  // else X1 = X0 exactly
@@ -195,14 +213,33 @@ class ReturnMapping {
     return result;
   }
 
- private:
-  struct Eval {
-    T s, ds, q, dq, a, e, m;
-    Vec xi, dxi;
-    T seq, phi, dphi;
-    Mat Minv;  // inverse of Mat(dl): closed-form cofactors for 3x3, LU for 6x6
-    bool valid = false;
-  };
+  // Jets: converge in double precision on the value law, then one Newton step in Jets from
+  // the converged multiplier. At a root the Newton map's derivative is the implicit
+  // derivative -phi_p / phi', whatever the starting derivative: exact, at two Jet evaluations
+  // instead of one per iteration.
+  UpdateResult integrate_jet(const State& s0, const Vec& d_eps, const Vec& sigma_tr, State& s1, Mat* tangent,
+                             UpdateResult result) const {
+    MaterialState<double, Dim> v0 = values_of(s0), v1;
+    Eigen::Matrix<double, Dim, 1> dv;
+    for (int i = 0; i < Dim; ++i) dv(i) = value_of(d_eps(i));
+    const UpdateResult rv = values_->integrate(v0, dv, v1, nullptr);
+    if (!rv.ok()) return fail(result, rv.reason);
+    result.iterations = rv.iterations;
+    if (!rv.plastic) {  // the value law found the step elastic after all
+      result.plastic = false;
+      if (tangent) *tangent = C_;
+      return result;
+    }
+    Eval ev;
+    T dl = T(v1.eqps - v0.eqps);
+    evaluate(s0, sigma_tr, dl, ev);
+    if (!ev.valid) return fail(result, "invalid state at the converged plastic multiplier");
+    dl = dl - ev.phi / ev.dphi;
+    evaluate(s0, sigma_tr, dl, ev);
+    if (!ev.valid) return fail(result, "invalid state at the converged plastic multiplier");
+    return assemble(s0, sigma_tr, dl, ev, s1, tangent, result);
+  }
+
 
   static UpdateResult fail(UpdateResult r, const char* why) {
     r.status = UpdateStatus::failed;
@@ -281,6 +318,7 @@ class ReturnMapping {
   }
 
   MaterialParams<T> m_;
+  std::shared_ptr<const ReturnMapping<double, Dim>> values_;  // Jets only: the value law
   ReturnMappingOptions options_;
   Mat C_, P_, A_;
 };

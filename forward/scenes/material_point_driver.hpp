@@ -66,6 +66,7 @@ class MaterialPointDriver {
   MaterialPointDriver(const Law& law, const LoadingControl& control, DriverOptions options = {})
       : law_(law), control_(control), options_(options) {
     const Eigen::Matrix3d Q = strain_rotation(control.alpha);
+    Qd_ = Q;
     Q_ = Q.cast<T>();
     Qinv_ = Q.inverse().cast<T>();
     sigma_ref_ = law.params().plastic ? value_of(law.yield_stress(T(0.0))) : 1e-6 * value_of(law.params().E);
@@ -164,54 +165,99 @@ class MaterialPointDriver {
     YieldEvent<T> event;
   };
 
-  // One Newton solve of an increment of size d from the committed state (no commit).
-  DriverStatus solve(double d, Trial& trial) {
+  // Mixed-control Newton for an increment of size d from s0 with the law `law` (scalar S):
+  // returns the converged loading-frame strain increment and end state.
+  template <typename S>
+  DriverStatus newton(const material::ReturnMapping<S, 3>& law, const material::MaterialState<S, 3>& s0, double d,
+                      Eigen::Matrix<S, 3, 1>& de, material::MaterialState<S, 3>& s1, bool* plastic, double* suggested) {
+    using V = Eigen::Matrix<S, 3, 1>;
+    using M = Eigen::Matrix<S, 3, 3>;
     const int c = control_.control;
-    Vec3 de = Vec3::Zero();
+    const M Q = Qd_.template cast<S>();
+    de = V::Zero();
     for (int i = 0; i < 3; ++i) {
-      if (control_.role[i] == ComponentRole::stress_ratio) de(i) = T(state_.ratio[i] * d);
+      if (control_.role[i] == ComponentRole::stress_ratio) de(i) = S(state_.ratio[i] * d);
     }
-    de(c) = T(d);
-    constexpr bool exact_derivatives = !std::is_same_v<T, double>;
-    bool converged = false, polished = false;
-    Mat3 Dm;
+    de(c) = S(d);
+    M Dm;
     for (int it = 0; it < options_.max_newton_iterations; ++it) {
       ++counters_.newton_iterations;
-      const auto r = law_.integrate(state_.material, Vec3(Q_ * de), trial.material, &Dm);
+      const auto r = law.integrate(s0, V(Q * de), s1, &Dm);
       if (!r.ok()) {
-        trial.suggested_scale = r.suggested_scale;
+        *suggested = r.suggested_scale;
         return {false, std::string("constitutive update failed: ") + r.reason};
       }
-      trial.plastic = r.plastic;
-      const Vec3 sL = Q_.transpose() * trial.material.stress;
-      Vec3 res = Vec3::Zero();
-      bool any = false;
-      for (int i = 0; i < 3; ++i) {
-        if (control_.role[i] != ComponentRole::stress_ratio) continue;
-        res(i) = sL(i) - control_.ratio[i] * sL(c);
-        any = true;
-      }
-      if (!any) { converged = true; break; }
+      *plastic = r.plastic;
+      V res;
+      M J;
+      if (!residual(Q, s1.stress, Dm, &res, &J)) return {};  // no stress-controlled component
+      const V sL = Q.transpose() * s1.stress;
       const double scale = std::max(sigma_ref_, value_of(sL.cwiseAbs().maxCoeff()));
-      const bool small = value_of(res.cwiseAbs().maxCoeff()) <= options_.tolerance * scale;
-      if (small && (!exact_derivatives || polished)) { converged = true; break; }
-      if (small) polished = true;  // one more Newton update carries exact Jet derivatives
-      const Mat3 DL = Q_.transpose() * Dm * Q_;
-      Mat3 J = Mat3::Identity();
-      for (int i = 0; i < 3; ++i) {
-        if (control_.role[i] != ComponentRole::stress_ratio) continue;
-        for (int j = 0; j < 3; ++j) {
-          J(i, j) = control_.role[j] == ComponentRole::stress_ratio ? T(DL(i, j) - control_.ratio[i] * DL(c, j)) : T(i == j ? 1.0 : 0.0);
-        }
-      }
-      const Vec3 delta = J.partialPivLu().solve(Vec3(-res));
+      if (value_of(res.cwiseAbs().maxCoeff()) <= options_.tolerance * scale) return {};
+      const V delta = J.partialPivLu().solve(V(-res));
       for (int i = 0; i < 3; ++i) {
         if (!is_finite(delta(i))) return {false, "singular mixed-control Jacobian"};
         if (control_.role[i] == ComponentRole::stress_ratio) de(i) += delta(i);
       }
     }
-    if (!converged) return {false, "mixed-control Newton did not converge"};
-    trial.d_strain = de;
+    *suggested = 0.5;
+    return {false, "mixed-control Newton did not converge"};
+  }
+
+  // Residual of the stress conditions and its Jacobian w.r.t. the free strain components
+  // (identity rows for the others); false if no component is stress-controlled.
+  template <typename S>
+  bool residual(const Eigen::Matrix<S, 3, 3>& Q, const Eigen::Matrix<S, 3, 1>& stress_m, const Eigen::Matrix<S, 3, 3>& Dm,
+                Eigen::Matrix<S, 3, 1>* res, Eigen::Matrix<S, 3, 3>* J) const {
+    const int c = control_.control;
+    const Eigen::Matrix<S, 3, 1> sL = Q.transpose() * stress_m;
+    const Eigen::Matrix<S, 3, 3> DL = Q.transpose() * Dm * Q;
+    *res = Eigen::Matrix<S, 3, 1>::Zero();
+    *J = Eigen::Matrix<S, 3, 3>::Identity();
+    bool any = false;
+    for (int i = 0; i < 3; ++i) {
+      if (control_.role[i] != ComponentRole::stress_ratio) continue;
+      any = true;
+      (*res)(i) = sL(i) - control_.ratio[i] * sL(c);
+      for (int j = 0; j < 3; ++j) {
+        (*J)(i, j) = control_.role[j] == ComponentRole::stress_ratio ? S(DL(i, j) - control_.ratio[i] * DL(c, j)) : S(i == j ? 1.0 : 0.0);
+      }
+    }
+    return any;
+  }
+
+  // One solve of an increment of size d from the committed state (no commit). With Jets the
+  // Newton loop runs in double precision on the value law, then one Newton correction in
+  // Jets from the converged point gives the exact derivatives (as in the return mapping).
+  DriverStatus solve(double d, Trial& trial) {
+    if constexpr (std::is_same_v<T, double>) {
+      DriverStatus st = newton(law_, state_.material, d, trial.d_strain, trial.material, &trial.plastic, &trial.suggested_scale);
+      if (!st.ok) return st;
+    } else {
+      Eigen::Vector3d dv;
+      material::MaterialState<double, 3> v1;
+      bool plastic = false;
+      DriverStatus st = newton(law_.value_law(), values_of(state_.material), d, dv, v1, &plastic, &trial.suggested_scale);
+      if (!st.ok) return st;
+      Vec3 de = dv.cast<T>();
+      Mat3 Dm;
+      for (int pass = 0; pass < 2; ++pass) {
+        const auto r = law_.integrate(state_.material, Vec3(Q_ * de), trial.material, &Dm);
+        if (!r.ok()) {
+          trial.suggested_scale = r.suggested_scale;
+          return {false, std::string("constitutive update failed: ") + r.reason};
+        }
+        trial.plastic = r.plastic;
+        Vec3 res;
+        Mat3 J;
+        if (pass == 1 || !residual(Q_, trial.material.stress, Dm, &res, &J)) break;
+        const Vec3 delta = J.partialPivLu().solve(Vec3(-res));
+        for (int i = 0; i < 3; ++i) {
+          if (control_.role[i] == ComponentRole::stress_ratio) de(i) += delta(i);
+        }
+      }
+      trial.d_strain = de;
+    }
     if (trial.plastic && !state_.plastic) detect_onset(d, trial);
     return {};
   }
@@ -273,6 +319,7 @@ class MaterialPointDriver {
   LoadingControl control_;
   DriverOptions options_;
   Mat3 Q_, Qinv_;
+  Eigen::Matrix3d Qd_;  // the rotation is data: double copy for the value iterations
   double sigma_ref_ = 1.0;
   PointState<T> state_;
   std::vector<YieldEvent<T>> events_;

@@ -1,0 +1,132 @@
+#include "inverse/nlopt_fit.hpp"
+
+#include <nlopt.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+namespace spifit::inverse {
+
+namespace {
+
+struct AlgorithmName {
+  const char* name;
+  nlopt::algorithm algorithm;
+  bool global;
+};
+
+const AlgorithmName kAlgorithms[] = {
+    {"bobyqa", nlopt::LN_BOBYQA, false},   {"cobyla", nlopt::LN_COBYLA, false},   {"nelder_mead", nlopt::LN_NELDERMEAD, false},
+    {"sbplx", nlopt::LN_SBPLX, false},     {"direct_l", nlopt::GN_DIRECT_L, true}, {"crs2", nlopt::GN_CRS2_LM, true},
+    {"isres", nlopt::GN_ISRES, true},      {"mlsl", nlopt::G_MLSL_LDS, true},
+};
+
+struct Objective {
+  const FitProblem* problem;
+  long evaluations = 0, failures = 0;
+  double best = std::numeric_limits<double>::infinity();
+  std::vector<double> best_x;
+  std::vector<double> history;  // best cost after each evaluation that improved it
+};
+
+double objective(unsigned n, const double* x, double* grad, void* data) {
+  auto* o = static_cast<Objective*>(data);
+  if (grad) for (unsigned i = 0; i < n; ++i) grad[i] = 0.0;  // derivative-free algorithms only
+  ++o->evaluations;
+  Eigen::VectorXd r;
+  const std::vector<double> xv(x, x + n);
+  double cost = kFailedRunCost;
+  if (evaluate_residuals(*o->problem, xv, &r) && r.allFinite()) cost = 0.5 * r.squaredNorm();
+  else ++o->failures;
+  if (cost < o->best) {
+    o->best = cost;
+    o->best_x = xv;
+    o->history.push_back(cost);
+  }
+  return cost;
+}
+
+}  // namespace
+
+const char* nlopt_algorithm_names() { return "bobyqa, cobyla, nelder_mead, sbplx, direct_l, crs2, isres, mlsl"; }
+
+bool is_nlopt_algorithm(const std::string& name) {
+  for (const auto& a : kAlgorithms) if (name == a.name) return true;
+  return false;
+}
+
+FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const ParameterSet& ps = *fp.parameters;
+  const unsigned p = static_cast<unsigned>(ps.num_free());
+  FitResult out;
+  out.algorithm = options.algorithm.empty() ? fp.settings.algorithm : options.algorithm;
+  out.seed = options.seed;
+  const AlgorithmName* alg = nullptr;
+  for (const auto& a : kAlgorithms) if (out.algorithm == a.name) alg = &a;
+  if (!alg) throw std::invalid_argument("not an NLopt algorithm: " + out.algorithm);
+
+  std::vector<double> x = ps.initial_internal();
+  for (unsigned k = 0; k < p; ++k) out.initial.push_back(ps.to_physical(static_cast<int>(k), x[k]));
+  const auto lo = ps.lower_internal(), hi = ps.upper_internal();
+  nlopt::srand(options.seed);
+  nlopt::opt opt(alg->algorithm, p);
+  opt.set_lower_bounds(lo);
+  opt.set_upper_bounds(hi);
+  std::vector<double> step(p);
+  for (unsigned k = 0; k < p; ++k) step[k] = 0.1 * (hi[k] - lo[k]);
+  opt.set_initial_step(step);
+  opt.set_xtol_rel(fp.settings.parameter_tolerance);
+  opt.set_ftol_rel(fp.settings.function_tolerance);
+  const int max_eval = std::max(200, fp.settings.max_iterations * 50 * static_cast<int>(p));
+  opt.set_maxeval(max_eval);
+  nlopt::opt local(nlopt::LN_BOBYQA, p);
+  if (alg->algorithm == nlopt::G_MLSL_LDS) {
+    local.set_xtol_rel(fp.settings.parameter_tolerance);
+    local.set_ftol_rel(fp.settings.function_tolerance);
+    local.set_maxeval(max_eval / 10);
+    opt.set_local_optimizer(local);
+  }
+  if (alg->algorithm == nlopt::GN_ISRES || alg->algorithm == nlopt::GN_CRS2_LM) opt.set_population(0);
+  Objective obj{&fp, 0, 0, std::numeric_limits<double>::infinity(), {}, {}};
+  opt.set_min_objective(objective, &obj);
+  Eigen::VectorXd r0;
+  out.cost_initial = evaluate_residuals(fp, x, &r0) ? 0.5 * r0.squaredNorm() : kFailedRunCost;
+  std::string message;
+  try {
+    double f = 0.0;
+    const nlopt::result res = opt.optimize(x, f);
+    switch (res) {
+      case nlopt::SUCCESS: message = "SUCCESS"; break;
+      case nlopt::STOPVAL_REACHED: message = "stop value reached"; break;
+      case nlopt::FTOL_REACHED: message = "CONVERGENCE: relative cost tolerance reached"; break;
+      case nlopt::XTOL_REACHED: message = "CONVERGENCE: relative parameter tolerance reached"; break;
+      case nlopt::MAXEVAL_REACHED: message = "NO_CONVERGENCE: evaluation budget (" + std::to_string(max_eval) + ") used"; break;
+      case nlopt::MAXTIME_REACHED: message = "NO_CONVERGENCE: time limit"; break;
+      default: message = "NLopt result " + std::to_string(int(res)); break;
+    }
+  } catch (const nlopt::roundoff_limited&) {
+    message = "CONVERGENCE: NLopt stopped on round-off (best point kept)";
+  } catch (const std::exception& e) {
+    message = std::string("NLopt stopped: ") + e.what() + " (best point kept)";
+  }
+  if (!obj.best_x.empty()) x = obj.best_x;  // the best point seen, whatever NLopt returned
+  out.usable = !obj.best_x.empty() && obj.best < kFailedRunCost;
+  out.termination = message + "; " + std::to_string(obj.failures) + " failed forward runs";
+  out.cost_final = obj.best;
+  out.iterations = static_cast<int>(obj.evaluations);
+  out.cost_history = obj.history;
+  out.forward_runs = obj.evaluations * static_cast<long>(fp.experiments.size());
+  analyse_solution(fp, x, options.threads, &out);
+  out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
+  const std::string alg = options.algorithm.empty() ? problem.settings.algorithm : options.algorithm;
+  if (is_nlopt_algorithm(alg)) return fit_with_nlopt(problem, options);
+  return fit_with_ceres(problem, options);
+}
+
+}  // namespace spifit::inverse

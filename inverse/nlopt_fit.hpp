@@ -1,0 +1,18 @@
+#pragma once
+// Derivative-free and global identification with NLopt (SPEC §6): local BOBYQA, COBYLA,
+// Nelder-Mead, Sbplx; global DIRECT-L, CRS2, ISRES, MLSL (with BOBYQA as local optimiser).
+// The objective is the same cost as Ceres's (1/2 sum of squared conditioned residuals); a
+// failed forward run costs kFailedRunCost (finite, never NaN). The best point seen is kept
+// and returned even when NLopt stops on round-off.
+#include "inverse/ceres_fit.hpp"
+
+namespace spifit::inverse {
+
+constexpr double kFailedRunCost = 1e30;
+
+const char* nlopt_algorithm_names();
+bool is_nlopt_algorithm(const std::string& name);
+
+FitResult fit_with_nlopt(const FitProblem& problem, const FitRunOptions& options);
+
+}  // namespace spifit::inverse
