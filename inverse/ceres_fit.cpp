@@ -1,5 +1,7 @@
 #include "inverse/ceres_fit.hpp"
 
+#include "forward/io/input_error.hpp"
+
 #include <ceres/ceres.h>
 
 #include <atomic>
@@ -135,7 +137,24 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
     const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
     std::vector<std::string> names;
     for (int idx : ps.free_indices()) names.push_back(ps.specs()[idx].name);
-    out.uncertainty = analyse_uncertainty(J, r, out.values, names);
+    bool known_noise = true;
+    for (const auto& e : fp.experiments) known_noise = known_noise && e->noise_given();
+    out.uncertainty = analyse_uncertainty(J, r, out.values, names, known_noise ? 1.0 : std::numeric_limits<double>::quiet_NaN());
+    auto& u = out.uncertainty;
+    for (int k = 0; k < p; ++k) {
+      const auto& spec = ps.specs()[ps.free_indices()[k]];
+      // Log-scaled parameters: the interval is symmetric in ln(value), so it stays positive.
+      if (spec.log_scale && std::isfinite(u.std_error[k]) && out.values[k] > 0) {
+        const double f = std::exp(u.t_quantile * u.std_error[k] / out.values[k]);
+        u.ci95_lower[k] = out.values[k] / f;
+        u.ci95_upper[k] = out.values[k] * f;
+      }
+      const double span = spec.upper - spec.lower;
+      if (out.values[k] <= spec.lower + 1e-6 * span || out.values[k] >= spec.upper - 1e-6 * span) {
+        u.warnings.push_back(spec.name + " ended at its bound (" + io::format_number(out.values[k]) +
+                             "): the data push it further, or it is poorly determined; its interval is not meaningful.");
+      }
+    }
     out.experiment_costs.clear();
     int offset = 0;
     for (const auto& e : fp.experiments) {

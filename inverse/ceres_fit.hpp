@@ -29,6 +29,15 @@ struct FitResult {
   std::vector<ExperimentCost> experiment_costs;
   Uncertainty uncertainty;
   material::MaterialCard card;  // the fitted card
+  // Optional: each experiment fitted alone from the global solution (conflicts.hpp).
+  struct Alone {
+    std::string experiment;
+    bool usable = false;
+    std::vector<double> values, ci95_lower, ci95_upper;
+    std::vector<bool> identifiable;
+  };
+  std::vector<Alone> per_experiment;
+  std::vector<std::string> conflicts;  // plain words: experiments that disagree on a parameter
 };
 
 struct FitRunOptions {

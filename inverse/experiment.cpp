@@ -20,6 +20,7 @@ class CurveExperiment final : public Experiment {
     weight_ = s_.weight;
     if (s_.noise > 0) {
       scale_ = s_.noise;
+      noise_given_ = true;
     } else {
       const auto [lo, hi] = std::minmax_element(s_.ys.begin(), s_.ys.end());
       scale_ = *hi - *lo > 0 ? *hi - *lo : 1.0;
@@ -91,6 +92,7 @@ class ScalarExperiment final : public Experiment {
     kind_ = "scalar";
     weight_ = s_.weight;
     scale_ = s_.noise > 0 ? s_.noise : (s_.value != 0.0 ? std::abs(s_.value) : 1.0);
+    noise_given_ = s_.noise > 0;
   }
   int num_residuals() const override { return 1; }
   bool residuals(const material::MaterialParams<double>& m, double* r) const override { return eval(m, r, nullptr); }

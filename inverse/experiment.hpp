@@ -31,6 +31,7 @@ class Experiment {
   const std::string& kind() const { return kind_; }
   double weight() const { return weight_; }
   double scale() const { return scale_; }  // the conditioning divisor (noise or range)
+  bool noise_given() const { return noise_given_; }  // scale is a stated measurement noise
   virtual int num_residuals() const = 0;
   // Residuals = sqrt(weights) * (simulated - measured) / scale. False: the forward run failed.
   virtual bool residuals(const material::MaterialParams<double>& m, double* r) const = 0;
@@ -42,6 +43,7 @@ class Experiment {
  protected:
   std::string name_, kind_;
   double weight_ = 1.0, scale_ = 1.0;
+  bool noise_given_ = false;
 };
 
 // A curve measured on a material-point scene: y(x) with x an abscissa of the simulated curve

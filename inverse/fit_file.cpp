@@ -74,7 +74,8 @@ FitProblem read_fit_file(const std::string& path) {
   const auto ft = root.table("fit");
   if (!ft) root.fail("fit", "required table [fit] is missing");
   ft->allow_only({"name", "description", "card", "normalise_hill", "algorithm", "max_iterations", "function_tolerance",
-                  "parameter_tolerance", "gradient_tolerance"});
+                  "parameter_tolerance", "gradient_tolerance", "per_experiment"});
+  fp.per_experiment = ft->boolean("per_experiment", false);
   fp.name = ft->string("name", fs::path(path).stem().string());
   fp.description = ft->string("description", "");
   const std::string card_path = resolve(path, ft->string("card"));

@@ -21,8 +21,9 @@ struct FitSettings {
 struct FitProblem {
   std::string name, description, file;
   std::unique_ptr<ParameterSet> parameters;
-  std::vector<std::unique_ptr<Experiment>> experiments;
+  std::vector<std::shared_ptr<Experiment>> experiments;
   FitSettings settings;
+  bool per_experiment = false;  // also fit each experiment alone and compare (conflicts)
 };
 
 // Throws io::InputError naming file, key and value (unknown parameter, bad bounds, missing

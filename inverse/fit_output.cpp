@@ -61,6 +61,18 @@ json fit_result_json(const FitProblem& fp, const FitResult& r) {
                       {"sigma2", number_or_null(u.sigma2)}, {"t_quantile_975", number_or_null(u.t_quantile)},
                       {"singular_values_scaled", u.singular_values}, {"condition_number", number_or_null(u.condition_number)}};
   j["warnings"] = u.warnings;
+  j["conflicts"] = r.conflicts;
+  json pe = json::array();
+  for (const auto& a : r.per_experiment) {
+    json params = json::object();
+    for (int k = 0; k < ps.num_free() && k < static_cast<int>(a.values.size()); ++k) {
+      params[ps.specs()[ps.free_indices()[k]].name] = {{"value", a.values[k]},
+                                                       {"ci95", {number_or_null(a.ci95_lower[k]), number_or_null(a.ci95_upper[k])}},
+                                                       {"identifiable", bool(a.identifiable[k])}};
+    }
+    pe.push_back({{"experiment", a.experiment}, {"usable", a.usable}, {"parameters", params}});
+  }
+  j["per_experiment"] = pe;
   json ex = json::array();
   for (std::size_t i = 0; i < r.experiment_costs.size(); ++i) {
     const auto& e = r.experiment_costs[i];
@@ -121,6 +133,7 @@ std::string fit_table(const FitProblem& fp, const FitResult& r) {
     s += line;
   }
   for (const auto& w : u.warnings) s += "WARNING: " + w + "\n";
+  for (const auto& c : r.conflicts) s += "CONFLICT: " + c + "\n";
   return s;
 }
 

@@ -1,5 +1,7 @@
 #include "inverse/nlopt_fit.hpp"
 
+#include "inverse/conflicts.hpp"
+
 #include <nlopt.hpp>
 
 #include <chrono>
@@ -125,8 +127,13 @@ FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
 
 FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
   const std::string alg = options.algorithm.empty() ? problem.settings.algorithm : options.algorithm;
-  if (is_nlopt_algorithm(alg)) return fit_with_nlopt(problem, options);
-  return fit_with_ceres(problem, options);
+  FitResult r = is_nlopt_algorithm(alg) ? fit_with_nlopt(problem, options) : fit_with_ceres(problem, options);
+  if (problem.per_experiment && r.usable) {
+    const auto t0 = std::chrono::steady_clock::now();
+    analyse_conflicts(problem, options, &r);
+    r.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  return r;
 }
 
 }  // namespace spifit::inverse

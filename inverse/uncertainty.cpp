@@ -58,14 +58,15 @@ double student_t_quantile(double p, int dof) {
 }
 
 Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, const std::vector<double>& values,
-                                const std::vector<std::string>& names) {
+                                const std::vector<std::string>& names, double sigma2_without_dof) {
   Uncertainty u;
   u.m = static_cast<int>(J.rows());
   u.p = static_cast<int>(J.cols());
   u.dof = u.m - u.p;
   u.sse = r.squaredNorm();
-  u.sigma2 = u.dof > 0 ? u.sse / u.dof : std::numeric_limits<double>::quiet_NaN();
-  u.t_quantile = student_t_quantile(0.975, u.dof);
+  u.sigma2 = u.dof > 0 ? u.sse / u.dof : sigma2_without_dof;
+  // Known variance (no dof): normal quantile, i.e. t with infinitely many dof.
+  u.t_quantile = u.dof > 0 ? student_t_quantile(0.975, u.dof) : (std::isfinite(u.sigma2) ? 1.959963984540054 : student_t_quantile(0.975, u.dof));
 
   // Scale columns by |value| so that singular values compare relative sensitivities.
   Eigen::VectorXd s(u.p);
@@ -98,7 +99,7 @@ Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd&
   u.covariance = sigma2 * s.asDiagonal() * cov_s * s.asDiagonal();
   u.correlation = Eigen::MatrixXd::Identity(u.p, u.p);
   for (int k = 0; k < u.p; ++k) {
-    const double se = u.identifiable[k] && u.dof > 0 ? std::sqrt(std::max(u.covariance(k, k), 0.0)) : std::numeric_limits<double>::infinity();
+    const double se = u.identifiable[k] && std::isfinite(u.sigma2) ? std::sqrt(std::max(u.covariance(k, k), 0.0)) : std::numeric_limits<double>::infinity();
     u.std_error.push_back(se);
     u.ci95_lower.push_back(values[k] - u.t_quantile * se);
     u.ci95_upper.push_back(values[k] + u.t_quantile * se);
@@ -118,7 +119,9 @@ Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd&
     }
   }
   const bool all_identifiable = std::all_of(u.identifiable.begin(), u.identifiable.end(), [](bool b) { return b; });
-  if (u.dof <= 0) {
+  if (u.dof <= 0 && std::isfinite(u.sigma2)) {
+    u.warnings.push_back("no more data points than free parameters: intervals assume the stated measurement noise.");
+  } else if (u.dof <= 0) {
     u.warnings.push_back("no more data points than free parameters: no residual degrees of freedom, no uncertainty estimate.");
   } else if (all_identifiable && std::isfinite(u.condition_number) && u.condition_number > 1e8) {
     std::ostringstream os;

@@ -4,6 +4,7 @@
 // the parameter magnitudes, so that a rank-deficient Jacobian is reported, not crashed on.
 #include <Eigen/Core>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,10 @@ struct Uncertainty {
 };
 
 // J: m x p Jacobian of the conditioned residuals w.r.t. the physical parameter values.
+// sigma2_without_dof: variance used when m <= p (e.g. 1 when the residuals are conditioned by
+// a stated measurement noise); NaN (default) gives no uncertainty then.
 Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd& residuals, const std::vector<double>& values,
-                                const std::vector<std::string>& names);
+                                const std::vector<std::string>& names, double sigma2_without_dof = std::numeric_limits<double>::quiet_NaN());
 
 // Quantile of Student's t distribution (two-sided intervals use p = 0.975).
 double student_t_quantile(double p, int dof);

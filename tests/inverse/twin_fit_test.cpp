@@ -134,7 +134,7 @@ TEST(TwinFit, RValuesAloneCannotIdentifySwift) {
 // derivatives), as a forward run does when a parameter is pushed where the scene cannot run.
 class FailingOnce final : public inverse::Experiment {
  public:
-  explicit FailingOnce(std::unique_ptr<inverse::Experiment> inner) : inner_(std::move(inner)) { name_ = inner_->name(); kind_ = inner_->kind(); }
+  explicit FailingOnce(std::shared_ptr<inverse::Experiment> inner) : inner_(std::move(inner)) { name_ = inner_->name(); kind_ = inner_->kind(); }
   int num_residuals() const override { return inner_->num_residuals(); }
   bool residuals(const material::MaterialParams<double>& m, double* r) const override {
     if (++value_calls_ == 2) { ++failures_; return false; }  // call 1 is the initial cost
@@ -145,7 +145,7 @@ class FailingOnce final : public inverse::Experiment {
   int failures() const { return failures_; }
 
  private:
-  std::unique_ptr<inverse::Experiment> inner_;
+  std::shared_ptr<inverse::Experiment> inner_;
   mutable int value_calls_ = 0, failures_ = 0;
 };
 
@@ -157,7 +157,7 @@ TEST(TwinFit, SurvivesAFailingForwardRun) {
                           "[parameters.\"swift.n\"]\ninitial = 0.3\nlower = 0.02\nupper = 0.7\n"
                           "[[experiment]]\nname = \"t\"\nscene = \"" + src("experiments/aa3003o/scenes/tensile_00.toml") + "\"\ndata = \"t00.csv\"\n";
   auto fp = inverse::read_fit_file(d.write("fit.toml", fit));
-  auto wrapper = std::make_unique<FailingOnce>(std::move(fp.experiments[0]));
+  auto wrapper = std::make_shared<FailingOnce>(fp.experiments[0]);
   const FailingOnce* probe = wrapper.get();
   fp.experiments[0] = std::move(wrapper);
   const auto r = inverse::fit_with_ceres(fp);
