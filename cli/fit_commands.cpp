@@ -6,7 +6,10 @@
 #include "inverse/ceres_fit.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/fit_output.hpp"
+#include "inverse/sweep.hpp"
 #include "inverse/synthetic.hpp"
+
+#include <cstdio>
 
 #include <filesystem>
 #include <fstream>
@@ -79,6 +82,40 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
     }
     std::filesystem::rename(tmp, o->out);
     if (!g.quiet) std::cout << "wrote " << o->out << " (synthetic, card " << scene.card.name << ", noise " << o->syn.noise << ", seed " << o->syn.seed << ")\n";
+    exit_code = 0;
+  });
+}
+
+}  // namespace spifit::cli
+
+namespace spifit::cli {
+
+void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  struct Opts { std::string file, out; bool force = false; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("sweep", "Run a scene over a grid of inputs: DIR/sweep.csv, DIR/sensitivities.csv");
+  cmd->add_option("SWEEP", o->file, "sweep file (TOML)")->required();
+  cmd->add_option("--out", o->out, "output directory")->required();
+  cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
+  cmd->callback([o, &g, &exit_code] {
+    const auto spec = inverse::read_sweep_file(o->file);
+    const auto dir = io::OutputDirectory::prepare(o->out, o->force, {o->file, spec.scene.file, spec.scene.card.file});
+    dir.write_file("summary.json", nlohmann::json{{"status", "running"}, {"kind", "sweep"}}.dump(2) + "\n");
+    const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    const auto r = inverse::run_sweep(spec, threads);
+    dir.write_file("sweep.csv", inverse::sweep_csv(spec, r));
+    if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));
+    int failed = 0;
+    for (const auto& p : r.points) failed += p.ok ? 0 : 1;
+    dir.write_file("summary.json", nlohmann::json{{"status", "ok"}, {"kind", "sweep"}, {"sweep", spec.name}, {"points", r.points.size()},
+                                                  {"failed_points", failed}, {"wall_seconds", r.wall_seconds}}
+                                       .dump(2) + "\n");
+    if (!g.quiet) {
+      std::printf("sweep %s: %zu points (%d failed) in %.3f s -> %s/sweep.csv\n", spec.name.c_str(), r.points.size(), failed, r.wall_seconds,
+                  o->out.c_str());
+      for (const auto& s : r.sensitivities)
+        std::printf("  d ln(%s) / d ln(%s) = %.4g  at %s = %.6g\n", s.metric.c_str(), s.input.c_str(), s.value, s.input.c_str(), s.base_input);
+    }
     exit_code = 0;
   });
 }

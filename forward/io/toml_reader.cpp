@@ -165,6 +165,18 @@ std::vector<double> TomlTable::number_list(const std::string& key) const {
   }
   return out;
 }
+std::vector<std::string> TomlTable::string_list(const std::string& key) const {
+  if (!has(key)) fail(key, "required key is missing");
+  const toml::value& v = impl_->table->at(key);
+  if (!v.is_array()) fail(key, std::string("expected an array of strings, got ") + type_name(v));
+  std::vector<std::string> out;
+  for (const auto& e : v.as_array()) {
+    if (!e.is_string()) fail(key, std::string("array entries must be strings, found ") + type_name(e));
+    out.push_back(e.as_string().str);
+  }
+  return out;
+}
+
 std::optional<TomlTable> TomlTable::table(const std::string& key) const {
   if (!has(key)) return std::nullopt;
   const toml::value& v = impl_->table->at(key);

@@ -28,6 +28,7 @@ class TomlTable {
   std::string string(const std::string& key, const std::string& fallback) const;
   bool boolean(const std::string& key, bool fallback) const;
   std::vector<double> number_list(const std::string& key) const;
+  std::vector<std::string> string_list(const std::string& key) const;
   std::optional<TomlTable> table(const std::string& key) const;
   // [[key]] arrays of tables; empty when absent. Entry i is named "key[i]" in errors.
   std::vector<TomlTable> table_array(const std::string& key) const;

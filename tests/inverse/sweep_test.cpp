@@ -1,0 +1,58 @@
+// Sweeps: grid order, closed-form sensitivity, failing points, thread independence.
+#include "forward/io/input_error.hpp"
+#include "inverse/sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace spifit;
+
+namespace {
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+}  // namespace
+
+TEST(Sweep, BundledHillNSweep) {
+  const auto spec = inverse::read_sweep_file(src("experiments/aa3003o/sweep_hill_n.toml"));
+  const auto r = inverse::run_sweep(spec, 2);
+  ASSERT_EQ(r.points.size(), 27u);  // 9 x 3, last input fastest
+  EXPECT_EQ(r.points[0].inputs, (std::vector<double>{2.5, 0.18}));
+  EXPECT_EQ(r.points[1].inputs, (std::vector<double>{2.5, 0.21}));
+  for (const auto& p : r.points) {
+    ASSERT_TRUE(p.ok) << p.message;
+    // r45 = (2N - F - G) / (2 (F + G)) whatever the hardening (closed form).
+    EXPECT_NEAR(p.metrics[0], (2 * p.inputs[0] - 1.224 - 1.193) / (2 * (1.224 + 1.193)), 1e-9);
+  }
+  // d ln r45 / d ln N = N / ((F + G) r45) at N = 4.06.
+  const double r45 = (2 * 4.06 - 2.417) / (2 * 2.417);
+  bool found = false;
+  for (const auto& s : r.sensitivities) {
+    if (s.input == "hill.N" && s.metric == "r_value") {
+      EXPECT_NEAR(s.value, 4.06 / (2.417 * r45), 2e-4);
+      found = true;
+    }
+    if (s.input == "swift.n" && s.metric == "r_value") EXPECT_NEAR(s.value, 0.0, 1e-9);  // r does not depend on hardening
+  }
+  EXPECT_TRUE(found);
+  // Same results with one thread.
+  const auto r1 = inverse::run_sweep(spec, 1);
+  for (std::size_t i = 0; i < r.points.size(); ++i) EXPECT_EQ(r.points[i].metrics, r1.points[i].metrics);
+}
+
+// A grid point with an invalid card (negative N) fails alone; the others run.
+TEST(Sweep, FailingPointIsReportedNotFatal) {
+  const auto dir = std::filesystem::temp_directory_path() / ("spifit_sweep_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto f = dir / "s.toml";
+  std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_45.toml")
+                   << "\"\nmetrics = [\"r_value\"]\nsensitivities = false\n[inputs.\"hill.N\"]\nvalues = [-1.0, 3.0]\n";
+  const auto r = inverse::run_sweep(inverse::read_sweep_file(f.string()), 2);
+  ASSERT_EQ(r.points.size(), 2u);
+  EXPECT_FALSE(r.points[0].ok);
+  EXPECT_NE(r.points[0].message.find("hill.N"), std::string::npos);
+  EXPECT_TRUE(r.points[1].ok);
+  std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_45.toml") << "\"\nmetrics = [\"r_valu\"]\n[inputs.\"hill.N\"]\nvalues = [3.0]\n";
+  EXPECT_THROW(inverse::read_sweep_file(f.string()), io::InputError);
+  std::filesystem::remove_all(dir);
+}
