@@ -1,6 +1,7 @@
 #include "inverse/ceres_fit.hpp"
 
 #include "forward/io/input_error.hpp"
+#include "inverse/numeric_cost.hpp"
 
 #include <ceres/ceres.h>
 
@@ -23,6 +24,16 @@ struct ExperimentFunctor {
     return experiment->residuals(m, r);
   }
 };
+
+// Exact derivatives through Jets where the experiment supports them, central differences
+// (parallel, inside the bounds) for black boxes.
+ceres::CostFunction* make_cost(const ParameterSet& ps, const Experiment& e, std::atomic<long>* runs) {
+  if (!e.supports_jets()) return new NumericDiffExperimentCost(&ps, &e, runs);
+  auto* cf = new ceres::DynamicAutoDiffCostFunction<ExperimentFunctor, kJetSize>(new ExperimentFunctor{&ps, &e, runs});
+  cf->AddParameterBlock(ps.num_free());
+  cf->SetNumResiduals(e.num_residuals());
+  return cf;
+}
 
 class CostHistory final : public ceres::IterationCallback {
  public:
@@ -64,13 +75,7 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
   ceres::Problem::Options popts;
   popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(popts);
-  for (const auto& e : fp.experiments) {
-    auto* cf = new ceres::DynamicAutoDiffCostFunction<ExperimentFunctor, kJetSize>(
-        new ExperimentFunctor{&ps, e.get(), &runs});
-    cf->AddParameterBlock(p);
-    cf->SetNumResiduals(e->num_residuals());
-    problem.AddResidualBlock(cf, nullptr, x.data());
-  }
+  for (const auto& e : fp.experiments) problem.AddResidualBlock(make_cost(ps, *e, &runs), nullptr, x.data());
   const auto lo = ps.lower_internal(), hi = ps.upper_internal();
   for (int k = 0; k < p; ++k) {
     problem.SetParameterLowerBound(x.data(), k, lo[k]);
@@ -117,12 +122,7 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
   ceres::Problem::Options popts;
   popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem problem(popts);
-  for (const auto& e : fp.experiments) {
-    auto* cf = new ceres::DynamicAutoDiffCostFunction<ExperimentFunctor, kJetSize>(new ExperimentFunctor{&ps, e.get(), &runs});
-    cf->AddParameterBlock(p);
-    cf->SetNumResiduals(e->num_residuals());
-    problem.AddResidualBlock(cf, nullptr, x.data());
-  }
+  for (const auto& e : fp.experiments) problem.AddResidualBlock(make_cost(ps, *e, &runs), nullptr, x.data());
   ceres::Problem::EvaluateOptions eo;
   eo.num_threads = std::max(1, threads);
   double cost = 0.0;
