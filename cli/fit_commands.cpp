@@ -20,14 +20,15 @@
 namespace spifit::cli {
 
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
-  struct Opts { std::string file, out, algorithm; bool force = false; unsigned seed = 42; };
+  struct Opts { std::string file, out, algorithm; bool force = false; unsigned seed = 42; int multistart = 0; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("fit", "Identify material parameters: fit a card to the experiments of a fit file (Ceres)");
   cmd->add_option("FIT", o->file, "fit file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory (fit.json, card.toml, experiments/*.csv)")->required();
   cmd->add_option("--algorithm", o->algorithm, std::string("override the fit file: ") + inverse::fit_algorithm_names());
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
-  cmd->add_option("--seed", o->seed, "seed of NLopt's stochastic algorithms (default 42)");
+  cmd->add_option("--seed", o->seed, "seed of NLopt's stochastic algorithms and of multi-start draws (default 42)");
+  cmd->add_option("--multistart", o->multistart, "number of starts (overrides [fit] multistart)")->check(CLI::Range(1, 10000));
   cmd->callback([o, &g, &exit_code] {
     if (!o->algorithm.empty() && !inverse::is_fit_algorithm(o->algorithm)) {
       throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
@@ -37,7 +38,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     nlohmann::json running{{"status", "running"}, {"fit_file", o->file}};
     dir.write_file("summary.json", running.dump(2) + "\n");
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const auto result = inverse::run_fit(problem, {o->algorithm, threads, o->seed});
+    const auto result = inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart});
     inverse::write_fit_outputs(problem, result, dir);
     nlohmann::json summary{{"status", result.usable ? "ok" : "failed"},
                            {"kind", "fit"},

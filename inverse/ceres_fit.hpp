@@ -38,12 +38,24 @@ struct FitResult {
   };
   std::vector<Alone> per_experiment;
   std::vector<std::string> conflicts;  // plain words: experiments that disagree on a parameter
+  struct MultiStart {
+    int starts = 1, best_start = 0, at_best = 0;
+    struct Solution {
+      bool usable = false;
+      double cost = 0.0;
+      std::vector<double> start, values;
+    };
+    std::vector<Solution> solutions;
+    std::vector<double> spread_min, spread_max;  // over the starts that reached the best cost
+  };
+  MultiStart multistart;
 };
 
 struct FitRunOptions {
   std::string algorithm;  // overrides the fit file when not empty
   int threads = 1;        // parallel evaluation of experiments (Ceres num_threads)
-  unsigned seed = 42;     // NLopt's stochastic algorithms (reported in fit.json)
+  unsigned seed = 42;     // NLopt's stochastic algorithms and multi-start draws (in fit.json)
+  int multistart = 0;     // overrides the fit file's multistart when > 0
 };
 
 // Levenberg-Marquardt or dogleg (Ceres).

@@ -74,7 +74,9 @@ FitProblem read_fit_file(const std::string& path) {
   const auto ft = root.table("fit");
   if (!ft) root.fail("fit", "required table [fit] is missing");
   ft->allow_only({"name", "description", "card", "normalise_hill", "algorithm", "max_iterations", "function_tolerance",
-                  "parameter_tolerance", "gradient_tolerance", "per_experiment"});
+                  "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart"});
+  fp.multistart = ft->integer("multistart", 1);
+  if (fp.multistart < 1 || fp.multistart > 10000) ft->fail("multistart", "must lie in [1, 10000]");
   fp.per_experiment = ft->boolean("per_experiment", false);
   fp.name = ft->string("name", fs::path(path).stem().string());
   fp.description = ft->string("description", "");

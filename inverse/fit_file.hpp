@@ -24,6 +24,7 @@ struct FitProblem {
   std::vector<std::shared_ptr<Experiment>> experiments;
   FitSettings settings;
   bool per_experiment = false;  // also fit each experiment alone and compare (conflicts)
+  int multistart = 1;           // number of starts (1: the initial point only)
 };
 
 // Throws io::InputError naming file, key and value (unknown parameter, bad bounds, missing

@@ -64,15 +64,26 @@ json fit_result_json(const FitProblem& fp, const FitResult& r) {
   j["conflicts"] = r.conflicts;
   json pe = json::array();
   for (const auto& a : r.per_experiment) {
-    json params = json::object();
+    json alone = json::object();
     for (int k = 0; k < ps.num_free() && k < static_cast<int>(a.values.size()); ++k) {
-      params[ps.specs()[ps.free_indices()[k]].name] = {{"value", a.values[k]},
+      alone[ps.specs()[ps.free_indices()[k]].name] = {{"value", a.values[k]},
                                                        {"ci95", {number_or_null(a.ci95_lower[k]), number_or_null(a.ci95_upper[k])}},
                                                        {"identifiable", bool(a.identifiable[k])}};
     }
-    pe.push_back({{"experiment", a.experiment}, {"usable", a.usable}, {"parameters", params}});
+    pe.push_back({{"experiment", a.experiment}, {"usable", a.usable}, {"parameters", alone}});
   }
   j["per_experiment"] = pe;
+  if (r.multistart.starts > 1) {
+    const auto& ms = r.multistart;
+    json sols = json::array();
+    for (const auto& s : ms.solutions) sols.push_back({{"usable", s.usable}, {"cost", number_or_null(s.cost)}, {"start", s.start}, {"values", s.values}});
+    json spread = json::object();
+    for (int k = 0; k < ps.num_free() && k < static_cast<int>(ms.spread_min.size()); ++k) {
+      spread[ps.specs()[ps.free_indices()[k]].name] = {{"min", ms.spread_min[k]}, {"max", ms.spread_max[k]}};
+    }
+    j["multistart"] = {{"starts", ms.starts}, {"best_start", ms.best_start}, {"starts_at_best_cost", ms.at_best},
+                       {"spread_at_best_cost", spread}, {"solutions", sols}};
+  }
   json ex = json::array();
   for (std::size_t i = 0; i < r.experiment_costs.size(); ++i) {
     const auto& e = r.experiment_costs[i];
@@ -134,6 +145,10 @@ std::string fit_table(const FitProblem& fp, const FitResult& r) {
   }
   for (const auto& w : u.warnings) s += "WARNING: " + w + "\n";
   for (const auto& c : r.conflicts) s += "CONFLICT: " + c + "\n";
+  if (r.multistart.starts > 1) {
+    std::snprintf(line, sizeof line, "multi-start: %d of %d starts reached the best cost (seed in fit.json)\n", r.multistart.at_best, r.multistart.starts);
+    s += line;
+  }
   return s;
 }
 

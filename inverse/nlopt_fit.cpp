@@ -1,6 +1,7 @@
 #include "inverse/nlopt_fit.hpp"
 
 #include "inverse/conflicts.hpp"
+#include "inverse/multistart.hpp"
 
 #include <nlopt.hpp>
 
@@ -127,7 +128,9 @@ FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
 
 FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
   const std::string alg = options.algorithm.empty() ? problem.settings.algorithm : options.algorithm;
-  FitResult r = is_nlopt_algorithm(alg) ? fit_with_nlopt(problem, options) : fit_with_ceres(problem, options);
+  const int starts = options.multistart > 0 ? options.multistart : problem.multistart;
+  FitResult r = starts > 1 ? run_multistart(problem, options, starts)
+                           : (is_nlopt_algorithm(alg) ? fit_with_nlopt(problem, options) : fit_with_ceres(problem, options));
   if (problem.per_experiment && r.usable) {
     const auto t0 = std::chrono::steady_clock::now();
     analyse_conflicts(problem, options, &r);
