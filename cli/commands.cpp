@@ -3,10 +3,13 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/scenes/material_point_scene.hpp"
+#include "reports/card_export.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -61,6 +64,32 @@ void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code)
   show->callback([card, &g, &exit_code] {
     const auto c = material::load_material_card(*card);
     if (!g.quiet) std::cout << material::describe_material_card(c);
+    exit_code = 0;
+  });
+
+  struct ExportOpts { std::string card, format, out; bool force = false; };
+  auto eo = std::make_shared<ExportOpts>();
+  auto* exp = cmd->add_subcommand("export", "Write a card for another FE code (Abaqus, LS-DYNA, CalculiX); approximations are stated");
+  exp->add_option("CARD", eo->card, "material card (TOML)")->required();
+  exp->add_option("--format", eo->format, "abaqus | lsdyna | calculix")->required();
+  exp->add_option("-o,--out", eo->out, "file to write (default: print to stdout)");
+  exp->add_flag("--force", eo->force, "overwrite an existing file");
+  exp->callback([eo, &g, &exit_code] {
+    reports::ExportFormat f;
+    if (!reports::export_format_from_string(eo->format, &f)) throw io::InputError("", "--format", eo->format, "unknown format (abaqus, lsdyna, calculix)");
+    const auto c = material::load_material_card(eo->card);
+    std::vector<std::string> notes;
+    const std::string deck = reports::export_card(c, f, &notes);
+    if (eo->out.empty()) {
+      std::cout << deck;
+    } else {
+      if (std::filesystem::exists(eo->out) && !eo->force) throw io::InputError("", "--out", eo->out, "file exists; pass --force to overwrite");
+      std::ofstream(eo->out) << deck;
+      if (!g.quiet) {
+        std::cout << "wrote " << eo->out << " (" << reports::to_string(f) << ")\n";
+        for (const auto& n : notes) std::cout << "  note: " << n << "\n";
+      }
+    }
     exit_code = 0;
   });
 }

@@ -8,6 +8,7 @@
 #include "inverse/fit_output.hpp"
 #include "inverse/sweep.hpp"
 #include "inverse/synthetic.hpp"
+#include "reports/card_export.hpp"
 
 #include <cstdio>
 
@@ -40,6 +41,19 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const auto result = inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart});
     inverse::write_fit_outputs(problem, result, dir);
+    // The fitted card for production FE codes (approximations stated in each deck).
+    nlohmann::json export_notes = nlohmann::json::object();
+    for (auto f : {reports::ExportFormat::abaqus, reports::ExportFormat::lsdyna, reports::ExportFormat::calculix}) {
+      std::vector<std::string> notes;
+      const std::string name = "exports/card_" + reports::to_string(f) + reports::default_extension(f);
+      try {
+        dir.write_file(name, reports::export_card(result.card, f, &notes));
+        export_notes[name] = notes;
+      } catch (const std::exception& e) {
+        export_notes[name] = std::vector<std::string>{std::string("export failed: ") + e.what()};
+      }
+    }
+    dir.write_file("exports/notes.json", export_notes.dump(2) + "\n");
     nlohmann::json summary{{"status", result.usable ? "ok" : "failed"},
                            {"kind", "fit"},
                            {"fit", problem.name},

@@ -9,7 +9,7 @@ packages=(
   libeigen3-dev libceres-dev libnlopt-cxx-dev libsuitesparse-dev libomp-dev
   libcli11-dev libtoml11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  gnuplot-nox
+  gnuplot-nox calculix-ccx
 )
 
 missing=()

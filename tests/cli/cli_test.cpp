@@ -207,3 +207,43 @@ TEST(Cli, FailedRunLeavesOnlyAFailedSummary) {
   fs::remove_all(out);
   fs::remove(path);
 }
+
+// spifit fit: fit.json with the keys of the issue, the fitted card, exports; errors exit 2.
+TEST(Cli, FitWritesFitJsonCardAndExports) {
+  const auto out = fresh_dir("fit");
+  const auto r = run("fit " + src("experiments/aa3003o/fit_n_conflict.toml") + " --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("CONFLICT: experiments r45 and shear_00 disagree on hill.N"), std::string::npos) << r.out;
+  std::ifstream f(out / "fit.json");
+  const auto j = nlohmann::json::parse(f);
+  for (const char* k : {"parameters", "cost_initial", "cost_final", "forward_runs", "wall_seconds", "termination", "algorithm", "correlation"}) {
+    EXPECT_TRUE(j.contains(k)) << k;
+  }
+  const auto& n = j["parameters"]["hill.N"];
+  for (const char* k : {"value", "initial", "std_error", "ci95", "lower", "upper"}) EXPECT_TRUE(n.contains(k)) << k;
+  EXPECT_LT(n["ci95"][0].get<double>(), n["value"].get<double>());
+  EXPECT_TRUE(fs::exists(out / "card.toml"));
+  EXPECT_TRUE(fs::exists(out / "exports" / "card_abaqus.inp"));
+  EXPECT_TRUE(fs::exists(out / "exports" / "card_calculix.inp"));
+  EXPECT_TRUE(fs::exists(out / "exports" / "card_lsdyna.k"));
+  // The fitted card loads and shows.
+  EXPECT_EQ(run("material show " + (out / "card.toml").string()).code, 0);
+  fs::remove_all(out);
+
+  const std::string bad = write_temp("badfit.toml", "[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") +
+                                                        "\"\n[parameters.\"swift.KK\"]\nlower = 1.0\nupper = 2.0\n");
+  const auto b = run("fit " + bad + " --out " + fresh_dir("badfit").string());
+  EXPECT_EQ(b.code, 2);
+  EXPECT_EQ(count_lines(b.err), 1);
+  EXPECT_NE(b.err.find("parameters.swift.KK"), std::string::npos) << b.err;
+  fs::remove(bad);
+}
+
+TEST(Cli, MaterialExport) {
+  const auto r = run("material export " + src("materials/aa3003o_c8_ziegler_shell.toml") + " --format abaqus");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("*PLASTIC, HARDENING=COMBINED"), std::string::npos);
+  const auto b = run("material export " + src("materials/aa3003o_c8_ziegler_shell.toml") + " --format nastran");
+  EXPECT_EQ(b.code, 2);
+  EXPECT_NE(b.err.find("--format = nastran"), std::string::npos) << b.err;
+}
