@@ -9,6 +9,7 @@
 #include "inverse/sweep.hpp"
 #include "inverse/synthetic.hpp"
 #include "reports/card_export.hpp"
+#include "reports/fit_report.hpp"
 
 #include <cstdio>
 
@@ -54,6 +55,9 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       }
     }
     dir.write_file("exports/notes.json", export_notes.dump(2) + "\n");
+    // Report for people: report.md, report.html, plots/*.svg (gnuplot; without it, no plots).
+    const auto report = reports::render_fit_report(dir.path(), {});
+    for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
     nlohmann::json summary{{"status", result.usable ? "ok" : "failed"},
                            {"kind", "fit"},
                            {"fit", problem.name},
@@ -104,6 +108,22 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
 }  // namespace spifit::cli
 
 namespace spifit::cli {
+
+void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  struct Opts { std::string dir; bool no_plots = false; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("report", "Re-render report.md, report.html and plots of a fit output directory");
+  cmd->add_option("DIR", o->dir, "output directory of spifit fit")->required();
+  cmd->add_flag("--no-plots", o->no_plots, "skip the gnuplot plots");
+  cmd->callback([o, &g, &exit_code] {
+    reports::ReportOptions ro;
+    ro.plots = !o->no_plots;
+    const auto r = reports::render_fit_report(o->dir, ro);
+    for (const auto& w : r.warnings) std::cerr << "spifit: warning: " << w << "\n";
+    if (!g.quiet) std::cout << "wrote " << r.markdown.string() << ", " << r.html.string() << " and " << r.plots.size() << " plots\n";
+    exit_code = 0;
+  });
+}
 
 void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string file, out; bool force = false; };

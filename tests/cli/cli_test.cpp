@@ -226,6 +226,10 @@ TEST(Cli, FitWritesFitJsonCardAndExports) {
   EXPECT_TRUE(fs::exists(out / "exports" / "card_abaqus.inp"));
   EXPECT_TRUE(fs::exists(out / "exports" / "card_calculix.inp"));
   EXPECT_TRUE(fs::exists(out / "exports" / "card_lsdyna.k"));
+  EXPECT_TRUE(fs::exists(out / "report.md"));
+  EXPECT_TRUE(fs::exists(out / "report.html"));
+  EXPECT_EQ(run("report " + out.string() + " --no-plots").code, 0);
+  EXPECT_EQ(run("report " + fresh_dir("nofit").string()).code, 2);
   // The fitted card loads and shows.
   EXPECT_EQ(run("material show " + (out / "card.toml").string()).code, 0);
   fs::remove_all(out);
