@@ -10,6 +10,7 @@
 #include "inverse/synthetic.hpp"
 #include "reports/card_export.hpp"
 #include "reports/fit_report.hpp"
+#include "reports/sweep_plots.hpp"
 
 #include <cstdio>
 
@@ -140,6 +141,16 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const auto r = inverse::run_sweep(spec, threads);
     dir.write_file("sweep.csv", inverse::sweep_csv(spec, r));
     if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));
+    reports::SweepTable table;
+    for (const auto& in : spec.inputs) table.inputs.push_back(in.name);
+    table.metrics = spec.metrics;
+    for (const auto& p : r.points) {
+      table.input_values.push_back(p.inputs);
+      table.metric_values.push_back(p.metrics);
+      table.wall_seconds.push_back(p.wall_seconds);
+      table.ok.push_back(p.ok);
+    }
+    for (const auto& w : reports::render_sweep_plots(dir.path(), table)) std::cerr << "spifit: warning: " << w << "\n";
     int failed = 0;
     for (const auto& p : r.points) failed += p.ok ? 0 : 1;
     dir.write_file("summary.json", nlohmann::json{{"status", "ok"}, {"kind", "sweep"}, {"sweep", spec.name}, {"points", r.points.size()},

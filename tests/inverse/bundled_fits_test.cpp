@@ -77,3 +77,16 @@ TEST(BundledFits, MultiStartFindsTheSameMinimum) {
   const auto again = inverse::run_fit(fp, o);
   for (std::size_t s = 0; s < 4; ++s) EXPECT_EQ(again.multistart.solutions[s].start, r.multistart.solutions[s].start);
 }
+
+// Same inputs and thread count -> identical results (experiments evaluated in parallel).
+TEST(BundledFits, DeterministicWithTwoThreads) {
+  const auto fp = inverse::read_fit_file(src("experiments/aa3003o/fit_classic.toml"));
+  inverse::FitRunOptions o;
+  o.threads = 2;
+  const auto a = inverse::run_fit(fp, o);
+  const auto b = inverse::run_fit(fp, o);
+  ASSERT_TRUE(a.usable && b.usable);
+  EXPECT_EQ(a.values, b.values);
+  EXPECT_EQ(a.cost_final, b.cost_final);
+  EXPECT_EQ(a.iterations, b.iterations);
+}

@@ -1,0 +1,22 @@
+#pragma once
+// Plots of a sweep (DIR/plots/sweep_*.svg): each metric against the first input, one series
+// per value of the second input when there are two or more inputs (further inputs at their
+// first value), and the run time per point.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace spifit::reports {
+
+struct SweepTable {
+  std::vector<std::string> inputs, metrics;
+  std::vector<std::vector<double>> input_values;   // per point
+  std::vector<std::vector<double>> metric_values;  // per point (NaN: not available)
+  std::vector<double> wall_seconds;
+  std::vector<bool> ok;
+};
+
+// Returns warnings (gnuplot missing or failing); never throws for plotting problems.
+std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, const SweepTable& table);
+
+}  // namespace spifit::reports
