@@ -1,5 +1,7 @@
 #include "reports/fit_report.hpp"
 
+#include "forward/io/atomic_file.hpp"
+
 #include "forward/io/input_error.hpp"
 #include "reports/plot.hpp"
 
@@ -1392,21 +1394,6 @@ Doc build(const Fit& fit, const std::vector<Finding>& findings, const std::strin
   return d;
 }
 
-void write_atomic(const fs::path& p, const std::string& text) {
-  std::string tmp_name = ".";
-  tmp_name += p.filename().string();
-  tmp_name += ".tmp";
-  const fs::path tmp = p.parent_path() / tmp_name;
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  std::error_code ec;
-  fs::rename(tmp, p, ec);
-  if (ec) throw std::runtime_error("cannot write " + p.string() + ": " + ec.message());
-}
 
 }  // namespace
 
@@ -1453,8 +1440,8 @@ ReportSummary render_fit_report(const fs::path& dir, const ReportOptions& option
   const Doc doc = build(fit, findings, scalar_plot, convergence_plot, !summary.plots.empty());
   summary.markdown = dir / "report.md";
   summary.html = dir / "report.html";
-  write_atomic(summary.markdown, to_markdown(doc));
-  write_atomic(summary.html, to_html(doc));
+  io::write_file_atomic(summary.markdown, to_markdown(doc));
+  io::write_file_atomic(summary.html, to_html(doc));
   return summary;
 }
 

@@ -1,5 +1,7 @@
 #include "reports/plot.hpp"
 
+#include "forward/io/atomic_file.hpp"
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/stat.h>
@@ -33,19 +35,6 @@ std::string number(double v) {
   return buf;
 }
 
-void write_text(const fs::path& p, const std::string& text) {
-  std::string tmp_name = ".";
-  tmp_name += p.filename().string();
-  tmp_name += ".tmp";
-  const fs::path tmp = p.parent_path() / tmp_name;
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-    f << text;
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, p);
-}
 
 std::string first_lines(const fs::path& p, int max_lines) {
   std::ifstream f(p);
@@ -249,8 +238,8 @@ PlotResult render_plot(const fs::path& gnuplot, const fs::path& plots_dir, const
   for (const auto& s : spec.series) any = any || has_finite_point(s, spec.log_y);
   if (!any) return {false, {}, "plot " + stem + ": nothing to plot (no finite values)"};
   try {
-    write_text(plots_dir / "src" / (stem + ".dat"), gnuplot_data(spec));
-    write_text(plots_dir / "src" / (stem + ".gp"), gnuplot_script(spec, format, image, "src/" + stem + ".dat"));
+    io::write_file_atomic(plots_dir / "src" / (stem + ".dat"), gnuplot_data(spec));
+    io::write_file_atomic(plots_dir / "src" / (stem + ".gp"), gnuplot_script(spec, format, image, "src/" + stem + ".dat"));
   } catch (const std::exception& e) {
     return {false, {}, e.what()};
   }

@@ -1,5 +1,6 @@
 #include "forward/io/output_directory.hpp"
 
+#include "forward/io/atomic_file.hpp"
 #include "forward/io/input_error.hpp"
 
 #include <fstream>
@@ -48,17 +49,7 @@ OutputDirectory OutputDirectory::prepare(const std::string& path, bool force, co
 }
 
 void OutputDirectory::write_file(const std::string& name, const std::string& contents) const {
-  const fs::path target = path_ / name;
-  std::error_code ec;
-  fs::create_directories(target.parent_path(), ec);
-  const fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp");
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-    f << contents;
-    if (!f) throw std::runtime_error("cannot write " + tmp.string());
-  }
-  fs::rename(tmp, target);
+  write_file_atomic(path_ / name, contents);
 }
 
 void OutputDirectory::remove_file(const std::string& name) const {

@@ -73,16 +73,21 @@ std::string classic_fit_text(const std::string& data_noise_note, double noise, b
 
 const char* kNames[6] = {"hill.F", "hill.G", "hill.N", "swift.K", "swift.eps0", "swift.n"};
 
+// Noise-free tensile 0/45/90 and shear curves from C.2 and the classic fit file, 30 % off.
+inverse::FitProblem classic_twin(TwinDir& d) {
+  d.synth("experiments/aa3003o/scenes/tensile_00.toml", "materials/aa3003o_c2.toml", "t00.csv", 0.0, 1);
+  d.synth("experiments/aa3003o/scenes/tensile_45.toml", "materials/aa3003o_c2.toml", "t45.csv", 0.0, 1);
+  d.synth("experiments/aa3003o/scenes/tensile_90.toml", "materials/aa3003o_c2.toml", "t90.csv", 0.0, 1);
+  d.synth("experiments/aa3003o/scenes/shear_00.toml", "materials/aa3003o_c2.toml", "s.csv", 0.0, 1);
+  return inverse::read_fit_file(d.write("fit.toml", classic_fit_text("", 0.0, true, false)));
+}
+
 }  // namespace
 
 // Noise-free data from card C.2, start 30 % off: Levenberg-Marquardt recovers the card to 1e-5.
 TEST(TwinFit, NoiseFreeRecoversCardC2) {
   TwinDir d;
-  d.synth("experiments/aa3003o/scenes/tensile_00.toml", "materials/aa3003o_c2.toml", "t00.csv", 0.0, 1);
-  d.synth("experiments/aa3003o/scenes/tensile_45.toml", "materials/aa3003o_c2.toml", "t45.csv", 0.0, 1);
-  d.synth("experiments/aa3003o/scenes/tensile_90.toml", "materials/aa3003o_c2.toml", "t90.csv", 0.0, 1);
-  d.synth("experiments/aa3003o/scenes/shear_00.toml", "materials/aa3003o_c2.toml", "s.csv", 0.0, 1);
-  const auto fp = inverse::read_fit_file(d.write("fit.toml", classic_fit_text("", 0.0, true, false)));
+  const auto fp = classic_twin(d);
   const auto r = inverse::fit_with_ceres(fp);
   ASSERT_TRUE(r.usable) << r.termination;
   const auto truth = material::load_material_card(src("materials/aa3003o_c2.toml"));
@@ -98,11 +103,7 @@ TEST(TwinFit, NoiseFreeRecoversCardC2) {
 // The same twin with BOBYQA (derivative-free) recovers the card to 1e-4.
 TEST(TwinFit, NoiseFreeBobyqaRecoversCardC2) {
   TwinDir d;
-  d.synth("experiments/aa3003o/scenes/tensile_00.toml", "materials/aa3003o_c2.toml", "t00.csv", 0.0, 1);
-  d.synth("experiments/aa3003o/scenes/tensile_45.toml", "materials/aa3003o_c2.toml", "t45.csv", 0.0, 1);
-  d.synth("experiments/aa3003o/scenes/tensile_90.toml", "materials/aa3003o_c2.toml", "t90.csv", 0.0, 1);
-  d.synth("experiments/aa3003o/scenes/shear_00.toml", "materials/aa3003o_c2.toml", "s.csv", 0.0, 1);
-  const auto fp = inverse::read_fit_file(d.write("fit.toml", classic_fit_text("", 0.0, true, false)));
+  const auto fp = classic_twin(d);
   inverse::FitRunOptions o;
   o.algorithm = "bobyqa";
   const auto r = inverse::run_fit(fp, o);
