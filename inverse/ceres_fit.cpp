@@ -82,6 +82,23 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
     problem.SetParameterUpperBound(x.data(), k, hi[k]);
   }
 
+  // Each experiment at the start: a failure there is named instead of ending in a bare
+  // "evaluation failed".
+  {
+    const auto m0 = ps.apply(x.data());
+    for (const auto& e : fp.experiments) {
+      std::vector<double> r(e->num_residuals());
+      if (!e->residuals(m0, r.data())) {
+        out.termination = "FAILURE: experiment " + e->name() + " cannot be simulated at the initial parameters";
+        out.usable = false;
+        for (int k = 0; k < p; ++k) out.values.push_back(out.initial[k]);
+        out.card = ps.card_for(x);
+        out.cost_initial = out.cost_final = std::numeric_limits<double>::infinity();
+        out.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return out;
+      }
+    }
+  }
   double cost0 = 0.0;
   const bool start_ok = problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost0, nullptr, nullptr, nullptr);
   out.cost_initial = start_ok ? cost0 : std::numeric_limits<double>::infinity();
@@ -118,6 +135,12 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
   out.values.clear();
   for (int k = 0; k < p; ++k) out.values.push_back(ps.to_physical(k, x[k]));
   out.card = ps.card_for(x);
+  try {
+    material::validate_material_card(out.card);
+  } catch (const io::InputError& e) {
+    out.usable = false;
+    out.uncertainty.warnings.push_back(std::string("the fitted card is not valid: ") + e.key() + " = " + e.value() + ": " + e.message());
+  }
   std::atomic<long> runs{0};
   ceres::Problem::Options popts;
   popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;

@@ -7,6 +7,18 @@
 
 namespace spifit::inverse {
 
+namespace {
+// Where the joint value lies with respect to the two single-experiment intervals.
+std::string joint_position(double v, const FitResult::Alone& A, const FitResult::Alone& B, int k) {
+  const bool in_a = A.ci95_lower[k] <= v && v <= A.ci95_upper[k];
+  const bool in_b = B.ci95_lower[k] <= v && v <= B.ci95_upper[k];
+  if (in_a && in_b) return "lies in both intervals";
+  if (in_a) return "lies in " + A.experiment + "'s interval only, so " + B.experiment + " is not satisfied";
+  if (in_b) return "lies in " + B.experiment + "'s interval only, so " + A.experiment + " is not satisfied";
+  return "lies in neither interval";
+}
+}  // namespace
+
 void analyse_conflicts(const FitProblem& fp, const FitRunOptions& options, FitResult* out) {
   const ParameterSet& ps = *fp.parameters;
   std::vector<ParameterSpec> specs = ps.specs();
@@ -52,7 +64,7 @@ void analyse_conflicts(const FitProblem& fp, const FitRunOptions& options, FitRe
           auto fmt = [&](const FitResult::Alone& x) { return g4(x.values[k]) + " [" + g4(x.ci95_lower[k]) + ", " + g4(x.ci95_upper[k]) + "]"; };
           out->conflicts.push_back("experiments " + A.experiment + " and " + B.experiment + " disagree on " + name + ": " +
                                    A.experiment + " alone gives " + fmt(A) + ", " + B.experiment + " alone gives " + fmt(B) +
-                                   "; the joint value " + g4(out->values[k]) + " satisfies neither.");
+                                   "; the joint value " + g4(out->values[k]) + " " + joint_position(out->values[k], A, B, k) + ".");
         }
       }
     }

@@ -56,6 +56,7 @@ class CurveExperiment final : public Experiment {
       const double x0 = *scene::curve_abscissa(curve[seg], s_.x), x1 = *scene::curve_abscissa(curve[seg + 1], s_.x);
       const T y0 = *scene::curve_response(curve[seg], s_.y), y1 = *scene::curve_response(curve[seg + 1], s_.y);
       const double t = x1 > x0 ? (x - x0) / (x1 - x0) : 0.0;
+      if (t < -1e-9 || t > 1.0 + 1e-9) return false;  // outside the simulated curve: never extrapolate
       const T y = y0 + (y1 - y0) * t;
       r[i] = sqrt_w_[i] * (y - s_.ys[i]) / scale_;
       if (simulated) (*simulated)[i] = value_of(y);

@@ -5,6 +5,8 @@
 #include "inverse/measurement.hpp"
 #include "inverse/nlopt_fit.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 
@@ -92,6 +94,9 @@ FitProblem read_fit_file(const std::string& path) {
   st.function_tolerance = ft->number("function_tolerance", st.function_tolerance);
   st.parameter_tolerance = ft->number("parameter_tolerance", st.parameter_tolerance);
   st.gradient_tolerance = ft->number("gradient_tolerance", st.gradient_tolerance);
+  for (const char* k : {"function_tolerance", "parameter_tolerance", "gradient_tolerance"}) {
+    if (ft->has(k) && !(ft->number(k) >= 0)) ft->fail(k, "must be >= 0");
+  }
 
   std::vector<ParameterSpec> specs;
   const auto pt = root.table("parameters");
@@ -107,6 +112,31 @@ FitProblem read_fit_file(const std::string& path) {
   }
   fp.parameters = std::make_unique<ParameterSet>(card, specs, normalise);
   if (fp.parameters->num_free() == 0) root.fail("parameters", "no free parameter (every listed parameter is fixed)");
+  if (normalise && std::abs(card.params.G + card.params.H - 2.0) > 1e-12) {
+    fp.notes.push_back("normalise_hill: the starting card has G + H = " + format_number(card.params.G + card.params.H) +
+                       "; the fit uses H = 2 - G");
+  }
+  // The card must stay valid at the start and with each free parameter at either bound
+  // (else the fit could return a card spifit itself rejects).
+  auto check_card = [&](const std::vector<double>& internal, const std::string& key, double value, const std::string& where) {
+    try {
+      material::validate_material_card(fp.parameters->card_for(internal));
+    } catch (const InputError& err) {
+      throw InputError(path, key, format_number(value),
+                       where + " makes the card invalid (" + err.key() + " = " + err.value() + ": " + err.message() + ")");
+    }
+  };
+  const auto x0 = fp.parameters->initial_internal();
+  check_card(x0, "parameters", 0.0, "the initial values");
+  const auto lo = fp.parameters->lower_internal(), hi = fp.parameters->upper_internal();
+  for (int k = 0; k < fp.parameters->num_free(); ++k) {
+    const auto& s = fp.parameters->specs()[fp.parameters->free_indices()[k]];
+    for (int side = 0; side < 2; ++side) {
+      auto x = x0;
+      x[k] = side == 0 ? lo[k] : hi[k];
+      check_card(x, "parameters." + s.name + (side == 0 ? ".lower" : ".upper"), side == 0 ? s.lower : s.upper, "this bound");
+    }
+  }
 
   const auto exps = root.table_array("experiment");
   if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
@@ -118,6 +148,15 @@ FitProblem read_fit_file(const std::string& path) {
     if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
     auto sc = scene::read_scene_file(scene_path);
     const std::string name = e.string("name", sc.name);
+    // Names become file names (DIR/experiments/NAME.csv): plain and unique.
+    const bool plain = !name.empty() && name[0] != '.' &&
+                       std::all_of(name.begin(), name.end(), [](char ch) {
+                         return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
+                       });
+    if (!plain) e.fail("name", "experiment names may use letters, digits, _ - . and must not start with '.'");
+    for (const auto& other : fp.experiments) {
+      if (other->name() == name) e.fail("name", "two experiments have this name");
+    }
     const double noise = e.number("noise", 0.0);
     if (noise < 0) e.fail("noise", "must be >= 0 (0: condition by the range of the data)");
     const double weight = e.number("weight", 1.0);
@@ -128,6 +167,8 @@ FitProblem read_fit_file(const std::string& path) {
       s.scene = std::move(sc);
       s.observable = e.string("observable");
       if (!is_scalar_observable(s.observable)) e.fail("observable", std::string("unknown observable (known: ") + scalar_observable_names() + ")");
+      if (s.observable == "reverse_yield_stress" && s.scene.setup.strain_path.size() < 2)
+        e.fail("observable", "reverse_yield_stress needs a scene whose strain path reverses");
       if (s.observable == "r_value" || s.observable == "yield_stress") {
         if (s.scene.setup.kind != scene::MaterialPointKind::tensile) e.fail("observable", "r_value and yield_stress need a tensile scene");
       }

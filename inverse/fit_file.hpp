@@ -25,6 +25,7 @@ struct FitProblem {
   FitSettings settings;
   bool per_experiment = false;  // also fit each experiment alone and compare (conflicts)
   int multistart = 1;           // number of starts (1: the initial point only)
+  std::vector<std::string> notes;  // reading remarks shown with the result (e.g. renormalised Hill)
 };
 
 // Throws io::InputError naming file, key and value (unknown parameter, bad bounds, missing

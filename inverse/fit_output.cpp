@@ -60,7 +60,9 @@ json fit_result_json(const FitProblem& fp, const FitResult& r) {
   j["uncertainty"] = {{"residuals", u.m}, {"parameters", u.p}, {"dof", u.dof}, {"sse", u.sse},
                       {"sigma2", number_or_null(u.sigma2)}, {"t_quantile_975", number_or_null(u.t_quantile)},
                       {"singular_values_scaled", u.singular_values}, {"condition_number", number_or_null(u.condition_number)}};
-  j["warnings"] = u.warnings;
+  json warnings = fp.notes;
+  for (const auto& w : u.warnings) warnings.push_back(w);
+  j["warnings"] = warnings;
   j["conflicts"] = r.conflicts;
   json pe = json::array();
   for (const auto& a : r.per_experiment) {
@@ -143,6 +145,7 @@ std::string fit_table(const FitProblem& fp, const FitResult& r) {
     std::snprintf(line, sizeof line, "  experiment %-22s %-6s %4d points  cost %.4g  rms %.4g\n", e.name.c_str(), e.kind.c_str(), e.points, e.cost, e.rms);
     s += line;
   }
+  for (const auto& n : fp.notes) s += "NOTE: " + n + "\n";
   for (const auto& w : u.warnings) s += "WARNING: " + w + "\n";
   for (const auto& c : r.conflicts) s += "CONFLICT: " + c + "\n";
   if (r.multistart.starts > 1) {

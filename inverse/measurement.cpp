@@ -49,7 +49,10 @@ MeasurementTable read_measurement_csv(const std::string& path) {
   bool header = false;
   while (std::getline(in, line)) {
     ++lineno;
-    const std::string s = trim(line);
+    if (lineno == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line = line.substr(3);  // UTF-8 byte-order mark
+    std::string s = trim(line);
+    // Spreadsheet exports end every row with a comma: drop one empty last cell.
+    if (!s.empty() && s.back() == ',' && s[0] != '#') s.pop_back();
     if (s.empty()) continue;
     if (s[0] == '#') {
       t.comments.push_back(trim(s.substr(1)));

@@ -5,6 +5,7 @@
 
 #include <nlopt.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -82,7 +83,7 @@ FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
   opt.set_initial_step(step);
   opt.set_xtol_rel(fp.settings.parameter_tolerance);
   opt.set_ftol_rel(fp.settings.function_tolerance);
-  const int max_eval = std::max(200, fp.settings.max_iterations * 50 * static_cast<int>(p));
+  const int max_eval = static_cast<int>(std::clamp(50L * fp.settings.max_iterations * static_cast<long>(p), 200L, 100000000L));
   opt.set_maxeval(max_eval);
   nlopt::opt local(nlopt::LN_BOBYQA, p);
   if (alg->algorithm == nlopt::G_MLSL_LDS) {

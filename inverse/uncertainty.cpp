@@ -77,7 +77,10 @@ Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd&
   const Eigen::VectorXd sv = svd.singularValues();
   for (int i = 0; i < sv.size(); ++i) u.singular_values.push_back(sv(i));
   const double smax = sv.size() ? sv(0) : 0.0;
-  const double rank_tol = 1e-10 * std::max(smax, 1e-300);
+  // Relative and absolute floors: residuals are conditioned (noise or range units), so a
+  // scaled singular value below 1e-6 means a 100 % change of the parameters moves the fit by
+  // a millionth of the noise.
+  const double rank_tol = std::max(1e-10 * smax, 1e-6);
   const double smin = sv.size() == u.p ? sv(sv.size() - 1) : 0.0;
   u.condition_number = smin > 0 ? smax / smin : std::numeric_limits<double>::infinity();
 
@@ -104,10 +107,12 @@ Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd&
     u.ci95_lower.push_back(values[k] - u.t_quantile * se);
     u.ci95_upper.push_back(values[k] + u.t_quantile * se);
   }
+  // Correlation does not depend on sigma^2: from the unscaled pseudo-inverse.
+  const Eigen::MatrixXd shape = s.asDiagonal() * cov_s * s.asDiagonal();
   for (int a = 0; a < u.p; ++a) {
     for (int b = 0; b < u.p; ++b) {
-      const double d = std::sqrt(u.covariance(a, a) * u.covariance(b, b));
-      u.correlation(a, b) = (a == b) ? 1.0 : (d > 0 ? u.covariance(a, b) / d : 0.0);
+      const double d = std::sqrt(shape(a, a) * shape(b, b));
+      u.correlation(a, b) = (a == b) ? 1.0 : (d > 0 ? shape(a, b) / d : 0.0);
     }
   }
   for (int k = 0; k < u.p; ++k) {

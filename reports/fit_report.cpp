@@ -78,6 +78,7 @@ struct Experiment {
   std::string name, kind, x, y, x_unit, y_unit, data_file;
   int points = 0;
   double cost = kNaN, rms = kNaN, scale = kNaN, weight = 1.0;
+  int noise_given = -1;  // from fit.json when present (1/0), else -1: recognised from the data
   bool scalar = false;
   // experiments/NAME.csv
   bool have_csv = false;
@@ -438,6 +439,7 @@ Fit load_fit(const fs::path& dir) {
       e.scale = num(file, ej, "scale", at);
       const double w = num(file, ej, "weight", at);
       e.weight = std::isfinite(w) ? w : 1.0;
+      if (ej.contains("noise_given") && ej["noise_given"].is_boolean()) e.noise_given = ej["noise_given"].get<bool>() ? 1 : 0;
       fit.experiments.push_back(std::move(e));
     }
   } catch (const json::exception& e) {
@@ -466,9 +468,13 @@ std::string with_unit(const std::string& v, const std::string& unit) {
 
 void analyse_experiment(Experiment& e) {
   // Which divisor conditioned the residuals: the stated noise, or (none given) the range of the
-  // measured curve / the magnitude of the measured value. fit.json keeps only the divisor, so it
-  // is recognised from the data.
-  if (e.have_csv && std::isfinite(e.scale) && e.scale > 0) {
+  // measured curve / the magnitude of the measured value. fit.json says so (noise_given); older
+  // files keep only the divisor, which is then recognised from the data.
+  if (e.noise_given == 1) {
+    e.cond = Conditioning::noise;
+  } else if (e.noise_given == 0) {
+    e.cond = e.scalar ? Conditioning::relative : Conditioning::range;
+  } else if (e.have_csv && std::isfinite(e.scale) && e.scale > 0) {
     const auto tol = [&](double a) { return std::abs(e.scale - a) <= 1e-9 * std::max(std::abs(a), 1e-300); };
     if (e.scalar) {
       e.cond = tol(std::abs(e.measured[0])) ? Conditioning::relative : Conditioning::noise;

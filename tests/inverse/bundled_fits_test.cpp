@@ -45,6 +45,8 @@ TEST(BundledFits, NConflictIsReportedPerExperiment) {
   EXPECT_NEAR(r.per_experiment[1].values[n], 4.06, 0.05);  // the generating card's N
   ASSERT_EQ(r.conflicts.size(), 1u);
   EXPECT_NE(r.conflicts[0].find("disagree on hill.N"), std::string::npos);
+  // The joint value (close to the shear estimate) lies in the shear interval only.
+  EXPECT_NE(r.conflicts[0].find("lies in shear_00's interval only, so r45 is not satisfied"), std::string::npos) << r.conflicts[0];
 }
 
 // fit_classic: the three measured r-values and the synthetic curves agree (no conflict

@@ -59,6 +59,29 @@ TEST(FitFile, Errors) {
   expect_error(base_fit(kParam, "[[experiment]]\nscene = \"" + src("experiments/aa3003o/scenes/tensile_00.toml") + "\"\nobservable = \"r_valu\"\nvalue = 0.7\n"),
                "experiment[0].observable", "r_valu");
   expect_error(base_fit("[parameters.\"hill.H\"]\nlower = 0.5\nupper = 1.5\n", curve(data)), "parameters.hill.H", "H = 2 - G");
+  // Review 2026-11-21: names that escape the output directory, duplicate names, bounds or
+  // fixed values that make the card invalid, negative tolerances, impossible observables.
+  expect_error(base_fit(kParam, "[[experiment]]\nname = \"../../escape\"\nscene = \"" + src("experiments/aa3003o/scenes/tensile_00.toml") +
+                                    "\"\ndata = \"" + data + "\"\n"),
+               "experiment[0].name", "../../escape");
+  expect_error(base_fit(kParam, curve(data) + curve(data)), "experiment[1].name", "two experiments");
+  expect_error(base_fit(kParam + "[parameters.\"elastic.nu\"]\ninitial = 0.7\nfixed = true\n", curve(data)), "parameters", "elastic.nu");
+  expect_error(base_fit("[parameters.\"hill.N\"]\ninitial = 3.0\nlower = -5.0\nupper = 6.0\n", curve(data)), "parameters.hill.N.lower", "-5");
+  // G up to 2.5 gives H = -0.5 at the bound, still a convex Hill surface with F = 1.224 (FG + GH
+  // + HF = 1.2 > 0): allowed. G up to 3.5 (H = -1.5) is not.
+  expect_error(base_fit("[parameters.\"hill.G\"]\nlower = 0.5\nupper = 3.5\n", curve(data)), "parameters.hill.G.upper", "3.5");
+  expect_error("[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") + "\"\nparameter_tolerance = -1.0\n" + kParam + curve(data),
+               "fit.parameter_tolerance", "-1");
+  expect_error(base_fit(kParam, "[[experiment]]\nscene = \"" + src("experiments/aa3003o/scenes/tensile_00.toml") +
+                                    "\"\nobservable = \"reverse_yield_stress\"\nvalue = -40.0\n"),
+               "experiment[0].observable", "reverses");
+}
+
+TEST(FitFile, SpreadsheetCsvWithBomAndTrailingCommas) {
+  const std::string data = write("bom.csv", "\xEF\xBB\xBFstrain [-],stress [MPa],\r\n0.01,60,\r\n0.02,70,\r\n");
+  const auto t = inverse::read_measurement_csv(data);
+  EXPECT_EQ(t.names, (std::vector<std::string>{"strain", "stress"}));
+  EXPECT_EQ(t.column("stress")[1], 70.0);
 }
 
 TEST(FitFile, MeasurementUnitsAndComments) {

@@ -28,6 +28,24 @@ TEST(Uncertainty, LinearRegression) {
   EXPECT_TRUE(u.warnings.empty());
 }
 
+// Correlation does not depend on sigma^2: an exact fit (zero residuals) keeps it.
+TEST(Uncertainty, CorrelationWithZeroResiduals) {
+  Eigen::MatrixXd J(5, 2);
+  for (int i = 0; i < 5; ++i) { J(i, 0) = 1.0; J(i, 1) = i; }
+  const auto u = analyse_uncertainty(J, Eigen::VectorXd::Zero(5), {1.0, 2.0}, {"a", "b"});
+  const Eigen::Matrix2d c = (J.transpose() * J).inverse();
+  EXPECT_NEAR(u.correlation(0, 1), c(0, 1) / std::sqrt(c(0, 0) * c(1, 1)), 1e-12);
+}
+
+// A single parameter whose effect is far below the noise is not identifiable (absolute floor).
+TEST(Uncertainty, NegligibleSensitivityIsNotIdentifiable) {
+  Eigen::MatrixXd J(4, 1);
+  J << 1e-13, 2e-13, -1e-13, 0.5e-13;
+  const auto u = analyse_uncertainty(J, Eigen::VectorXd::Constant(4, 0.5), {1.0}, {"g"});
+  EXPECT_FALSE(u.identifiable[0]);
+  EXPECT_FALSE(std::isfinite(u.std_error[0]));
+}
+
 // Two parameters that only appear as a sum: rank deficient, both reported, nothing crashes.
 TEST(Uncertainty, RankDeficient) {
   Eigen::MatrixXd J(4, 3);
