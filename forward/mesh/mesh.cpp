@@ -1,0 +1,154 @@
+#include "forward/mesh/mesh.hpp"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+namespace spifit::mesh {
+
+Eigen::Vector3d Mesh::centroid(int e) const {
+  const auto& q = quads[e];
+  return 0.25 * (nodes[q[0]] + nodes[q[1]] + nodes[q[2]] + nodes[q[3]]);
+}
+
+double Mesh::signed_area(int e) const {
+  const auto& q = quads[e];
+  const Eigen::Vector3d a = nodes[q[0]], b = nodes[q[1]], c = nodes[q[2]], d = nodes[q[3]];
+  const Eigen::Vector3d n = (b - a).cross(c - a) + (c - a).cross(d - a);  // 2 x vector area
+  const double area = 0.5 * n.norm();
+  return n.z() >= 0.0 ? area : -area;
+}
+
+std::vector<int> select_nodes(const Mesh& m, const std::function<bool(const Eigen::Vector3d&)>& inside) {
+  std::vector<int> out;
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    if (inside(m.nodes[i])) out.push_back(i);
+  }
+  return out;
+}
+
+std::vector<int> select_elements(const Mesh& m, const std::function<bool(const Eigen::Vector3d&)>& inside) {
+  std::vector<int> out;
+  for (int e = 0; e < m.num_elements(); ++e) {
+    if (inside(m.centroid(e))) out.push_back(e);
+  }
+  return out;
+}
+
+void merge_coincident_nodes(Mesh& m, double tol) {
+  // Hash on a grid of cell size tol; compare with the 27 neighbouring cells.
+  struct Key {
+    long x, y, z;
+    bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
+  };
+  struct Hash {
+    std::size_t operator()(const Key& k) const {
+      return std::hash<long>()(k.x * 73856093L ^ k.y * 19349663L ^ k.z * 83492791L);
+    }
+  };
+  auto key = [&](const Eigen::Vector3d& p) {
+    return Key{static_cast<long>(std::floor(p.x() / tol)), static_cast<long>(std::floor(p.y() / tol)),
+               static_cast<long>(std::floor(p.z() / tol))};
+  };
+  std::unordered_map<Key, std::vector<int>, Hash> cells;
+  std::vector<int> map(m.nodes.size(), -1);
+  std::vector<Eigen::Vector3d> kept;
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    const Key k = key(m.nodes[i]);
+    int found = -1;
+    for (long dx = -1; dx <= 1 && found < 0; ++dx) {
+      for (long dy = -1; dy <= 1 && found < 0; ++dy) {
+        for (long dz = -1; dz <= 1 && found < 0; ++dz) {
+          const auto it = cells.find(Key{k.x + dx, k.y + dy, k.z + dz});
+          if (it == cells.end()) continue;
+          for (int j : it->second) {
+            if ((kept[j] - m.nodes[i]).norm() <= tol) {
+              found = j;
+              break;
+            }
+          }
+        }
+      }
+    }
+    if (found < 0) {
+      found = static_cast<int>(kept.size());
+      kept.push_back(m.nodes[i]);
+      cells[k].push_back(found);
+    }
+    map[i] = found;
+  }
+  m.nodes = kept;
+  for (auto& q : m.quads) {
+    for (int& v : q) v = map[v];
+  }
+  for (auto& [name, set] : m.node_sets) {
+    for (int& v : set) v = map[v];
+    std::sort(set.begin(), set.end());
+    set.erase(std::unique(set.begin(), set.end()), set.end());
+  }
+}
+
+std::string check_mesh(const Mesh& m) {
+  std::ostringstream os;
+  std::vector<char> used(m.nodes.size(), 0);
+  for (int e = 0; e < m.num_elements(); ++e) {
+    const auto& q = m.quads[e];
+    for (int v : q) {
+      if (v < 0 || v >= m.num_nodes()) {
+        os << "element " << e << ": node index " << v << " out of range";
+        return os.str();
+      }
+      used[v] = 1;
+    }
+    if (std::set<int>(q.begin(), q.end()).size() != 4) {
+      os << "element " << e << ": repeated node (degenerate quad)";
+      return os.str();
+    }
+    if (!(m.signed_area(e) > 0.0)) {
+      os << "element " << e << ": area " << m.signed_area(e) << " <= 0 (zero-area or clockwise)";
+      return os.str();
+    }
+    // Convexity: every corner turns the same way about +z.
+    for (int c = 0; c < 4; ++c) {
+      const Eigen::Vector3d a = m.nodes[q[c]], b = m.nodes[q[(c + 1) % 4]], d = m.nodes[q[(c + 3) % 4]];
+      if ((b - a).cross(d - a).z() <= 0.0) {
+        os << "element " << e << ": not convex at its corner " << c;
+        return os.str();
+      }
+    }
+  }
+  for (int i = 0; i < m.num_nodes(); ++i) {
+    if (!used[i]) {
+      os << "node " << i << " belongs to no element";
+      return os.str();
+    }
+  }
+  return "";
+}
+
+std::vector<double> graded_points(double a, double b, int n, double ratio) {
+  std::vector<double> x(n + 1);
+  if (n <= 0) return {a};
+  const double q = n > 1 ? std::pow(ratio, 1.0 / (n - 1)) : 1.0;  // size of element i+1 / element i
+  double total = 0.0, h = 1.0;
+  std::vector<double> sizes(n);
+  for (int i = 0; i < n; ++i) {
+    sizes[i] = h;
+    total += h;
+    h *= q;
+  }
+  x[0] = a;
+  double acc = 0.0;
+  for (int i = 0; i < n; ++i) {
+    acc += sizes[i];
+    x[i + 1] = a + (b - a) * acc / total;
+  }
+  x[n] = b;
+  return x;
+}
+
+}  // namespace spifit::mesh

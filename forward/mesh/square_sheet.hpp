@@ -1,0 +1,22 @@
+#pragma once
+// Structured square (rectangular) sheets centred on the origin in the x-y plane: full, or
+// half with the symmetry plane y = 0 kept (line test, SPEC §3.2), uniform or graded (elements
+// smallest at the centre lines and growing geometrically towards the edges).
+#include "forward/mesh/mesh.hpp"
+
+namespace spifit::mesh {
+
+struct SquareSheetOptions {
+  double length_x = 182.0, length_y = 182.0;  // mm (full sheet)
+  int nx = 50, ny = 50;                        // elements across the full sheet
+  bool half = false;                           // keep y >= 0 only (ny/2 elements across it)
+  double grading_x = 1.0, grading_y = 1.0;     // edge element size / centre element size
+};
+
+// Node sets: "edge_xmin", "edge_xmax", "edge_ymin" (full sheet), "edge_ymax", "symmetry_y0"
+// (half sheet), "boundary" (the clamped edges: all edges but the symmetry plane), "centre"
+// (the node nearest to the origin); element set "all". Throws std::invalid_argument on
+// meaningless options (the scene readers report file and key first).
+Mesh square_sheet(const SquareSheetOptions& options);
+
+}  // namespace spifit::mesh
