@@ -10,7 +10,11 @@ void write_file_atomic(const std::filesystem::path& path, const std::string& con
   namespace fs = std::filesystem;
   std::error_code ec;
   if (path.has_parent_path()) fs::create_directories(path.parent_path(), ec);
-  const fs::path tmp = path.parent_path() / ("." + path.filename().string() + ".tmp");
+  // Built by appending: "." + std::string trips GCC 12's false -Wrestrict (GCC bug 105651).
+  std::string tmp_name = ".";
+  tmp_name += path.filename().string();
+  tmp_name += ".tmp";
+  const fs::path tmp = path.parent_path() / tmp_name;
   {
     std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
     if (!f) throw std::runtime_error("cannot write " + tmp.string());

@@ -1,0 +1,154 @@
+#include "forward/solver/linear_solver.hpp"
+
+#include <cholmod.h>
+#include <umfpack.h>
+
+namespace spifit::solver {
+
+namespace {
+
+// UMFPACK reads compressed columns; our CSR arrays read as CSC describe A^T, so the solve uses
+// UMFPACK_At (x = (A^T)^T \ b = A \ b).
+class Umfpack final : public LinearSolver {
+ public:
+  ~Umfpack() override { release(); }
+  bool factorize(const SparseMatrix& a) override {
+    const auto& p = a.pattern();
+    if (pattern_ != &p || nnz_ != p.nonzeros()) {
+      release();
+      void* sym = nullptr;
+      const long st = umfpack_dl_symbolic(p.rows, p.rows, p.row_ptr.data(), p.cols.data(), a.values().data(), &sym, nullptr, nullptr);
+      if (st != UMFPACK_OK) return fail("UMFPACK symbolic analysis failed (status " + std::to_string(st) + ")");
+      symbolic_ptr_ = sym;
+      pattern_ = &p;
+      nnz_ = p.nonzeros();
+      ++symbolic_;
+    }
+    if (numeric_ptr_) umfpack_dl_free_numeric(&numeric_ptr_);
+    const long st = umfpack_dl_numeric(p.row_ptr.data(), p.cols.data(), a.values().data(), symbolic_ptr_, &numeric_ptr_, nullptr, nullptr);
+    ++numeric_;
+    matrix_ = &a;
+    if (st == UMFPACK_WARNING_singular_matrix) return fail("singular matrix (UMFPACK)");
+    if (st != UMFPACK_OK) return fail("UMFPACK numeric factorisation failed (status " + std::to_string(st) + ")");
+    error_.clear();
+    return true;
+  }
+  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) override {
+    if (!numeric_ptr_ || !matrix_) return fail("solve before factorize");
+    const auto& p = matrix_->pattern();
+    x->resize(p.rows);
+    const long st = umfpack_dl_solve(UMFPACK_At, p.row_ptr.data(), p.cols.data(), matrix_->values().data(), x->data(), b.data(),
+                                    numeric_ptr_, nullptr, nullptr);
+    if (st != UMFPACK_OK) return fail("UMFPACK solve failed (status " + std::to_string(st) + ")");
+    return true;
+  }
+
+ private:
+  bool fail(const std::string& m) {
+    error_ = m;
+    return false;
+  }
+  void release() {
+    if (numeric_ptr_) umfpack_dl_free_numeric(&numeric_ptr_);
+    if (symbolic_ptr_) umfpack_dl_free_symbolic(&symbolic_ptr_);
+    numeric_ptr_ = symbolic_ptr_ = nullptr;
+    pattern_ = nullptr;
+  }
+  void* symbolic_ptr_ = nullptr;
+  void* numeric_ptr_ = nullptr;
+  const SparsePattern* pattern_ = nullptr;
+  const SparseMatrix* matrix_ = nullptr;
+  long nnz_ = -1;
+};
+
+// CHOLMOD (long-index interface) on the symmetric matrix: the CSR arrays read as CSC are A^T =
+// A; stype = 1 uses the upper triangle.
+class Cholmod final : public LinearSolver {
+ public:
+  Cholmod() {
+    cholmod_l_start(&common_);
+    common_.print = 0;
+    // Supernodal LL^T: a matrix that is not positive definite is detected (the default
+    // simplicial LDL^T would factorise an indefinite matrix silently); the caller then falls
+    // back to UMFPACK.
+    common_.supernodal = CHOLMOD_SUPERNODAL;
+  }
+  ~Cholmod() override {
+    if (factor_) cholmod_l_free_factor(&factor_, &common_);
+    cholmod_l_finish(&common_);
+  }
+  bool factorize(const SparseMatrix& a) override {
+    const auto& p = a.pattern();
+    cholmod_sparse A = view(a);
+    if (pattern_ != &p || nnz_ != p.nonzeros()) {
+      if (factor_) cholmod_l_free_factor(&factor_, &common_);
+      factor_ = cholmod_l_analyze(&A, &common_);
+      if (!factor_) return fail("CHOLMOD symbolic analysis failed");
+      pattern_ = &p;
+      nnz_ = p.nonzeros();
+      ++symbolic_;
+    }
+    const int ok = cholmod_l_factorize(&A, factor_, &common_);
+    ++numeric_;
+    n_ = p.rows;
+    if (!ok || common_.status == CHOLMOD_NOT_POSDEF) return fail("matrix not positive definite (CHOLMOD); use UMFPACK for this tangent");
+    error_.clear();
+    return true;
+  }
+  bool solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) override {
+    if (!factor_) return fail("solve before factorize");
+    cholmod_dense B;
+    B.nrow = n_;
+    B.ncol = 1;
+    B.nzmax = n_;
+    B.d = n_;
+    B.x = const_cast<double*>(b.data());
+    B.z = nullptr;
+    B.xtype = CHOLMOD_REAL;
+    B.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* X = cholmod_l_solve(CHOLMOD_A, factor_, &B, &common_);
+    if (!X) return fail("CHOLMOD solve failed");
+    x->resize(n_);
+    const double* xv = static_cast<const double*>(X->x);
+    for (long i = 0; i < n_; ++i) (*x)(i) = xv[i];
+    cholmod_l_free_dense(&X, &common_);
+    return true;
+  }
+
+ private:
+  cholmod_sparse view(const SparseMatrix& a) {
+    const auto& p = a.pattern();
+    cholmod_sparse A;
+    A.nrow = A.ncol = p.rows;
+    A.nzmax = p.nonzeros();
+    A.p = const_cast<long*>(p.row_ptr.data());
+    A.i = const_cast<long*>(p.cols.data());
+    A.nz = nullptr;
+    A.x = const_cast<double*>(a.values().data());
+    A.z = nullptr;
+    A.stype = 1;
+    A.itype = CHOLMOD_LONG;
+    A.xtype = CHOLMOD_REAL;
+    A.dtype = CHOLMOD_DOUBLE;
+    A.sorted = 1;
+    A.packed = 1;
+    return A;
+  }
+  bool fail(const std::string& m) {
+    error_ = m;
+    return false;
+  }
+  cholmod_common common_;
+  cholmod_factor* factor_ = nullptr;
+  const SparsePattern* pattern_ = nullptr;
+  long nnz_ = -1, n_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind) {
+  if (kind == LinearSolverKind::cholmod) return std::make_unique<Cholmod>();
+  return std::make_unique<Umfpack>();
+}
+
+}  // namespace spifit::solver

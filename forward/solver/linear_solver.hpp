@@ -1,0 +1,31 @@
+#pragma once
+// Direct sparse solvers from SuiteSparse (NUMERICS.md): UMFPACK for general (non-symmetric)
+// tangents — large rotations, friction — and CHOLMOD for symmetric positive definite ones.
+// The symbolic analysis (fill-reducing ordering) depends only on the pattern and is done once
+// per pattern; each factorize() redoes only the numeric factorisation. Failures are statuses
+// with a message (singular, not positive definite), never exceptions.
+#include "forward/solver/sparse_matrix.hpp"
+
+#include <memory>
+#include <string>
+
+namespace spifit::solver {
+
+class LinearSolver {
+ public:
+  virtual ~LinearSolver() = default;
+  virtual bool factorize(const SparseMatrix& a) = 0;
+  virtual bool solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) = 0;
+  const std::string& error() const { return error_; }
+  int symbolic_analyses() const { return symbolic_; }
+  int numeric_factorisations() const { return numeric_; }
+
+ protected:
+  std::string error_;
+  int symbolic_ = 0, numeric_ = 0;
+};
+
+enum class LinearSolverKind { umfpack, cholmod };
+std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind);
+
+}  // namespace spifit::solver
