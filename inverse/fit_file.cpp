@@ -200,14 +200,14 @@ FitProblem read_fit_file(const std::string& path) {
       for (double w : c.point_weights) if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
     }
     bool monotone = true;
-    const auto [lo, hi] = abscissa_range(c.scene.setup, c.x, &monotone);
+    const auto [x_lo, x_hi] = abscissa_range(c.scene.setup, c.x, &monotone);
     if (!monotone) e.fail("x", "the scene's strain reverses: use x = \"cumulative_strain\" (or \"increment\") for curves that reverse");
     for (std::size_t i = 0; i < c.xs.size(); ++i) {
       if (i > 0 && !(c.xs[i] > c.xs[i - 1]))
         throw InputError(data_path, "column " + c.x, format_number(c.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
-      if (c.xs[i] < lo - 1e-12 || c.xs[i] > hi + 1e-12)
+      if (c.xs[i] < x_lo - 1e-12 || c.xs[i] > x_hi + 1e-12)
         throw InputError(data_path, "column " + c.x, format_number(c.xs[i]),
-                         "outside the simulated range [" + format_number(lo) + ", " + format_number(hi) + "] of scene " + c.scene.name);
+                         "outside the simulated range [" + format_number(x_lo) + ", " + format_number(x_hi) + "] of scene " + c.scene.name);
     }
     fp.experiments.push_back(make_curve_experiment(std::move(c)));
   }

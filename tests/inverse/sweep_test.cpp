@@ -32,7 +32,9 @@ TEST(Sweep, BundledHillNSweep) {
       EXPECT_NEAR(s.value, 4.06 / (2.417 * r45), 2e-4);
       found = true;
     }
-    if (s.input == "swift.n" && s.metric == "r_value") EXPECT_NEAR(s.value, 0.0, 1e-9);  // r does not depend on hardening
+    if (s.input == "swift.n" && s.metric == "r_value") {
+      EXPECT_NEAR(s.value, 0.0, 1e-9);  // r does not depend on hardening
+    }
   }
   EXPECT_TRUE(found);
   // Same results with one thread.
