@@ -34,6 +34,7 @@ class CurveExperiment final : public Experiment {
   int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
   bool residuals(const material::MaterialParams<double>& m, double* r) const override { return eval(m, r, nullptr); }
   bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  ExperimentCurve axes() const override { return {s_.x, s_.y, s_.x_unit, s_.y_unit, {}, {}, {}}; }
   ExperimentCurve compare(const material::MaterialParams<double>& m) const override {
     ExperimentCurve c{s_.x, s_.y, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
     std::vector<double> sim(s_.xs.size());
@@ -98,6 +99,7 @@ class ScalarExperiment final : public Experiment {
   int num_residuals() const override { return 1; }
   bool residuals(const material::MaterialParams<double>& m, double* r) const override { return eval(m, r, nullptr); }
   bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  ExperimentCurve axes() const override { return {"", s_.observable, "", "", {}, {}, {}}; }
   ExperimentCurve compare(const material::MaterialParams<double>& m) const override {
     ExperimentCurve c{"", s_.observable, "", "", {0.0}, {s_.value}, {}};
     double r = 0.0, sim = 0.0;

@@ -39,6 +39,8 @@ class Experiment {
   virtual bool supports_jets() const { return true; }
   // Measured vs simulated at m (for reports); empty simulated values if the run failed.
   virtual ExperimentCurve compare(const material::MaterialParams<double>& m) const = 0;
+  // Names and units of the compared quantities, without running anything.
+  virtual ExperimentCurve axes() const = 0;
 
  protected:
   std::string name_, kind_;

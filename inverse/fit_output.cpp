@@ -89,7 +89,7 @@ json fit_result_json(const FitProblem& fp, const FitResult& r) {
   json ex = json::array();
   for (std::size_t i = 0; i < r.experiment_costs.size(); ++i) {
     const auto& e = r.experiment_costs[i];
-    const auto c = fp.experiments[i]->compare(r.card.params);
+    const auto c = fp.experiments[i]->axes();
     ex.push_back({{"name", e.name}, {"kind", e.kind}, {"points", e.points}, {"cost", e.cost}, {"rms", e.rms},
                   {"scale", fp.experiments[i]->scale()}, {"noise_given", fp.experiments[i]->noise_given()}, {"weight", fp.experiments[i]->weight()},
                   {"x", c.x_name}, {"y", c.y_name}, {"x_unit", c.x_unit}, {"y_unit", c.y_unit},

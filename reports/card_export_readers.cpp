@@ -1,5 +1,7 @@
 #include "reports/card_export_readers.hpp"
 
+#include "forward/io/input_error.hpp"
+
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -10,12 +12,7 @@ namespace spifit::reports {
 
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r\n");
-  if (b == std::string::npos) return "";
-  const auto e = s.find_last_not_of(" \t\r\n");
-  return s.substr(b, e - b + 1);
-}
+using io::trim;
 
 std::string upper(std::string s) {
   for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));

@@ -40,6 +40,13 @@ std::string one_line(const std::string& text, std::size_t max_chars) {
   return out;
 }
 
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t\r\n");
+  if (b == std::string::npos) return "";
+  const auto e = s.find_last_not_of(" \t\r\n");
+  return s.substr(b, e - b + 1);
+}
+
 std::string format_number(double v) {
   // Shortest text that reads back to the same double; plain decimals for everyday magnitudes.
   char buf[64];

@@ -21,6 +21,8 @@ class InputError : public std::runtime_error {
 
 // Collapses a (possibly multi-line) text to one line of at most max_chars characters.
 std::string one_line(const std::string& text, std::size_t max_chars = 200);
+// The text without leading and trailing blanks (spaces, tabs, CR, LF).
+std::string trim(const std::string& text);
 // Shortest round-trip text for a number, as written in an error message.
 std::string format_number(double v);
 

@@ -28,6 +28,7 @@ class BlackBox final : public inverse::Experiment {
   bool residuals(const material::MaterialParams<inverse::Jet>&, inverse::Jet*) const override { return false; }
   bool supports_jets() const override { return false; }
   inverse::ExperimentCurve compare(const material::MaterialParams<double>& m) const override { return inner_->compare(m); }
+  inverse::ExperimentCurve axes() const override { return inner_->axes(); }
   double max_k() const { return max_k_; }
 
  private:

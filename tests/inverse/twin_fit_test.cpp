@@ -143,6 +143,7 @@ class FailingOnce final : public inverse::Experiment {
   }
   bool residuals(const material::MaterialParams<inverse::Jet>& m, inverse::Jet* r) const override { return inner_->residuals(m, r); }
   inverse::ExperimentCurve compare(const material::MaterialParams<double>& m) const override { return inner_->compare(m); }
+  inverse::ExperimentCurve axes() const override { return inner_->axes(); }
   int failures() const { return failures_; }
 
  private:
