@@ -251,3 +251,32 @@ TEST(Cli, MaterialExport) {
   EXPECT_EQ(b.code, 2);
   EXPECT_NE(b.err.find("--format = nastran"), std::string::npos) << b.err;
 }
+
+// spifit synth: the file says it is synthetic and how it was made; the same seed gives the
+// same numbers, another seed different ones; an existing file is kept without --force.
+TEST(Cli, SynthIsLabelledAndReproducible) {
+  const fs::path a = fs::temp_directory_path() / ("spifit_synth_a_" + std::to_string(::getpid()) + ".csv");
+  const fs::path b = fs::temp_directory_path() / ("spifit_synth_b_" + std::to_string(::getpid()) + ".csv");
+  const fs::path c = fs::temp_directory_path() / ("spifit_synth_c_" + std::to_string(::getpid()) + ".csv");
+  const std::string scene = src("experiments/aa3003o/scenes/tensile_00.toml");
+  ASSERT_EQ(run("synth " + scene + " --noise 0.5 --seed 7 --every 4 --out " + a.string()).code, 0);
+  ASSERT_EQ(run("synth " + scene + " --noise 0.5 --seed 7 --every 4 --out " + b.string()).code, 0);
+  ASSERT_EQ(run("synth " + scene + " --noise 0.5 --seed 8 --every 4 --out " + c.string()).code, 0);
+  auto read = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  const std::string ta = read(a), tb = read(b), tc = read(c);
+  EXPECT_EQ(ta.rfind("# SYNTHETIC DATA", 0), 0u);
+  EXPECT_NE(ta.find("seed 7"), std::string::npos);
+  EXPECT_NE(ta.find("# command: spifit synth"), std::string::npos);
+  EXPECT_NE(ta.find("strain [-],stress [MPa]"), std::string::npos);
+  auto body = [](const std::string& t) { return t.substr(t.find("strain [-]")); };
+  EXPECT_EQ(body(ta), body(tb));
+  EXPECT_NE(body(ta), body(tc));
+  EXPECT_EQ(run("synth " + scene + " --out " + a.string()).code, 2);
+  EXPECT_EQ(read(a), ta);
+  for (const auto& p : {a, b, c}) fs::remove(p);
+}
