@@ -1,0 +1,224 @@
+#include "forward/element/shell_q4.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace spifit::element {
+namespace {
+
+constexpr double kNodeXi[4] = {-1.0, 1.0, 1.0, -1.0};
+constexpr double kNodeEta[4] = {-1.0, -1.0, 1.0, 1.0};
+
+Eigen::Vector4d shape(double xi, double eta) {
+  Eigen::Vector4d n;
+  for (int i = 0; i < 4; ++i) n(i) = 0.25 * (1.0 + kNodeXi[i] * xi) * (1.0 + kNodeEta[i] * eta);
+  return n;
+}
+
+Eigen::Matrix<double, 2, 4> shape_derivatives(double xi, double eta) {
+  Eigen::Matrix<double, 2, 4> d;
+  for (int i = 0; i < 4; ++i) {
+    d(0, i) = 0.25 * kNodeXi[i] * (1.0 + kNodeEta[i] * eta);
+    d(1, i) = 0.25 * kNodeEta[i] * (1.0 + kNodeXi[i] * xi);
+  }
+  return d;
+}
+
+Eigen::Vector3d combine(const Eigen::Ref<const Eigen::Vector4d>& w, const NodeVectors& v) {
+  return w(0) * v[0] + w(1) * v[1] + w(2) * v[2] + w(3) * v[3];
+}
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d s;
+  s << 0.0, -v(2), v(1), v(2), 0.0, -v(0), -v(1), v(0), 0.0;
+  return s;
+}
+
+// Tying points of the MITC4 transverse shear: B (0,-1) and D (0,1) carry gamma_xi,
+// A (-1,0) and C (1,0) carry gamma_eta.
+constexpr double kTieXi[4] = {0.0, 0.0, -1.0, 1.0};
+constexpr double kTieEta[4] = {-1.0, 1.0, 0.0, 0.0};
+constexpr int kTieDir[4] = {0, 0, 1, 1};
+
+}  // namespace
+
+ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, const ShellSection::Law& law,
+                 const ThicknessRule& rule, const ShellOptions& options)
+    : options_(options), h0_(thickness) {
+  if (!(thickness > 0.0)) throw std::invalid_argument("shell thickness must be > 0");
+  const auto& p = law.params();
+  shear_modulus_ = p.E / (2.0 * (1.0 + p.nu));
+  const double g = 1.0 / std::sqrt(3.0);
+  const double gxi[4] = {-g, g, g, -g}, geta[4] = {-g, -g, g, g};
+  for (int q = 0; q < 4; ++q) {
+    PointGeometry& pg = points_[static_cast<std::size_t>(q)];
+    pg.xi = gxi[q];
+    pg.eta = geta[q];
+    const Eigen::Matrix<double, 2, 4> dn = shape_derivatives(pg.xi, pg.eta);
+    const Eigen::Vector3d a0 = combine(dn.row(0).transpose(), X), a1 = combine(dn.row(1).transpose(), X);
+    const Eigen::Vector3d normal = a0.cross(a1);
+    if (!(normal.norm() > 1e-14 * a0.squaredNorm())) throw std::invalid_argument("degenerate shell element (zero area)");
+    const Eigen::Vector3d n0 = normal.normalized();
+    Eigen::Vector3d e1 = options.material_axis - options.material_axis.dot(n0) * n0;
+    if (e1.norm() < 0.1) e1 = a0 - a0.dot(n0) * n0;  // rolling direction almost normal to the shell
+    e1.normalize();
+    const Eigen::Vector3d e2 = n0.cross(e1);
+    Eigen::Matrix2d J;
+    J << a0.dot(e1), a0.dot(e2), a1.dot(e1), a1.dot(e2);
+    const double det = J.determinant();
+    if (!(det > 0.0)) throw std::invalid_argument("shell element with non-positive area Jacobian");
+    pg.K = J.inverse();
+    pg.dN = pg.K * dn;
+    pg.weight = det;
+    area_ += det;
+    pg.F0ref = combine(pg.dN.row(0).transpose(), X);
+    pg.F1ref = combine(pg.dN.row(1).transpose(), X);
+    const Eigen::Vector3d dd0 = combine(pg.dN.row(0).transpose(), D), dd1 = combine(pg.dN.row(1).transpose(), D);
+    pg.kappa_ref << pg.F0ref.dot(dd0), pg.F1ref.dot(dd1), pg.F0ref.dot(dd1) + pg.F1ref.dot(dd0);
+  }
+  for (int t = 0; t < 4; ++t) {
+    TyingPoint& tp = tying_[static_cast<std::size_t>(t)];
+    tp.N = shape(kTieXi[t], kTieEta[t]);
+    tp.dN = shape_derivatives(kTieXi[t], kTieEta[t]).row(kTieDir[t]).transpose();
+    tp.gamma_ref = combine(tp.dN, X).dot(combine(tp.N, D));
+  }
+  sections_.assign(4, ShellSection(law, rule, thickness));
+}
+
+double ShellQ4::reference_area() const { return area_; }
+
+ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent) {
+  ElementStatus status;
+  Vec24 rp = Vec24::Zero();  // derivative with respect to p = (x_I, d_I) per node
+  Mat24 kp;
+  if (tangent) kp.setZero();
+  const double ks = options_.shear_factor * shear_modulus_ * h0_;
+
+  // Tying-point shear strains and their derivatives (shared by the four Gauss points).
+  std::array<double, 4> gamma_t{};
+  std::array<Eigen::Vector3d, 4> a_t, d_t;
+  for (std::size_t t = 0; t < 4; ++t) {
+    a_t[t] = combine(tying_[t].dN, x);
+    d_t[t] = combine(tying_[t].N, d);
+    gamma_t[t] = a_t[t].dot(d_t[t]) - tying_[t].gamma_ref;
+  }
+
+  for (std::size_t q = 0; q < 4; ++q) {
+    const PointGeometry& pg = points_[q];
+    const Eigen::Vector3d f0 = combine(pg.dN.row(0).transpose(), x), f1 = combine(pg.dN.row(1).transpose(), x);
+    const Eigen::Vector3d dd0 = combine(pg.dN.row(0).transpose(), d), dd1 = combine(pg.dN.row(1).transpose(), d);
+    Vec3 e, kappa;
+    e << 0.5 * (f0.squaredNorm() - pg.F0ref.squaredNorm()), 0.5 * (f1.squaredNorm() - pg.F1ref.squaredNorm()),
+        f0.dot(f1) - pg.F0ref.dot(pg.F1ref);
+    kappa << f0.dot(dd0), f1.dot(dd1), f0.dot(dd1) + f1.dot(dd0);
+    kappa -= pg.kappa_ref;
+    // Interpolation weights of the tying points at this Gauss point.
+    const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
+    const Eigen::Vector2d gamma_nat(c[0] * gamma_t[0] + c[1] * gamma_t[1], c[2] * gamma_t[2] + c[3] * gamma_t[3]);
+    const Eigen::Vector2d gamma = pg.K * gamma_nat;
+
+    Vec6 s6;
+    Mat6 d6;
+    const SectionStatus ss = sections_[q].update(e, kappa, &s6, tangent ? &d6 : nullptr);
+    if (!ss.ok) {
+      status.ok = false;
+      status.point = static_cast<int>(q);
+      status.layer = ss.layer;
+      status.reason = ss.reason;
+      status.suggested_scale = ss.suggested_scale;
+      return status;
+    }
+    const Eigen::Vector2d Q = ks * gamma;
+
+    // B = d(e, kappa, gamma)/dp, 8 x 24.
+    Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
+    Eigen::Matrix<double, 2, 24> Bnat = Eigen::Matrix<double, 2, 24>::Zero();
+    for (int I = 0; I < 4; ++I) {
+      const double n0 = pg.dN(0, I), n1 = pg.dN(1, I);
+      const int cx = 6 * I, cd = 6 * I + 3;
+      B.block<1, 3>(0, cx) = n0 * f0.transpose();
+      B.block<1, 3>(1, cx) = n1 * f1.transpose();
+      B.block<1, 3>(2, cx) = (n0 * f1 + n1 * f0).transpose();
+      B.block<1, 3>(3, cx) = n0 * dd0.transpose();
+      B.block<1, 3>(4, cx) = n1 * dd1.transpose();
+      B.block<1, 3>(5, cx) = (n0 * dd1 + n1 * dd0).transpose();
+      B.block<1, 3>(3, cd) = n0 * f0.transpose();
+      B.block<1, 3>(4, cd) = n1 * f1.transpose();
+      B.block<1, 3>(5, cd) = (n1 * f0 + n0 * f1).transpose();
+      for (std::size_t t = 0; t < 4; ++t) {
+        const int row = kTieDir[t];
+        Bnat.block<1, 3>(row, cx) += c[t] * tying_[t].dN(I) * d_t[t].transpose();
+        Bnat.block<1, 3>(row, cd) += c[t] * tying_[t].N(I) * a_t[t].transpose();
+      }
+    }
+    B.bottomRows<2>() = pg.K * Bnat;
+
+    rp.noalias() += pg.weight * (B.topRows<6>().transpose() * s6 + B.bottomRows<2>().transpose() * Q);
+    if (tangent) {
+      Eigen::Matrix<double, 8, 8> dsec = Eigen::Matrix<double, 8, 8>::Zero();
+      dsec.topLeftCorner<6, 6>() = d6;
+      dsec(6, 6) = dsec(7, 7) = ks;
+      kp.noalias() += pg.weight * (B.transpose() * (dsec * B));
+      // Geometric terms: second derivatives of e, kappa and gamma are (scalar) x identity.
+      const Eigen::Vector2d qn = pg.K.transpose() * Q;  // Q . gamma = qn . gamma_nat
+      for (int I = 0; I < 4; ++I) {
+        for (int Jn = 0; Jn < 4; ++Jn) {
+          const double a0 = pg.dN(0, I) * pg.dN(0, Jn), a1 = pg.dN(1, I) * pg.dN(1, Jn);
+          const double a2 = pg.dN(0, I) * pg.dN(1, Jn) + pg.dN(1, I) * pg.dN(0, Jn);
+          const double gxx = s6(0) * a0 + s6(1) * a1 + s6(2) * a2;
+          double gxd = s6(3) * a0 + s6(4) * a1 + s6(5) * a2;
+          for (std::size_t t = 0; t < 4; ++t) gxd += qn(kTieDir[t]) * c[t] * tying_[t].dN(I) * tying_[t].N(Jn);
+          for (int k = 0; k < 3; ++k) {
+            kp(6 * I + k, 6 * Jn + k) += pg.weight * gxx;
+            kp(6 * I + k, 6 * Jn + 3 + k) += pg.weight * gxd;
+            kp(6 * Jn + 3 + k, 6 * I + k) += pg.weight * gxd;
+          }
+        }
+      }
+    }
+  }
+
+  // From p = (x_I, d_I) to the DOFs u = (u_I, psi_I): dd_I = dpsi_I x d_I = -skew(d_I) dpsi_I.
+  Vec24 ru = rp;
+  for (int I = 0; I < 4; ++I) ru.segment<3>(6 * I + 3) = d[static_cast<std::size_t>(I)].cross(rp.segment<3>(6 * I + 3));
+  if (!ru.allFinite()) {
+    status.ok = false;
+    status.reason = "non-finite element forces";
+    status.suggested_scale = 0.25;
+    return status;
+  }
+  if (residual) *residual = ru;
+  if (tangent) {
+    Mat24 T = Mat24::Identity();
+    for (int I = 0; I < 4; ++I) T.block<3, 3>(6 * I + 3, 6 * I + 3) = -skew(d[static_cast<std::size_t>(I)]);
+    Mat24 ku = T.transpose() * kp * T;
+    double rot_trace = 0.0, trans_trace = 0.0;
+    for (int I = 0; I < 4; ++I) {
+      rot_trace += ku.block<3, 3>(6 * I + 3, 6 * I + 3).trace();
+      trans_trace += ku.block<3, 3>(6 * I, 6 * I).trace();
+    }
+    const double k_drill = options_.drilling_factor * (rot_trace > 0.0 ? rot_trace / 12.0 : trans_trace / 12.0 * area_);
+    for (int I = 0; I < 4; ++I) {
+      const Eigen::Vector3d& dI = d[static_cast<std::size_t>(I)];
+      const Eigen::Vector3d r = rp.segment<3>(6 * I + 3);
+      Eigen::Matrix3d g = dI * r.transpose() - dI.dot(r) * Eigen::Matrix3d::Identity();
+      if (options_.symmetric_rotation_tangent) g = 0.5 * (g + g.transpose()).eval();
+      ku.block<3, 3>(6 * I + 3, 6 * I + 3) += g + k_drill * dI * dI.transpose();
+    }
+    *tangent = ku;
+  }
+  return status;
+}
+
+void ShellQ4::commit() {
+  for (auto& s : sections_) s.commit();
+}
+
+void ShellQ4::revert() {
+  for (auto& s : sections_) s.revert();
+}
+
+}  // namespace spifit::element

@@ -1,0 +1,90 @@
+#pragma once
+// ShellQ4: 4-node elastoplastic shell for large rotations and large membrane strains
+// (NUMERICS.md "Shell element"; theory and references in docs/numerics-shell.md).
+//
+//  * Degenerated-solid kinematics with a unit director per node: the point (xi, eta, zeta)
+//    sits at x = sum N_I (x_I + zeta h/2 d_I). Total Lagrangian: strains are measured from
+//    the initial configuration in a material frame attached to it (e1 = projection of the
+//    rolling direction on the mid-surface), so the stress update is objective and the
+//    orthotropy axes follow the material.
+//  * Membrane e and bending kappa: Green-Lagrange strains linear in the thickness
+//    coordinate; each of the 2x2 Gauss points carries a ShellSection (1..11 layers,
+//    logarithmic-strain plasticity in plane stress).
+//  * Transverse shear: MITC4 assumed strains (Dvorkin & Bathe 1984), tied at the mid-edges;
+//    elastic, k G h0 with k = 5/6. No shear locking, no spurious modes.
+//  * Six DOFs per node: three translations and three rotation increments about the global
+//    axes; the director is updated by the exact rotation d <- R(dpsi) d (Rodrigues). The
+//    drilling rotation (about d) does not move the director; it gets a small stiffness in
+//    the tangent only (drilling_factor), which never changes the converged solution.
+//  * The tangent is the exact derivative of the residual (material, geometric and
+//    rotational parts), which is non-symmetric away from equilibrium; with
+//    symmetric_rotation_tangent the rotational part is symmetrised (for CHOLMOD), still
+//    exact at equilibrium.
+#include "forward/element/shell_section.hpp"
+
+#include <Eigen/Core>
+
+#include <array>
+
+namespace spifit::element {
+
+struct ShellOptions {
+  int thickness_points = 5;
+  double shear_factor = 5.0 / 6.0;
+  double drilling_factor = 1e-4;           // x mean rotational stiffness of the element
+  bool symmetric_rotation_tangent = false;
+  Eigen::Vector3d material_axis = Eigen::Vector3d::UnitX();  // rolling direction
+};
+
+using Vec24 = Eigen::Matrix<double, 24, 1>;
+using Mat24 = Eigen::Matrix<double, 24, 24>;
+using NodeVectors = std::array<Eigen::Vector3d, 4>;
+
+struct ElementStatus {
+  bool ok = true;
+  int point = -1, layer = -1;  // in-plane Gauss point 0..3, layer from the bottom
+  std::string reason;
+  double suggested_scale = 1.0;
+};
+
+class ShellQ4 {
+ public:
+  // X: reference nodes; D: reference unit directors (nodal normals); thickness h0.
+  ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, const ShellSection::Law& law,
+          const ThicknessRule& rule, const ShellOptions& options);
+
+  // Residual (internal forces and moments, 6 per node: Fx Fy Fz Mx My Mz) and tangent at the
+  // current nodes x and directors d. The layers' trial states are updated from the
+  // committed ones.
+  ElementStatus compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent);
+  void commit();
+  void revert();
+
+  double reference_area() const;
+  const ShellSection& section(int point) const { return sections_[static_cast<std::size_t>(point)]; }
+  static constexpr int kPoints = 4;
+
+ private:
+  struct PointGeometry {
+    Eigen::Matrix<double, 2, 4> dN;  // Cartesian shape derivatives in the material frame
+    Eigen::Matrix2d K;               // d xi_alpha / d y_a (row a, column alpha)
+    double weight = 0.0;             // Gauss weight x area Jacobian
+    double xi = 0.0, eta = 0.0;
+    Eigen::Vector3d F0ref, F1ref;    // reference tangents (the frame vectors)
+    Eigen::Vector3d kappa_ref;       // reference "curvature" terms (engineering)
+  };
+  struct TyingPoint {
+    Eigen::Vector4d N;      // shape functions at the tying point
+    Eigen::Vector4d dN;     // natural derivative along its direction (xi for B/D, eta for A/C)
+    double gamma_ref = 0.0; // a_alpha . d in the reference configuration
+  };
+  ShellOptions options_;
+  double h0_;
+  double shear_modulus_;
+  std::array<PointGeometry, 4> points_;
+  std::array<TyingPoint, 4> tying_;  // B (0,-1), D (0,1) for gamma_xi; A (-1,0), C (1,0) for gamma_eta
+  std::vector<ShellSection> sections_;
+  double area_ = 0.0;
+};
+
+}  // namespace spifit::element

@@ -1,0 +1,81 @@
+#include "forward/element/shell_section.hpp"
+
+#include "forward/element/log_strain.hpp"
+
+#include <cmath>
+
+namespace spifit::element {
+
+ShellSection::ShellSection(const Law& law, const ThicknessRule& rule, double thickness0)
+    : rule_(&rule), h0_(thickness0), h_(thickness0),
+      points_(rule.zeta.size(), material::MaterialPoint<double, 3>(law)),
+      eps_(rule.zeta.size(), Vec3::Zero()), eps_trial_(rule.zeta.size(), Vec3::Zero()) {}
+
+SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resultant, Mat6* tangent) {
+  SectionStatus status;
+  e_trial_ = e;
+  if (resultant) resultant->setZero();
+  if (tangent) tangent->setZero();
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    const double z = rule_->zeta[l] * 0.5 * h_;
+    const double w = rule_->weight[l] * 0.5 * h0_;
+    const Vec3 green = e + z * kappa;
+    const double c11 = 1.0 + 2.0 * green(0), c22 = 1.0 + 2.0 * green(1);
+    const double det = c11 * c22 - green(2) * green(2);
+    if (!(det > 1e-12 && c11 > 0.0 && c22 > 0.0)) {
+      status.ok = false;
+      status.layer = static_cast<int>(l);
+      status.reason = std::isfinite(det) ? "layer stretched to a non-positive metric (det C = " + std::to_string(det) + ")"
+                                         : "non-finite strain";
+      status.suggested_scale = 0.25;
+      return status;
+    }
+    const LogStrain ls = log_strain_with_derivatives(green);
+    eps_trial_[l] = ls.value;
+    Eigen::Matrix3d ct;
+    const material::UpdateResult r = points_[l].update(ls.value - eps_[l], tangent ? &ct : nullptr);
+    if (!r.ok()) {
+      status.ok = false;
+      status.layer = static_cast<int>(l);
+      status.reason = r.reason;
+      status.suggested_scale = r.suggested_scale;
+      return status;
+    }
+    const Vec3& t = points_[l].trial().stress;
+    const Vec3 s = ls.first.transpose() * t;
+    if (resultant) {
+      resultant->head<3>() += w * s;
+      resultant->tail<3>() += (w * z) * s;
+    }
+    if (tangent) {
+      Eigen::Matrix3d ds = ls.first.transpose() * ct * ls.first;
+      for (int i = 0; i < 3; ++i) ds += t(i) * ls.second[static_cast<std::size_t>(i)];
+      tangent->topLeftCorner<3, 3>() += w * ds;
+      tangent->topRightCorner<3, 3>() += (w * z) * ds;
+      tangent->bottomLeftCorner<3, 3>() += (w * z) * ds;
+      tangent->bottomRightCorner<3, 3>() += (w * z * z) * ds;
+    }
+  }
+  return status;
+}
+
+void ShellSection::commit() {
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    points_[l].commit();
+    eps_[l] = eps_trial_[l];
+  }
+  e_committed_ = e_trial_;
+  const double c11 = 1.0 + 2.0 * e_trial_(0), c22 = 1.0 + 2.0 * e_trial_(1);
+  const double det = c11 * c22 - e_trial_(2) * e_trial_(2);
+  h_ = h0_ / std::sqrt(det);
+}
+
+void ShellSection::revert() {
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    points_[l].revert();
+    eps_trial_[l] = eps_[l];
+  }
+  e_trial_ = e_committed_;
+}
+
+}  // namespace spifit::element

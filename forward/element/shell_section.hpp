@@ -1,0 +1,61 @@
+#pragma once
+// Through-thickness integration of one shell integration point (docs/numerics-shell.md).
+//
+// The layer at zeta in [-1, 1] has the in-plane Green-Lagrange strain E(zeta) = e + z kappa
+// (material frame, engineering shear), z = zeta h / 2 with h the thickness at the start of
+// the increment. Each layer is a plane-stress material point working in logarithmic strain
+// space: eps = ln(I + 2E) / 2, Kirchhoff-like stress T conjugate to eps from the return
+// mapping, and S = (d eps/dE)^T T conjugate to E. Resultants per unit reference area
+// (Total Lagrangian, reference thickness h0):
+//   N = sum_l w_l h0/2 S_l,  M = sum_l w_l h0/2 z_l S_l.
+// The section tangent contains the consistent material tangent and the second derivative of
+// the logarithm. After a converged increment the thickness is updated at constant volume,
+// h = h0 / sqrt(det(I + 2e)) (thesis §9.2.2).
+#include "forward/element/thickness_rule.hpp"
+#include "forward/material/material_point.hpp"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace spifit::element {
+
+using Vec3 = Eigen::Vector3d;
+using Vec6 = Eigen::Matrix<double, 6, 1>;
+using Mat6 = Eigen::Matrix<double, 6, 6>;
+
+struct SectionStatus {
+  bool ok = true;
+  int layer = -1;                // failing layer (bottom = 0)
+  std::string reason;
+  double suggested_scale = 1.0;  // < 1: retry the increment with this fraction
+};
+
+class ShellSection {
+ public:
+  using Law = material::ReturnMapping<double, 3>;
+
+  ShellSection(const Law& law, const ThicknessRule& rule, double thickness0);
+
+  // Trial update from the committed state. resultant = (N, M); tangent = d(N, M)/d(e, kappa).
+  SectionStatus update(const Vec3& e, const Vec3& kappa, Vec6* resultant, Mat6* tangent);
+  void commit();
+  void revert();
+
+  double reference_thickness() const { return h0_; }
+  double thickness() const { return h_; }  // committed, constant-volume
+  int layers() const { return static_cast<int>(points_.size()); }
+  const material::MaterialState<double, 3>& layer_state(int l) const { return points_[static_cast<std::size_t>(l)].committed(); }
+  const Vec3& layer_log_strain(int l) const { return eps_[static_cast<std::size_t>(l)]; }
+  const Vec3& membrane_green_strain() const { return e_committed_; }
+
+ private:
+  const ThicknessRule* rule_;
+  double h0_, h_;
+  std::vector<material::MaterialPoint<double, 3>> points_;
+  std::vector<Vec3> eps_, eps_trial_;  // layer log strains (committed, trial)
+  Vec3 e_committed_ = Vec3::Zero(), e_trial_ = Vec3::Zero();
+};
+
+}  // namespace spifit::element

@@ -1,0 +1,84 @@
+#include "forward/element/log_strain.hpp"
+#include "forward/element/thickness_rule.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace spifit::element {
+namespace {
+
+// ln(C)/2 from the eigen-decomposition (reference for the closed form).
+Eigen::Vector3d log_strain_by_eigen(const Eigen::Vector3d& g) {
+  Eigen::Matrix2d c;
+  c << 1.0 + 2.0 * g(0), g(2), g(2), 1.0 + 2.0 * g(1);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(c);
+  const Eigen::Matrix2d l = es.eigenvectors() * es.eigenvalues().array().log().matrix().asDiagonal() *
+                            es.eigenvectors().transpose() * 0.5;
+  return {l(0, 0), l(1, 1), 2.0 * l(0, 1)};
+}
+
+TEST(LogStrain, MatchesEigenDecompositionFromSmallToFourHundredPercent) {
+  const Eigen::Vector3d cases[] = {{1e-9, -2e-9, 3e-9}, {0.01, 0.01, 0.0}, {0.01, 0.0101, 1e-4},
+                                   {4.2, -0.1, 0.3},    {-0.3, 0.5, -0.4}, {2.0, 2.0, 0.0}};
+  for (const auto& g : cases) {
+    const Eigen::Vector3d a = log_strain_of_green(g), b = log_strain_by_eigen(g);
+    EXPECT_LT((a - b).norm(), 1e-14 * (1.0 + b.norm())) << g.transpose();
+  }
+  // Uniaxial stretch 3.07 (thesis: 420 % Green radial strain) is log strain 1.12.
+  const double lambda = 3.07;
+  EXPECT_NEAR(log_strain_of_green(Eigen::Vector3d(0.5 * (lambda * lambda - 1.0), 0.0, 0.0))(0), std::log(lambda), 1e-14);
+}
+
+TEST(LogStrain, DerivativesMatchCentralDifferences) {
+  const Eigen::Vector3d points[] = {{0.0, 0.0, 0.0}, {0.02, 0.0199, 1e-5}, {1.5, -0.2, 0.4}, {0.1, 0.3, -0.25}};
+  for (const auto& g : points) {
+    const LogStrain ls = log_strain_with_derivatives(g);
+    EXPECT_LT((ls.value - log_strain_by_eigen(g)).norm(), 1e-13);
+    const double h = 1e-6;
+    for (int j = 0; j < 3; ++j) {
+      Eigen::Vector3d gp = g, gm = g;
+      gp(j) += h;
+      gm(j) -= h;
+      const Eigen::Vector3d fd = (log_strain_of_green(gp) - log_strain_of_green(gm)) / (2.0 * h);
+      EXPECT_LT((fd - ls.first.col(j)).norm(), 1e-8) << "first derivative, column " << j << " at " << g.transpose();
+      const LogStrain lp = log_strain_with_derivatives(gp), lm = log_strain_with_derivatives(gm);
+      for (int i = 0; i < 3; ++i) {
+        const Eigen::Vector3d fd2 = (lp.first.row(i) - lm.first.row(i)).transpose() / (2.0 * h);
+        EXPECT_LT((fd2 - ls.second[static_cast<std::size_t>(i)].col(j)).norm(), 1e-6)
+            << "second derivative " << i << "," << j << " at " << g.transpose();
+      }
+    }
+  }
+}
+
+TEST(ThicknessRule, GaussLegendreIsExactToDegreeTwoNMinusOne) {
+  for (int n = 1; n <= 11; ++n) {
+    const ThicknessRule r = gauss_legendre_rule(n);
+    for (int degree = 0; degree <= 2 * n - 1; ++degree) {
+      double s = 0.0;
+      for (std::size_t i = 0; i < r.zeta.size(); ++i) s += r.weight[i] * std::pow(r.zeta[i], degree);
+      const double exact = degree % 2 == 1 ? 0.0 : 2.0 / (degree + 1.0);
+      EXPECT_NEAR(s, exact, 1e-14) << n << " points, degree " << degree;
+    }
+  }
+  EXPECT_THROW(gauss_legendre_rule(0), std::invalid_argument);
+  EXPECT_THROW(gauss_legendre_rule(12), std::invalid_argument);
+}
+
+TEST(ThicknessRule, FullyPlasticMomentIsUnderIntegrated) {
+  // integral of |zeta| over [-1, 1] is 1: the plastic moment in units of sigma_y h^2 / 4.
+  auto plastic = [](int n) {
+    const ThicknessRule r = gauss_legendre_rule(n);
+    double s = 0.0;
+    for (std::size_t i = 0; i < r.zeta.size(); ++i) s += r.weight[i] * std::abs(r.zeta[i]);
+    return s;
+  };
+  EXPECT_NEAR(plastic(5), 0.944850, 1e-6);  // NUMERICS.md: 5 points miss ~5 %
+  EXPECT_NEAR(plastic(11), 0.987523, 1e-6);  // still 1.25 % short
+}
+
+}  // namespace
+}  // namespace spifit::element
