@@ -53,19 +53,22 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   shear_modulus_ = p.E / (2.0 * (1.0 + p.nu));
   const double g = 1.0 / std::sqrt(3.0);
   const double gxi[4] = {-g, g, g, -g}, geta[4] = {-g, -g, g, g};
-  for (int q = 0; q < 4; ++q) {
-    PointGeometry& pg = points_[static_cast<std::size_t>(q)];
-    pg.xi = gxi[q];
-    pg.eta = geta[q];
+  // Element frame: e1 along the xi direction at the centre, projected on the tangent plane.
+  const Eigen::Vector3d a0_centre = combine(shape_derivatives(0.0, 0.0).row(0).transpose(), X);
+  const auto setup = [&](PointGeometry& pg) {
     const Eigen::Matrix<double, 2, 4> dn = shape_derivatives(pg.xi, pg.eta);
     const Eigen::Vector3d a0 = combine(dn.row(0).transpose(), X), a1 = combine(dn.row(1).transpose(), X);
     const Eigen::Vector3d normal = a0.cross(a1);
     if (!(normal.norm() > 1e-14 * a0.squaredNorm())) throw std::invalid_argument("degenerate shell element (zero area)");
     const Eigen::Vector3d n0 = normal.normalized();
-    Eigen::Vector3d e1 = options.material_axis - options.material_axis.dot(n0) * n0;
-    if (e1.norm() < 0.1) e1 = a0 - a0.dot(n0) * n0;  // rolling direction almost normal to the shell
-    e1.normalize();
+    const Eigen::Vector3d e1 = (a0_centre - a0_centre.dot(n0) * n0).normalized();
     const Eigen::Vector3d e2 = n0.cross(e1);
+    // Material frame m1 = rolling direction projected on the tangent plane.
+    Eigen::Vector3d m1 = options.material_axis - options.material_axis.dot(n0) * n0;
+    if (m1.norm() < 0.1) m1 = e1;  // rolling direction almost normal to the shell
+    m1.normalize();
+    const double c = m1.dot(e1), s = m1.dot(e2);
+    pg.Q << c * c, s * s, c * s, s * s, c * c, -c * s, -2.0 * c * s, 2.0 * c * s, c * c - s * s;
     Eigen::Matrix2d J;
     J << a0.dot(e1), a0.dot(e2), a1.dot(e1), a1.dot(e2);
     const double det = J.determinant();
@@ -73,12 +76,19 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
     pg.K = J.inverse();
     pg.dN = pg.K * dn;
     pg.weight = det;
-    area_ += det;
     pg.F0ref = combine(pg.dN.row(0).transpose(), X);
     pg.F1ref = combine(pg.dN.row(1).transpose(), X);
     const Eigen::Vector3d dd0 = combine(pg.dN.row(0).transpose(), D), dd1 = combine(pg.dN.row(1).transpose(), D);
     pg.kappa_ref << pg.F0ref.dot(dd0), pg.F1ref.dot(dd1), pg.F0ref.dot(dd1) + pg.F1ref.dot(dd0);
+  };
+  for (int q = 0; q < 4; ++q) {
+    PointGeometry& pg = points_[static_cast<std::size_t>(q)];
+    pg.xi = gxi[q];
+    pg.eta = geta[q];
+    setup(pg);
+    area_ += pg.weight;
   }
+  setup(centre_);
   for (int t = 0; t < 4; ++t) {
     TyingPoint& tp = tying_[static_cast<std::size_t>(t)];
     tp.N = shape(kTieXi[t], kTieEta[t]);
@@ -110,9 +120,13 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     const PointGeometry& pg = points_[q];
     const Eigen::Vector3d f0 = combine(pg.dN.row(0).transpose(), x), f1 = combine(pg.dN.row(1).transpose(), x);
     const Eigen::Vector3d dd0 = combine(pg.dN.row(0).transpose(), d), dd1 = combine(pg.dN.row(1).transpose(), d);
+    // In-plane shear from the centre (or from this point).
+    const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
+    const Eigen::Vector3d g0 = options_.centre_membrane_shear ? combine(ps.dN.row(0).transpose(), x) : f0;
+    const Eigen::Vector3d g1 = options_.centre_membrane_shear ? combine(ps.dN.row(1).transpose(), x) : f1;
     Vec3 e, kappa;
     e << 0.5 * (f0.squaredNorm() - pg.F0ref.squaredNorm()), 0.5 * (f1.squaredNorm() - pg.F1ref.squaredNorm()),
-        f0.dot(f1) - pg.F0ref.dot(pg.F1ref);
+        g0.dot(g1) - ps.F0ref.dot(ps.F1ref);
     kappa << f0.dot(dd0), f1.dot(dd1), f0.dot(dd1) + f1.dot(dd0);
     kappa -= pg.kappa_ref;
     // Interpolation weights of the tying points at this Gauss point.
@@ -120,9 +134,10 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     const Eigen::Vector2d gamma_nat(c[0] * gamma_t[0] + c[1] * gamma_t[1], c[2] * gamma_t[2] + c[3] * gamma_t[3]);
     const Eigen::Vector2d gamma = pg.K * gamma_nat;
 
-    Vec6 s6;
-    Mat6 d6;
-    const SectionStatus ss = sections_[q].update(e, kappa, &s6, tangent ? &d6 : nullptr);
+    // The layers work in the material frame: e_m = Q e, (N, M) = Q^T (N_m, M_m).
+    Vec6 s6m;
+    Mat6 d6m;
+    const SectionStatus ss = sections_[q].update(pg.Q * e, pg.Q * kappa, &s6m, tangent ? &d6m : nullptr);
     if (!ss.ok) {
       status.ok = false;
       status.point = static_cast<int>(q);
@@ -131,6 +146,12 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
       status.suggested_scale = ss.suggested_scale;
       return status;
     }
+    Eigen::Matrix<double, 6, 6> q6 = Eigen::Matrix<double, 6, 6>::Zero();
+    q6.topLeftCorner<3, 3>() = pg.Q;
+    q6.bottomRightCorner<3, 3>() = pg.Q;
+    const Vec6 s6 = q6.transpose() * s6m;
+    Mat6 d6;
+    if (tangent) d6 = q6.transpose() * d6m * q6;
     const Eigen::Vector2d Q = ks * gamma;
 
     // B = d(e, kappa, gamma)/dp, 8 x 24.
@@ -141,7 +162,7 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
       const int cx = 6 * I, cd = 6 * I + 3;
       B.block<1, 3>(0, cx) = n0 * f0.transpose();
       B.block<1, 3>(1, cx) = n1 * f1.transpose();
-      B.block<1, 3>(2, cx) = (n0 * f1 + n1 * f0).transpose();
+      B.block<1, 3>(2, cx) = (ps.dN(0, I) * g1 + ps.dN(1, I) * g0).transpose();
       B.block<1, 3>(3, cx) = n0 * dd0.transpose();
       B.block<1, 3>(4, cx) = n1 * dd1.transpose();
       B.block<1, 3>(5, cx) = (n0 * dd1 + n1 * dd0).transpose();
@@ -168,7 +189,8 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
         for (int Jn = 0; Jn < 4; ++Jn) {
           const double a0 = pg.dN(0, I) * pg.dN(0, Jn), a1 = pg.dN(1, I) * pg.dN(1, Jn);
           const double a2 = pg.dN(0, I) * pg.dN(1, Jn) + pg.dN(1, I) * pg.dN(0, Jn);
-          const double gxx = s6(0) * a0 + s6(1) * a1 + s6(2) * a2;
+          const double s2 = ps.dN(0, I) * ps.dN(1, Jn) + ps.dN(1, I) * ps.dN(0, Jn);
+          const double gxx = s6(0) * a0 + s6(1) * a1 + s6(2) * s2;
           double gxd = s6(3) * a0 + s6(4) * a1 + s6(5) * a2;
           for (std::size_t t = 0; t < 4; ++t) gxd += qn(kTieDir[t]) * c[t] * tying_[t].dN(I) * tying_[t].N(Jn);
           for (int k = 0; k < 3; ++k) {

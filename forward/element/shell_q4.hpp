@@ -8,7 +8,9 @@
 //    rolling direction on the mid-surface), so the stress update is objective and the
 //    orthotropy axes follow the material.
 //  * Membrane e and bending kappa: Green-Lagrange strains linear in the thickness
-//    coordinate; each of the 2x2 Gauss points carries a ShellSection (1..11 layers,
+//    coordinate, computed in an element frame (e1 along the xi direction at the centre,
+//    projected on the tangent plane) and rotated into the material frame for the layers;
+//    each of the 2x2 Gauss points carries a ShellSection (1..11 layers,
 //    logarithmic-strain plasticity in plane stress).
 //  * Transverse shear: MITC4 assumed strains (Dvorkin & Bathe 1984), tied at the mid-edges;
 //    elastic, k G h0 with k = 5/6. No shear locking, no spurious modes.
@@ -33,6 +35,10 @@ struct ShellOptions {
   double shear_factor = 5.0 / 6.0;
   double drilling_factor = 1e-4;           // x mean rotational stiffness of the element
   bool symmetric_rotation_tangent = false;
+  // In-plane shear strain taken at the element centre (selective reduced integration): removes
+  // the parasitic shear of the bilinear membrane in in-plane bending (twisted beam); keeps
+  // the membrane patch test and the rank (the normal strains still see the hourglass modes).
+  bool centre_membrane_shear = true;
   Eigen::Vector3d material_axis = Eigen::Vector3d::UnitX();  // rolling direction
 };
 
@@ -66,12 +72,13 @@ class ShellQ4 {
 
  private:
   struct PointGeometry {
-    Eigen::Matrix<double, 2, 4> dN;  // Cartesian shape derivatives in the material frame
-    Eigen::Matrix2d K;               // d xi_alpha / d y_a (row a, column alpha)
+    Eigen::Matrix<double, 2, 4> dN;  // Cartesian shape derivatives in the element frame
+    Eigen::Matrix2d K;               // d xi_alpha / d y_a (row a, column alpha), element frame
     double weight = 0.0;             // Gauss weight x area Jacobian
     double xi = 0.0, eta = 0.0;
     Eigen::Vector3d F0ref, F1ref;    // reference tangents (the frame vectors)
     Eigen::Vector3d kappa_ref;       // reference "curvature" terms (engineering)
+    Eigen::Matrix3d Q;               // strain vector: element frame -> material frame
   };
   struct TyingPoint {
     Eigen::Vector4d N;      // shape functions at the tying point
@@ -82,6 +89,7 @@ class ShellQ4 {
   double h0_;
   double shear_modulus_;
   std::array<PointGeometry, 4> points_;
+  PointGeometry centre_;  // the element centre (in-plane shear)
   std::array<TyingPoint, 4> tying_;  // B (0,-1), D (0,1) for gamma_xi; A (-1,0), C (1,0) for gamma_eta
   std::vector<ShellSection> sections_;
   double area_ = 0.0;

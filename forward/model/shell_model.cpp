@@ -1,0 +1,225 @@
+#include "forward/model/shell_model.hpp"
+
+#include "forward/element/director.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace spifit::model {
+
+ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
+                       const ShellModelOptions& options)
+    : mesh_(&mesh), options_(options), law_(material), rule_(element::gauss_legendre_rule(options.shell.thickness_points)),
+      thickness_(thickness) {
+  if (!(thickness > 0.0)) throw std::invalid_argument("thickness must be > 0, got " + std::to_string(thickness));
+  const int nn = mesh.num_nodes(), ne = mesh.num_elements();
+  // Nodal directors: normalised sum of the normals of the elements around each node (the
+  // diagonal cross product, which weights by area).
+  d0_.assign(static_cast<std::size_t>(nn), Eigen::Vector3d::Zero());
+  for (int e = 0; e < ne; ++e) {
+    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    const auto& p = mesh.nodes;
+    const Eigen::Vector3d n = (p[static_cast<std::size_t>(q[2])] - p[static_cast<std::size_t>(q[0])])
+                                  .cross(p[static_cast<std::size_t>(q[3])] - p[static_cast<std::size_t>(q[1])]);
+    for (int i : q) d0_[static_cast<std::size_t>(i)] += n;
+  }
+  for (int i = 0; i < nn; ++i) {
+    const double len = d0_[static_cast<std::size_t>(i)].norm();
+    if (!(len > 0.0)) throw std::invalid_argument("node " + std::to_string(i) + " belongs to no element or only to degenerate ones");
+    d0_[static_cast<std::size_t>(i)] /= len;
+  }
+  elements_.reserve(static_cast<std::size_t>(ne));
+  element_dofs_.resize(static_cast<std::size_t>(ne));
+  for (int e = 0; e < ne; ++e) {
+    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    element::NodeVectors X, D;
+    for (int i = 0; i < 4; ++i) {
+      X[static_cast<std::size_t>(i)] = mesh.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])];
+      D[static_cast<std::size_t>(i)] = d0_[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])];
+    }
+    try {
+      elements_.emplace_back(X, D, thickness, law_, rule_, options.shell);
+    } catch (const std::invalid_argument& err) {
+      throw std::invalid_argument("element " + std::to_string(e) + ": " + err.what());
+    }
+    auto& dofs = element_dofs_[static_cast<std::size_t>(e)];
+    for (int node : q)
+      for (int c = 0; c < 6; ++c) dofs.push_back(dof(node, c));
+  }
+  x_ = xi_ = xt_ = mesh.nodes;
+  d_ = di_ = dt_ = d0_;
+  increment_ = increment_trial_ = Eigen::VectorXd::Zero(num_dofs());
+}
+
+void ShellModel::add_nodal_load(int dof_index, double amplitude) {
+  if (dof_index < 0 || dof_index >= num_dofs()) throw std::invalid_argument("load on DOF " + std::to_string(dof_index) + " out of range");
+  loads_.emplace_back(dof_index, amplitude);
+}
+
+void ShellModel::add_surface_load(const std::vector<int>& elements, const Eigen::Vector3d& load_per_area) {
+  const double g = 1.0 / std::sqrt(3.0);
+  constexpr double xs[4] = {-1.0, 1.0, 1.0, -1.0}, ys[4] = {-1.0, -1.0, 1.0, 1.0};
+  for (int e : elements) {
+    const auto& q = mesh_->quads.at(static_cast<std::size_t>(e));
+    for (int p = 0; p < 4; ++p) {
+      const double xi = xs[p] * g, eta = ys[p] * g;
+      Eigen::Vector3d a0 = Eigen::Vector3d::Zero(), a1 = Eigen::Vector3d::Zero();
+      double n[4];
+      for (int i = 0; i < 4; ++i) {
+        const Eigen::Vector3d& X = mesh_->nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])];
+        n[i] = 0.25 * (1.0 + xs[i] * xi) * (1.0 + ys[i] * eta);
+        a0 += 0.25 * xs[i] * (1.0 + ys[i] * eta) * X;
+        a1 += 0.25 * ys[i] * (1.0 + xs[i] * xi) * X;
+      }
+      const double da = a0.cross(a1).norm();
+      for (int i = 0; i < 4; ++i)
+        for (int c = 0; c < 3; ++c)
+          if (load_per_area(c) != 0.0) loads_.emplace_back(dof(q[static_cast<std::size_t>(i)], c), n[i] * da * load_per_area(c));
+    }
+  }
+}
+
+Eigen::VectorXd ShellModel::internal_forces() {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
+  Eigen::VectorXd re;
+  for (int e = 0; e < num_elements(); ++e) {
+    const solver::ElementEvaluation ev = evaluate_element(e, &re, nullptr);
+    if (!ev.ok) throw std::runtime_error("internal forces: " + ev.where + ": " + ev.reason);
+    const auto& dofs = element_dofs_[static_cast<std::size_t>(e)];
+    for (std::size_t a = 0; a < dofs.size(); ++a) f(dofs[a]) += re(static_cast<Eigen::Index>(a));
+  }
+  return f;
+}
+
+solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
+  const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+  element::NodeVectors x, d;
+  for (std::size_t i = 0; i < 4; ++i) {
+    x[i] = xt_[static_cast<std::size_t>(q[i])];
+    d[i] = dt_[static_cast<std::size_t>(q[i])];
+  }
+  element::Vec24 r;
+  element::Mat24 k;
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].compute(x, d, &r, ke ? &k : nullptr);
+  solver::ElementEvaluation out;
+  if (!s.ok) {
+    out.ok = false;
+    out.reason = s.reason;
+    out.suggested_scale = s.suggested_scale;
+    out.where = "element " + std::to_string(e);
+    if (s.point >= 0) out.where += ", in-plane point " + std::to_string(s.point);
+    if (s.layer >= 0) out.where += ", layer " + std::to_string(s.layer);
+    return out;
+  }
+  *re = r;
+  if (ke) *ke = k;
+  return out;
+}
+
+Eigen::VectorXd ShellModel::external_forces(double lambda) const {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
+  for (const auto& [i, a] : loads_) f(i) += lambda * a;
+  return f;
+}
+
+void ShellModel::set_trial(const Eigen::VectorXd& delta, double alpha) {
+  for (std::size_t n = 0; n < x_.size(); ++n) {
+    const Eigen::Index o = static_cast<Eigen::Index>(6 * n);
+    xt_[n] = xi_[n] + alpha * delta.segment<3>(o);
+    dt_[n] = element::rotate_by_vector(di_[n], alpha * delta.segment<3>(o + 3));
+  }
+  increment_trial_ = increment_ + alpha * delta;
+}
+
+void ShellModel::accept_trial() {
+  xi_ = xt_;
+  di_ = dt_;
+  increment_ = increment_trial_;
+}
+
+void ShellModel::commit(double lambda) {
+  // The last evaluation was at the accepted iterate: its element trial states are the ones to keep.
+  x_ = xi_;
+  d_ = di_;
+  for (auto& el : elements_) el.commit();
+  increment_.setZero();
+  increment_trial_.setZero();
+  lambda_ = lambda;
+}
+
+void ShellModel::revert() {
+  xi_ = xt_ = x_;
+  di_ = dt_ = d_;
+  for (auto& el : elements_) el.revert();
+  increment_.setZero();
+  increment_trial_.setZero();
+}
+
+Eigen::VectorXd ShellModel::increment_from_committed() const { return increment_; }
+
+std::vector<double> ShellModel::nodal_thickness() const {
+  std::vector<double> h(x_.size(), 0.0), w(x_.size(), 0.0);
+  for (int e = 0; e < num_elements(); ++e) {
+    double he = 0.0;
+    for (int p = 0; p < element::ShellQ4::kPoints; ++p) he += 0.25 * elements_[static_cast<std::size_t>(e)].section(p).thickness();
+    for (int i : mesh_->quads[static_cast<std::size_t>(e)]) {
+      h[static_cast<std::size_t>(i)] += he;
+      w[static_cast<std::size_t>(i)] += 1.0;
+    }
+  }
+  for (std::size_t i = 0; i < h.size(); ++i) h[i] /= w[i];
+  return h;
+}
+
+ShellModel::LumpedMass ShellModel::lumped_mass() const {
+  LumpedMass m;
+  m.translational.assign(x_.size(), 0.0);
+  m.rotational.assign(x_.size(), 0.0);
+  for (int e = 0; e < num_elements(); ++e) {
+    const double area = elements_[static_cast<std::size_t>(e)].reference_area();
+    const double mass = options_.density * thickness_ * area / 4.0;
+    const double inertia = mass * std::max(thickness_ * thickness_ / 12.0, area / 12.0);
+    for (int i : mesh_->quads[static_cast<std::size_t>(e)]) {
+      m.translational[static_cast<std::size_t>(i)] += mass;
+      m.rotational[static_cast<std::size_t>(i)] += inertia;
+    }
+  }
+  return m;
+}
+
+io::VtuFrame ShellModel::vtu_frame() const {
+  io::VtuFrame f;
+  f.points = x_;
+  io::VtuField u{"displacement", 3, {}}, dir{"director", 3, {}}, h{"thickness", 1, nodal_thickness()};
+  for (int n = 0; n < num_nodes(); ++n) {
+    const Eigen::Vector3d un = displacement(n);
+    u.values.insert(u.values.end(), {un.x(), un.y(), un.z()});
+    const Eigen::Vector3d& dn = director(n);
+    dir.values.insert(dir.values.end(), {dn.x(), dn.y(), dn.z()});
+  }
+  f.point_data = {u, dir, h};
+  const int layers = rule_.zeta.empty() ? 0 : static_cast<int>(rule_.zeta.size());
+  io::VtuField eq_max{"eqps_max", 1, {}}, s_bot{"stress_bottom", 3, {}}, s_mid{"stress_middle", 3, {}}, s_top{"stress_top", 3, {}};
+  for (int e = 0; e < num_elements(); ++e) {
+    const auto& el = elements_[static_cast<std::size_t>(e)];
+    double pmax = 0.0;
+    Eigen::Vector3d sb = Eigen::Vector3d::Zero(), sm = sb, st = sb;
+    for (int p = 0; p < element::ShellQ4::kPoints; ++p) {
+      const auto& sec = el.section(p);
+      for (int l = 0; l < layers; ++l) pmax = std::max(pmax, sec.layer_state(l).eqps);
+      sb += 0.25 * sec.layer_state(0).stress;
+      sm += 0.25 * sec.layer_state(layers / 2).stress;
+      st += 0.25 * sec.layer_state(layers - 1).stress;
+    }
+    eq_max.values.push_back(pmax);
+    for (const auto* v : {&sb, &sm, &st}) {
+      auto& field = v == &sb ? s_bot : v == &sm ? s_mid : s_top;
+      field.values.insert(field.values.end(), {(*v)(0), (*v)(1), (*v)(2)});
+    }
+  }
+  f.cell_data = {eq_max, s_bot, s_mid, s_top};
+  return f;
+}
+
+}  // namespace spifit::model

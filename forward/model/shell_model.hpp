@@ -1,0 +1,84 @@
+#pragma once
+// A shell finite-element model: mesh, ShellQ4 elements, six DOFs per node (ux uy uz, then
+// rotation increments about x y z), nodal directors, concentrated loads, and the
+// configuration bookkeeping the Newton solver needs (committed / iterate / trial).
+#include "forward/element/shell_q4.hpp"
+#include "forward/io/vtu_writer.hpp"
+#include "forward/mesh/mesh.hpp"
+#include "forward/solver/nonlinear_problem.hpp"
+
+#include <vector>
+
+namespace spifit::model {
+
+struct ShellModelOptions {
+  element::ShellOptions shell;
+  double density = 2.7e-9;  // t/mm^3 (lumped mass)
+};
+
+class ShellModel final : public solver::NonlinearProblem {
+ public:
+  // Throws std::invalid_argument for a degenerate element (naming it) or bad options.
+  ShellModel(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
+             const ShellModelOptions& options);
+
+  static int dof(int node, int component) { return 6 * node + component; }
+  const mesh::Mesh& mesh() const { return *mesh_; }
+  int num_nodes() const { return mesh_->num_nodes(); }
+  int num_elements() const { return mesh_->num_elements(); }
+
+  // f_ext(lambda) += lambda x amplitude on this DOF (forces N, moments N mm).
+  void add_nodal_load(int dof, double amplitude);
+  // Dead load per unit reference area (e.g. self-weight) on the given elements, as
+  // consistent nodal forces (2x2 Gauss points on the bilinear geometry).
+  void add_surface_load(const std::vector<int>& elements, const Eigen::Vector3d& load_per_area);
+  // Internal forces at the current iterate (full vector): reactions at supported DOFs.
+  Eigen::VectorXd internal_forces();
+
+  // NonlinearProblem
+  int num_dofs() const override { return 6 * num_nodes(); }
+  const std::vector<std::vector<int>>& element_dofs() const override { return element_dofs_; }
+  solver::ElementEvaluation evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) override;
+  Eigen::VectorXd external_forces(double lambda) const override;
+  void set_trial(const Eigen::VectorXd& delta, double alpha) override;
+  void accept_trial() override;
+  void commit(double lambda) override;
+  void revert() override;
+  Eigen::VectorXd increment_from_committed() const override;
+
+  // Committed results.
+  Eigen::Vector3d displacement(int node) const { return x_[static_cast<std::size_t>(node)] - mesh_->nodes[static_cast<std::size_t>(node)]; }
+  const Eigen::Vector3d& position(int node) const { return x_[static_cast<std::size_t>(node)]; }
+  const Eigen::Vector3d& director(int node) const { return d_[static_cast<std::size_t>(node)]; }
+  const Eigen::Vector3d& reference_director(int node) const { return d0_[static_cast<std::size_t>(node)]; }
+  double load_factor() const { return lambda_; }
+  const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
+  std::vector<double> nodal_thickness() const;
+  // Lumped mass per node: translational m_I (area share x thickness x density) and rotational
+  // inertia m_I (t^2/12 + A_I/12) — the larger of the rotary inertia of the layer and the
+  // share of the element's in-plane polar inertia, a common choice that keeps the rotational
+  // frequencies below the translational ones (docs/numerics-shell.md).
+  struct LumpedMass {
+    std::vector<double> translational, rotational;
+  };
+  LumpedMass lumped_mass() const;
+  io::VtuFrame vtu_frame() const;
+
+ private:
+  const mesh::Mesh* mesh_;
+  ShellModelOptions options_;
+  material::ReturnMapping<double, 3> law_;
+  element::ThicknessRule rule_;
+  double thickness_;
+  std::vector<element::ShellQ4> elements_;
+  std::vector<std::vector<int>> element_dofs_;
+  std::vector<Eigen::Vector3d> d0_;
+  std::vector<Eigen::Vector3d> x_, d_;            // committed
+  std::vector<Eigen::Vector3d> xi_, di_;          // iterate
+  std::vector<Eigen::Vector3d> xt_, dt_;          // trial
+  Eigen::VectorXd increment_, increment_trial_;   // sum of accepted corrections in this increment
+  std::vector<std::pair<int, double>> loads_;
+  double lambda_ = 0.0;
+};
+
+}  // namespace spifit::model

@@ -1,0 +1,98 @@
+#include "forward/solver/dof_constraints.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace spifit::solver {
+
+DofConstraints::DofConstraints(int num_dofs)
+    : kind_(static_cast<std::size_t>(num_dofs), Kind::free), amplitude_(static_cast<std::size_t>(num_dofs), 0.0),
+      masters_(static_cast<std::size_t>(num_dofs)) {}
+
+void DofConstraints::check_dof(int dof, const char* what) const {
+  if (dof < 0 || dof >= num_dofs())
+    throw std::invalid_argument(std::string("inconsistent constraint: ") + what + " DOF " + std::to_string(dof) +
+                                " out of range (" + std::to_string(num_dofs()) + " DOFs)");
+}
+
+void DofConstraints::prescribe(int dof, double amplitude) {
+  check_dof(dof, "prescribed");
+  auto& k = kind_[static_cast<std::size_t>(dof)];
+  double& a = amplitude_[static_cast<std::size_t>(dof)];
+  if (k == Kind::tied) throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(dof) + " is tied and prescribed");
+  if (k == Kind::prescribed && a != amplitude)
+    throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(dof) + " prescribed to " + std::to_string(a) +
+                                " and to " + std::to_string(amplitude));
+  k = Kind::prescribed;
+  a = amplitude;
+  finalized_ = false;
+}
+
+void DofConstraints::tie(int slave, std::vector<std::pair<int, double>> masters) {
+  check_dof(slave, "tied");
+  auto& k = kind_[static_cast<std::size_t>(slave)];
+  if (k == Kind::prescribed) throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(slave) + " is prescribed and tied");
+  if (k == Kind::tied) throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(slave) + " is tied twice");
+  for (const auto& [m, c] : masters) {
+    check_dof(m, "master");
+    if (m == slave) throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(slave) + " is tied to itself");
+    if (!std::isfinite(c)) throw std::invalid_argument("inconsistent constraint: non-finite coefficient for DOF " + std::to_string(slave));
+  }
+  k = Kind::tied;
+  masters_[static_cast<std::size_t>(slave)] = std::move(masters);
+  finalized_ = false;
+}
+
+void DofConstraints::finalize() {
+  const std::size_t n = kind_.size();
+  std::vector<int> reduced(n, -1);
+  num_reduced_ = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (kind_[i] == Kind::free) reduced[i] = num_reduced_++;
+  offset_.assign(n + 1, 0);
+  terms_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kind_[i] == Kind::free) {
+      terms_.push_back({reduced[i], 1.0});
+    } else if (kind_[i] == Kind::tied) {
+      amplitude_[i] = 0.0;
+      for (const auto& [m, c] : masters_[i]) {
+        const auto mk = kind_[static_cast<std::size_t>(m)];
+        if (mk == Kind::tied)
+          throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(i) + " is tied to DOF " + std::to_string(m) +
+                                      ", itself tied (chains are not supported)");
+        if (mk == Kind::prescribed) amplitude_[i] += c * amplitude_[static_cast<std::size_t>(m)];
+        else if (c != 0.0) terms_.push_back({reduced[static_cast<std::size_t>(m)], c});
+      }
+    }
+    offset_[i + 1] = static_cast<long>(terms_.size());
+  }
+  finalized_ = true;
+}
+
+std::span<const DofConstraints::Term> DofConstraints::expansion(int dof) const {
+  const auto i = static_cast<std::size_t>(dof);
+  return {terms_.data() + offset_[i], static_cast<std::size_t>(offset_[i + 1] - offset_[i])};
+}
+
+Eigen::VectorXd DofConstraints::expand(const Eigen::VectorXd& reduced) const {
+  Eigen::VectorXd full = Eigen::VectorXd::Zero(num_dofs());
+  for (int i = 0; i < num_dofs(); ++i)
+    for (const Term& t : expansion(i)) full(i) += t.coefficient * reduced(t.reduced);
+  return full;
+}
+
+Eigen::VectorXd DofConstraints::reduce(const Eigen::VectorXd& full) const {
+  Eigen::VectorXd r = Eigen::VectorXd::Zero(num_reduced_);
+  for (int i = 0; i < num_dofs(); ++i)
+    for (const Term& t : expansion(i)) r(t.reduced) += t.coefficient * full(i);
+  return r;
+}
+
+Eigen::VectorXd DofConstraints::prescribed_values(double load_factor) const {
+  Eigen::VectorXd g(num_dofs());
+  for (int i = 0; i < num_dofs(); ++i) g(i) = load_factor * amplitude_[static_cast<std::size_t>(i)];
+  return g;
+}
+
+}  // namespace spifit::solver

@@ -1,0 +1,211 @@
+#include "forward/solver/newton_solver.hpp"
+
+#include "forward/solver/reduced_assembler.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace spifit::solver {
+
+std::string NewtonOptions::validate() const {
+  if (!(min_increment > 0.0 && min_increment <= initial_increment && initial_increment <= max_increment && max_increment <= 1.0))
+    return "increments must satisfy 0 < min_increment <= initial_increment <= max_increment <= 1";
+  if (!(growth >= 1.0)) return "growth must be >= 1";
+  if (!(cutback > 0.0 && cutback < 1.0)) return "cutback must be in (0, 1)";
+  if (max_iterations < 1) return "max_iterations must be >= 1";
+  if (!(force_tolerance > 0.0) || !(displacement_tolerance > 0.0)) return "tolerances must be > 0";
+  if (max_line_search < 0) return "max_line_search must be >= 0";
+  if (element_chunk < 1) return "element_chunk must be >= 1";
+  return {};
+}
+
+NewtonSolver::NewtonSolver(NonlinearProblem& problem, const DofConstraints& constraints, NewtonOptions options)
+    : problem_(problem), constraints_(constraints), options_(options) {
+  assembler_ = std::make_unique<ReducedAssembler>(constraints, problem.element_dofs());
+  k_ = std::make_unique<SparseMatrix>(assembler_->pattern());
+  linear_ = make_linear_solver(options.linear_solver);
+}
+
+NewtonSolver::~NewtonSolver() = default;
+
+NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, const Eigen::VectorXd* dg_full) {
+  Assembly out;
+  const auto& dofs = problem_.element_dofs();
+  const int ne = static_cast<int>(dofs.size());
+  Eigen::VectorXd full = -problem_.external_forces(lambda);
+  Eigen::VectorXd reactions = Eigen::VectorXd::Zero(problem_.num_dofs());
+  if (with_tangent) k_->set_zero();
+  const int chunk = std::min(options_.element_chunk, std::max(ne, 1));
+  std::vector<Eigen::VectorXd> re(static_cast<std::size_t>(chunk));
+  std::vector<Eigen::MatrixXd> ke(static_cast<std::size_t>(chunk));
+  std::vector<ElementEvaluation> ev(static_cast<std::size_t>(chunk));
+  for (int first = 0; first < ne; first += chunk) {
+    const int count = std::min(chunk, ne - first);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < count; ++i) {
+      const auto ui = static_cast<std::size_t>(i);
+      ev[ui] = problem_.evaluate_element(first + i, &re[ui], with_tangent ? &ke[ui] : nullptr);
+    }
+    // Scatter in element order: the result does not depend on the number of threads.
+    for (int i = 0; i < count; ++i) {
+      const auto ui = static_cast<std::size_t>(i);
+      if (!ev[ui].ok) {
+        out.failure = ev[ui];
+        return out;
+      }
+      const std::vector<int>& ed = dofs[static_cast<std::size_t>(first + i)];
+      Eigen::VectorXd r = re[ui];
+      for (std::size_t a = 0; a < ed.size(); ++a)
+        if (constraints_.prescribed(ed[a])) reactions(ed[a]) += r(static_cast<Eigen::Index>(a));
+      if (dg_full && with_tangent) {
+        Eigen::VectorXd dgl(static_cast<Eigen::Index>(ed.size()));
+        for (std::size_t a = 0; a < ed.size(); ++a) dgl(static_cast<Eigen::Index>(a)) = (*dg_full)(ed[a]);
+        if (dgl.squaredNorm() > 0.0) r.noalias() += ke[ui] * dgl;
+      }
+      for (std::size_t a = 0; a < ed.size(); ++a) full(ed[a]) += r(static_cast<Eigen::Index>(a));
+      if (with_tangent) assembler_->add(first + i, re[ui], &ke[ui], nullptr, nullptr, k_.get());
+    }
+  }
+  out.residual = constraints_.reduce(full);
+  out.reaction_norm = reactions.norm();
+  return out;
+}
+
+bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error) {
+  if (linear_->factorize(*k_) && linear_->solve(rhs, x)) return true;
+  if (options_.linear_solver == LinearSolverKind::cholmod) {
+    // Not positive definite (e.g. past a limit point): the general solver still applies.
+    if (!fallback_) fallback_ = make_linear_solver(LinearSolverKind::umfpack);
+    if (fallback_->factorize(*k_) && fallback_->solve(rhs, x)) return true;
+    *error = fallback_->error();
+    return false;
+  }
+  *error = linear_->error();
+  return false;
+}
+
+bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* report, ElementEvaluation* failure) {
+  problem_.revert();
+  const Eigen::VectorXd f_ext = constraints_.reduce(problem_.external_forces(lambda1));
+  const Eigen::VectorXd dg = constraints_.prescribed_values(lambda1 - lambda0);
+  const bool has_dg = dg.squaredNorm() > 0.0;
+  Assembly a = assemble(lambda1, true, has_dg ? &dg : nullptr);
+  if (!a.failure.ok) {
+    *failure = a.failure;
+    return false;
+  }
+  double scale = std::max({f_ext.norm(), a.reaction_norm, a.residual.norm(), 1e-300});
+  report->residual_norms.push_back(a.residual.norm() / scale);
+  Eigen::VectorXd r = a.residual;
+  bool first = true;
+  for (int it = 1; it <= options_.max_iterations; ++it) {
+    Eigen::VectorXd du;
+    std::string error;
+    if (!solve_linear(-r, &du, &error)) {
+      failure->ok = false;
+      failure->reason = "linear solver: " + error;
+      failure->suggested_scale = options_.cutback;
+      return false;
+    }
+    const Eigen::VectorXd dfree = constraints_.expand(du);
+    // A trial where an element fails is halved (always). Optional energy line search on
+    // s(alpha) = du . r(alpha) (secant steps, alpha in [0.1, 1]).
+    const double s0 = du.dot(r);
+    double alpha = 1.0;
+    Assembly trial;
+    for (int ls = 0;; ++ls) {
+      problem_.set_trial(first && has_dg ? Eigen::VectorXd(alpha * dfree + dg) : Eigen::VectorXd(alpha * dfree), 1.0);
+      trial = assemble(lambda1, true, nullptr);
+      if (!trial.failure.ok) {
+        if (ls < options_.max_line_search && alpha > 0.1) {  // a failed trial: try a shorter step first
+          alpha *= 0.5;
+          ++report->line_searches;
+          continue;
+        }
+        *failure = trial.failure;
+        return false;
+      }
+      if (!options_.line_search || ls >= options_.max_line_search || !(s0 < 0.0)) break;
+      const double s1 = du.dot(trial.residual);
+      if (std::abs(s1) <= 0.8 * std::abs(s0) || !std::isfinite(s1)) break;
+      const double next = std::clamp(alpha * s0 / (s0 - s1), 0.1, 1.0);
+      if (std::abs(next - alpha) < 0.05) break;
+      alpha = next;
+      ++report->line_searches;
+    }
+    problem_.accept_trial();
+    first = false;
+    r = trial.residual;
+    report->iterations = it;
+    scale = std::max({scale, f_ext.norm(), trial.reaction_norm});
+    const double rel = r.norm() / scale;
+    report->residual_norms.push_back(rel);
+    if (!std::isfinite(rel) || rel > 1e10) {
+      failure->ok = false;
+      failure->reason = "Newton iterations diverged (relative residual " + std::to_string(rel) + ")";
+      failure->suggested_scale = options_.cutback;
+      return false;
+    }
+    if (options_.linear) return true;
+    const double inc = problem_.increment_from_committed().norm();
+    const double step = alpha * du.norm();
+    if (rel <= options_.force_tolerance && (step <= options_.displacement_tolerance * std::max(inc, 1e-300) ||
+                                            rel <= 1e-3 * options_.force_tolerance))
+      return true;
+  }
+  failure->ok = false;
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "no convergence in %d iterations (relative residual %.3g)", options_.max_iterations,
+                report->residual_norms.back());
+  failure->reason = buf;
+  failure->suggested_scale = options_.cutback;
+  return false;
+}
+
+NewtonSummary NewtonSolver::solve(double lambda_end, const IncrementCallback& callback) {
+  NewtonSummary summary;
+  double lambda = 0.0, dl = options_.linear ? lambda_end : options_.initial_increment;
+  while (lambda < lambda_end - 1e-12) {
+    double lambda1 = std::min(lambda + dl, lambda_end);
+    if (lambda_end - lambda1 < 1e-3 * dl) lambda1 = lambda_end;
+    IncrementReport report;
+    report.index = summary.increments + 1;
+    report.lambda = lambda1;
+    report.increment = lambda1 - lambda;
+    ElementEvaluation failure;
+    const bool ok = increment(lambda, lambda1, &report, &failure);
+    summary.iterations += report.iterations;
+    if (ok) {
+      problem_.commit(lambda1);
+      lambda = lambda1;
+      summary.lambda = lambda;
+      ++summary.increments;
+      summary.history.push_back(report);
+      if (callback && !callback(report)) {
+        summary.message = "stopped by the caller at load factor " + std::to_string(lambda);
+        break;
+      }
+      if (report.iterations <= options_.easy_iterations) dl = std::min(options_.max_increment, dl * options_.growth);
+      continue;
+    }
+    problem_.revert();
+    ++summary.cutbacks;
+    const double s = std::min(options_.cutback, failure.suggested_scale);
+    if (dl <= options_.min_increment * (1.0 + 1e-12)) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "increment from load factor %.6g failed at the minimum increment %.3g: ", lambda, dl);
+      summary.message = buf + failure.reason + (failure.where.empty() ? "" : " (" + failure.where + ")");
+      break;
+    }
+    dl = std::max(options_.min_increment, dl * s);
+  }
+  summary.converged = summary.lambda >= lambda_end - 1e-12;
+  if (summary.converged && summary.message.empty()) summary.message = "converged";
+  summary.factorisations = linear_->numeric_factorisations() + (fallback_ ? fallback_->numeric_factorisations() : 0);
+  summary.symbolic_analyses = linear_->symbolic_analyses() + (fallback_ ? fallback_->symbolic_analyses() : 0);
+  return summary;
+}
+
+}  // namespace spifit::solver

@@ -1,0 +1,89 @@
+#pragma once
+// Implicit static solution (NUMERICS.md "Global solution"): load factor lambda from 0 to 1 in
+// increments; Newton-Raphson on the reduced residual with a line search; automatic
+// increment control (cut back on divergence or material failure, grow after easy increments);
+// parallel element evaluation (OpenMP) with assembly in element order, so results do not
+// depend on the thread count; UMFPACK or CHOLMOD on a pattern built once (symbolic analysis
+// reused).
+#include "forward/solver/dof_constraints.hpp"
+#include "forward/solver/linear_solver.hpp"
+#include "forward/solver/nonlinear_problem.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace spifit::solver {
+
+struct NewtonOptions {
+  double initial_increment = 0.1;   // of the load factor
+  double min_increment = 1e-5;
+  double max_increment = 0.25;
+  double growth = 1.5;              // after an increment converged in <= easy_iterations
+  int easy_iterations = 5;
+  double cutback = 0.25;            // increment x cutback after a failure (or the element's suggestion if smaller)
+  int max_iterations = 20;
+  double force_tolerance = 1e-7;    // |r| <= tol x force scale
+  double displacement_tolerance = 1e-7;  // |du| <= tol x |increment|
+  // Energy line search (Crisfield). Off by default: on thin shells it shortens the membrane-
+  // dominated steps and slowed the roll-up 3.6x (docs/numerics-shell.md). Trials where an
+  // element fails are halved whatever this says.
+  bool line_search = false;
+  int max_line_search = 6;
+  LinearSolverKind linear_solver = LinearSolverKind::umfpack;
+  int element_chunk = 2048;
+  // Linear analysis: one increment, one solve from the reference state, no equilibrium
+  // iterations (patch tests and the linear benchmarks).
+  bool linear = false;         // elements evaluated in parallel before scattering
+  // Empty when valid, else the first problem.
+  std::string validate() const;
+};
+
+struct IncrementReport {
+  int index = 0;
+  double lambda = 0.0, increment = 0.0;
+  int iterations = 0;
+  int line_searches = 0;
+  std::vector<double> residual_norms;  // relative, one per iteration (first: before the first correction)
+};
+
+struct NewtonSummary {
+  bool converged = false;
+  double lambda = 0.0;            // last converged load factor
+  int increments = 0, iterations = 0, cutbacks = 0;
+  int factorisations = 0, symbolic_analyses = 0;
+  std::string message;            // why it stopped (failure: where and why)
+  std::vector<IncrementReport> history;
+};
+
+class NewtonSolver {
+ public:
+  NewtonSolver(NonlinearProblem& problem, const DofConstraints& constraints, NewtonOptions options = {});
+  ~NewtonSolver();
+  // Called after every converged increment (outputs, progress). Returning false stops the run.
+  using IncrementCallback = std::function<bool(const IncrementReport&)>;
+  NewtonSummary solve(double lambda_end = 1.0, const IncrementCallback& callback = {});
+  // One Newton iteration's building blocks, exposed for benchmarks and tests.
+  struct Assembly {
+    Eigen::VectorXd residual;  // reduced
+    double reaction_norm = 0.0;
+    ElementEvaluation failure;  // ok unless an element failed
+  };
+  Assembly assemble(double lambda, bool with_tangent, const Eigen::VectorXd* dg_full);
+  SparseMatrix& tangent() { return *k_; }
+  LinearSolver& linear_solver() { return *linear_; }
+
+ private:
+  NonlinearProblem& problem_;
+  const DofConstraints& constraints_;
+  NewtonOptions options_;
+  std::unique_ptr<class ReducedAssembler> assembler_;
+  std::unique_ptr<SparseMatrix> k_;
+  std::unique_ptr<LinearSolver> linear_;
+  std::unique_ptr<LinearSolver> fallback_;
+  bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error);
+  // Returns false (with a message) when the increment fails.
+  bool increment(double lambda0, double lambda1, IncrementReport* report, ElementEvaluation* failure);
+};
+
+}  // namespace spifit::solver

@@ -1,0 +1,41 @@
+#pragma once
+// What the implicit solver needs from a model (MFEM's Operator: residual and gradient; MGIS's
+// s0/s1 states): element residuals and tangents at a trial configuration, external forces,
+// and the configuration bookkeeping. Configurations: committed (last converged increment),
+// iterate (last accepted Newton iterate) and trial (iterate + alpha x correction, used by the
+// line search). Element states are always integrated from the committed state.
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace spifit::solver {
+
+struct ElementEvaluation {
+  bool ok = true;
+  std::string where;             // e.g. "element 12, point 3, layer 0"
+  std::string reason;
+  double suggested_scale = 1.0;  // < 1 on failure
+};
+
+class NonlinearProblem {
+ public:
+  virtual ~NonlinearProblem() = default;
+  virtual int num_dofs() const = 0;
+  virtual const std::vector<std::vector<int>>& element_dofs() const = 0;
+  // Residual re = internal - external element forces, tangent ke = d re / d u at the trial
+  // configuration (ke may be null). Called concurrently for different e.
+  virtual ElementEvaluation evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) = 0;
+  // Concentrated external forces at load factor lambda (full DOF vector).
+  virtual Eigen::VectorXd external_forces(double lambda) const = 0;
+  // trial = iterate (+) alpha x delta (delta: full DOF correction; rotations compose).
+  virtual void set_trial(const Eigen::VectorXd& delta, double alpha) = 0;
+  virtual void accept_trial() = 0;      // iterate = trial
+  virtual void commit(double lambda) = 0;  // committed = iterate; element states committed
+  virtual void revert() = 0;            // iterate = trial = committed
+  // Displacement-like value of each DOF in the iterate relative to the committed state
+  // (prescribed DOFs are driven to their targets through it).
+  virtual Eigen::VectorXd increment_from_committed() const = 0;
+};
+
+}  // namespace spifit::solver
