@@ -3,6 +3,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/scenes/material_point_scene.hpp"
+#include "forward/scenes/shell_benchmark_scene.hpp"
 #include "reports/card_export.hpp"
 
 #include <nlohmann/json.hpp>
@@ -97,11 +98,31 @@ void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code)
 void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string scene, out; bool force = false; };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json (+ DIR/curve.csv for material points)");
+  auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json (+ DIR/curve.csv for material points; increments.csv and vtu/ for shell benchmarks)");
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
   cmd->add_flag("--force", o->force, "replace an existing output directory");
   cmd->callback([o, &g, &exit_code] {
+    if (scene::scene_kind(o->scene) == "shell_benchmark") {
+      const auto sb = scene::read_shell_benchmark_scene(o->scene);  // input errors before touching --out
+      const auto dir = io::OutputDirectory::prepare(o->out, o->force, {sb.file});
+      const auto rep = scene::run_shell_benchmark_scene(sb, dir, g.verbose);
+      const auto& s = rep.summary;
+      if (!rep.ok) {
+        std::cerr << "spifit: " << sb.name << " failed: " << s.value("message", std::string("?")) << "\n";
+        exit_code = 1;
+        return;
+      }
+      if (!g.quiet) {
+        std::printf("%-28s %-26s value %.6g  reference %.6g  error %+.3f %%  (%d elements, %d increments, %d iterations, %.3f s)\n",
+                    sb.name.c_str(), s["benchmark"].get<std::string>().c_str(), s["value"].get<double>(),
+                    s["reference"].get<double>(), 100.0 * s["relative_error"].get<double>(), s["mesh"]["elements"].get<int>(),
+                    s["solver"]["increments"].get<int>(), s["solver"]["iterations"].get<int>(), s["wall_seconds"].get<double>());
+        for (const auto& w : s["warnings"]) std::printf("  warning: %s\n", w.get<std::string>().c_str());
+      }
+      exit_code = 0;
+      return;
+    }
     const auto scene = scene::read_scene_file(o->scene);  // input errors before touching --out
     const auto dir = io::OutputDirectory::prepare(o->out, o->force, {scene.file, scene.card.file});
     const auto rep = scene::run_material_point_scene(scene, dir);

@@ -224,11 +224,12 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     }
     const double k_drill = options_.drilling_factor * (rot_trace > 0.0 ? rot_trace / 12.0 : trans_trace / 12.0 * area_);
     for (int I = 0; I < 4; ++I) {
+      // Rotational geometric term, projected on the plane normal to the director (the drilling
+      // rotation does not move d): P (d r^T - (d.r) I) P = -(d.r) P with P = I - d d^T.
       const Eigen::Vector3d& dI = d[static_cast<std::size_t>(I)];
-      const Eigen::Vector3d r = rp.segment<3>(6 * I + 3);
-      Eigen::Matrix3d g = dI * r.transpose() - dI.dot(r) * Eigen::Matrix3d::Identity();
-      if (options_.symmetric_rotation_tangent) g = 0.5 * (g + g.transpose()).eval();
-      ku.block<3, 3>(6 * I + 3, 6 * I + 3) += g + k_drill * dI * dI.transpose();
+      const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - dI * dI.transpose();
+      const double dr = dI.dot(rp.segment<3>(6 * I + 3));
+      ku.block<3, 3>(6 * I + 3, 6 * I + 3) += -dr * P + k_drill * dI * dI.transpose();
     }
     *tangent = ku;
   }

@@ -19,9 +19,10 @@
 //    drilling rotation (about d) does not move the director; it gets a small stiffness in
 //    the tangent only (drilling_factor), which never changes the converged solution.
 //  * The tangent is the exact derivative of the residual (material, geometric and
-//    rotational parts), which is non-symmetric away from equilibrium; with
-//    symmetric_rotation_tangent the rotational part is symmetrised (for CHOLMOD), still
-//    exact at equilibrium.
+//    rotational parts) on the rotations normal to the directors; its drilling rows and
+//    columns are replaced by the small drilling stiffness. Projected this way the rotational
+//    term is -(d.r_d)(I - d d^T): symmetric, so the tangent is symmetric whenever the
+//    material tangent is (elastic, Hill with isotropic hardening) and CHOLMOD applies.
 #include "forward/element/shell_section.hpp"
 
 #include <Eigen/Core>
@@ -34,7 +35,6 @@ struct ShellOptions {
   int thickness_points = 5;
   double shear_factor = 5.0 / 6.0;
   double drilling_factor = 1e-4;           // x mean rotational stiffness of the element
-  bool symmetric_rotation_tangent = false;
   // In-plane shear strain taken at the element centre (selective reduced integration): removes
   // the parasitic shear of the bilinear membrane in in-plane bending (twisted beam); keeps
   // the membrane patch test and the rank (the normal strains still see the hourglass modes).

@@ -9,11 +9,13 @@ namespace spifit::element {
 ShellSection::ShellSection(const Law& law, const ThicknessRule& rule, double thickness0)
     : rule_(&rule), h0_(thickness0), h_(thickness0),
       points_(rule.zeta.size(), material::MaterialPoint<double, 3>(law)),
-      eps_(rule.zeta.size(), Vec3::Zero()), eps_trial_(rule.zeta.size(), Vec3::Zero()) {}
+      eps_(rule.zeta.size(), Vec3::Zero()), eps_trial_(rule.zeta.size(), Vec3::Zero()),
+      tangent_(rule.zeta.size(), law.elastic_matrix()), tangent_trial_(rule.zeta.size(), law.elastic_matrix()) {}
 
 SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resultant, Mat6* tangent) {
   SectionStatus status;
   e_trial_ = e;
+  kappa_trial_ = kappa;
   if (resultant) resultant->setZero();
   if (tangent) tangent->setZero();
   for (std::size_t l = 0; l < points_.size(); ++l) {
@@ -33,13 +35,18 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
     const LogStrain ls = log_strain_with_derivatives(green);
     eps_trial_[l] = ls.value;
     Eigen::Matrix3d ct;
-    const material::UpdateResult r = points_[l].update(ls.value - eps_[l], tangent ? &ct : nullptr);
+    const Vec3 d_eps = ls.value - eps_[l];
+    const material::UpdateResult r = points_[l].update(d_eps, tangent ? &ct : nullptr);
     if (!r.ok()) {
       status.ok = false;
       status.layer = static_cast<int>(l);
       status.reason = r.reason;
       status.suggested_scale = r.suggested_scale;
       return status;
+    }
+    if (tangent) {
+      if (d_eps.isZero(0.0)) ct = tangent_[l];  // start of an increment: last converged tangent
+      tangent_trial_[l] = ct;
     }
     const Vec3& t = points_[l].trial().stress;
     const Vec3 s = ls.first.transpose() * t;
@@ -63,17 +70,24 @@ void ShellSection::commit() {
   for (std::size_t l = 0; l < points_.size(); ++l) {
     points_[l].commit();
     eps_[l] = eps_trial_[l];
+    tangent_[l] = tangent_trial_[l];
   }
   e_committed_ = e_trial_;
   const double c11 = 1.0 + 2.0 * e_trial_(0), c22 = 1.0 + 2.0 * e_trial_(1);
   const double det = c11 * c22 - e_trial_(2) * e_trial_(2);
-  h_ = h0_ / std::sqrt(det);
+  const double h_new = h0_ / std::sqrt(det);
+  if (h_new != h_) {
+    h_ = h_new;
+    for (std::size_t l = 0; l < points_.size(); ++l)
+      eps_[l] = eps_trial_[l] = log_strain_of_green<double>(e_trial_ + rule_->zeta[l] * 0.5 * h_ * kappa_trial_);
+  }
 }
 
 void ShellSection::revert() {
   for (std::size_t l = 0; l < points_.size(); ++l) {
     points_[l].revert();
     eps_trial_[l] = eps_[l];
+    tangent_trial_[l] = tangent_[l];
   }
   e_trial_ = e_committed_;
 }

@@ -10,7 +10,9 @@
 //   N = sum_l w_l h0/2 S_l,  M = sum_l w_l h0/2 z_l S_l.
 // The section tangent contains the consistent material tangent and the second derivative of
 // the logarithm. After a converged increment the thickness is updated at constant volume,
-// h = h0 / sqrt(det(I + 2e)) (thesis §9.2.2).
+// h = h0 / sqrt(det(I + 2e)) (thesis §9.2.2), and the layers' reference log strains are
+// re-evaluated with the new lever arm, so the bending strain accumulates with the current
+// thickness and the next increment starts without a spurious strain jump.
 #include "forward/element/thickness_rule.hpp"
 #include "forward/material/material_point.hpp"
 
@@ -55,7 +57,12 @@ class ShellSection {
   double h0_, h_;
   std::vector<material::MaterialPoint<double, 3>> points_;
   std::vector<Vec3> eps_, eps_trial_;  // layer log strains (committed, trial)
-  Vec3 e_committed_ = Vec3::Zero(), e_trial_ = Vec3::Zero();
+  // Material tangent of the last update (trial) and at the converged state (committed). A
+  // zero strain increment from a plastic state reuses the committed consistent tangent
+  // instead of the elastic one, so that the first iteration of an increment starts from the
+  // elastic-plastic stiffness (as Abaqus does).
+  std::vector<Eigen::Matrix3d> tangent_, tangent_trial_;
+  Vec3 e_committed_ = Vec3::Zero(), e_trial_ = Vec3::Zero(), kappa_trial_ = Vec3::Zero();
 };
 
 }  // namespace spifit::element

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 
 namespace spifit::model {
@@ -14,6 +15,31 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
       thickness_(thickness) {
   if (!(thickness > 0.0)) throw std::invalid_argument("thickness must be > 0, got " + std::to_string(thickness));
   const int nn = mesh.num_nodes(), ne = mesh.num_elements();
+  if (ne == 0) throw std::invalid_argument("the mesh has no element");
+  // Thickness over the shortest edge of each element.
+  int worst = -1;
+  for (int e = 0; e < ne; ++e) {
+    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 4; ++i)
+      shortest = std::min(shortest, (mesh.nodes[static_cast<std::size_t>(q[(i + 1) % 4])] - mesh.nodes[static_cast<std::size_t>(q[i])]).norm());
+    if (!(shortest > 0.0)) throw std::invalid_argument("element " + std::to_string(e) + " has a zero-length edge");
+    if (thickness / shortest > max_t_over_l_) {
+      max_t_over_l_ = thickness / shortest;
+      worst = e;
+    }
+  }
+  char buf[200];
+  if (max_t_over_l_ > options.max_thickness_over_length) {
+    std::snprintf(buf, sizeof buf, "thickness over element length t/l = %.3g at element %d exceeds %.3g: refine less or use a solid-shell",
+                  max_t_over_l_, worst, options.max_thickness_over_length);
+    throw std::invalid_argument(buf);
+  }
+  if (max_t_over_l_ > options.warn_thickness_over_length) {
+    std::snprintf(buf, sizeof buf, "t/l = %.3g at element %d is above %.3g: transverse shear and thickness stress matter there (the thesis's fine cone mesh has 1.7)",
+                  max_t_over_l_, worst, options.warn_thickness_over_length);
+    warnings_.emplace_back(buf);
+  }
   // Nodal directors: normalised sum of the normals of the elements around each node (the
   // diagonal cross product, which weights by area).
   d0_.assign(static_cast<std::size_t>(nn), Eigen::Vector3d::Zero());

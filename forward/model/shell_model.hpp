@@ -7,6 +7,7 @@
 #include "forward/mesh/mesh.hpp"
 #include "forward/solver/nonlinear_problem.hpp"
 
+#include <string>
 #include <vector>
 
 namespace spifit::model {
@@ -14,11 +15,16 @@ namespace spifit::model {
 struct ShellModelOptions {
   element::ShellOptions shell;
   double density = 2.7e-9;  // t/mm^3 (lumped mass)
+  // Thickness over the shortest element edge (NUMERICS.md): a warning above warn_..., an
+  // error above max_... (the thesis's fine cone mesh has t/l = 1.7).
+  double warn_thickness_over_length = 1.0;
+  double max_thickness_over_length = 3.0;
 };
 
 class ShellModel final : public solver::NonlinearProblem {
  public:
-  // Throws std::invalid_argument for a degenerate element (naming it) or bad options.
+  // Throws std::invalid_argument for a degenerate element (naming it), t/l above the limit,
+  // an unsupported number of thickness points, or bad options.
   ShellModel(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
              const ShellModelOptions& options);
 
@@ -63,6 +69,8 @@ class ShellModel final : public solver::NonlinearProblem {
   };
   LumpedMass lumped_mass() const;
   io::VtuFrame vtu_frame() const;
+  const std::vector<std::string>& warnings() const { return warnings_; }
+  double max_thickness_over_length() const { return max_t_over_l_; }
 
  private:
   const mesh::Mesh* mesh_;
@@ -79,6 +87,8 @@ class ShellModel final : public solver::NonlinearProblem {
   Eigen::VectorXd increment_, increment_trial_;   // sum of accepted corrections in this increment
   std::vector<std::pair<int, double>> loads_;
   double lambda_ = 0.0;
+  std::vector<std::string> warnings_;
+  double max_t_over_l_ = 0.0;
 };
 
 }  // namespace spifit::model

@@ -27,8 +27,15 @@ bool material_point_kind_from_string(const std::string& s, MaterialPointKind* k)
 }
 
 std::string known_scene_kinds() {
-  return "tensile, shear, bauschinger, plane_strain, biaxial (FE scenes indent, indent_line, line, cone, "
-         "toolpath are not available in this version)";
+  return "tensile, shear, bauschinger, plane_strain, biaxial, shell_benchmark (FE scenes indent, indent_line, line, "
+         "cone, toolpath are not available in this version)";
+}
+
+std::string scene_kind(const std::string& path) {
+  const auto root = io::TomlTable::parse_file(path);
+  const auto sc = root.table("scene");
+  if (!sc) root.fail("scene", "required table [scene] is missing");
+  return sc->string("kind");
 }
 
 LoadingControl loading_control(const MaterialPointSetup& setup) {

@@ -19,6 +19,10 @@ struct MaterialPointScene {
 // Throws io::InputError naming file, key and value.
 MaterialPointScene read_scene_file(const std::string& path);
 
+// The [scene] kind of a scene file (material-point kinds or "shell_benchmark"); throws
+// io::InputError for a missing file, a syntax error or a missing kind.
+std::string scene_kind(const std::string& path);
+
 // Kinds spifit knows; FE kinds are listed with the issue that brings them.
 std::string known_scene_kinds();
 

@@ -90,9 +90,11 @@ void patch(ShellBenchmark& b, bool bending, int points) {
     for (int n : m.mesh().node_sets.at("inner")) {
       const auto u = exact(m.mesh().nodes[static_cast<std::size_t>(n)]);
       const Eigen::Vector3d du = m.displacement(n);
-      // Small rotations: the director change gives (theta_y, -theta_x).
-      const Eigen::Vector3d dd = m.director(n) - m.reference_director(n);
-      const double rot[2] = {-dd.y(), dd.x()};
+      // Rotation vector taking the reference director to the current one (exact).
+      const Eigen::Vector3d axis = m.reference_director(n).cross(m.director(n));
+      const double angle = std::atan2(axis.norm(), m.reference_director(n).dot(m.director(n)));
+      const Eigen::Vector3d psi = axis.norm() > 0.0 ? Eigen::Vector3d(angle / axis.norm() * axis) : Eigen::Vector3d::Zero();
+      const double rot[2] = {psi.x(), psi.y()};
       for (int k = 0; k < 3; ++k) {
         err = std::max(err, std::abs(du(k) - u(k)));
         scale = std::max(scale, std::abs(u(k)));

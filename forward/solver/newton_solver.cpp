@@ -151,6 +151,7 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     if (options_.linear) return true;
     const double inc = problem_.increment_from_committed().norm();
     const double step = alpha * du.norm();
+    report->correction_norms.push_back(step);
     if (rel <= options_.force_tolerance && (step <= options_.displacement_tolerance * std::max(inc, 1e-300) ||
                                             rel <= 1e-3 * options_.force_tolerance))
       return true;

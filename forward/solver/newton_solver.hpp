@@ -20,7 +20,7 @@ struct NewtonOptions {
   double min_increment = 1e-5;
   double max_increment = 0.25;
   double growth = 1.5;              // after an increment converged in <= easy_iterations
-  int easy_iterations = 5;
+  int easy_iterations = 8;  // large-rotation shell increments typically need 5-9
   double cutback = 0.25;            // increment x cutback after a failure (or the element's suggestion if smaller)
   int max_iterations = 20;
   double force_tolerance = 1e-7;    // |r| <= tol x force scale
@@ -45,6 +45,7 @@ struct IncrementReport {
   int iterations = 0;
   int line_searches = 0;
   std::vector<double> residual_norms;  // relative, one per iteration (first: before the first correction)
+  std::vector<double> correction_norms;  // |alpha du| of each iteration (reduced unknowns)
 };
 
 struct NewtonSummary {

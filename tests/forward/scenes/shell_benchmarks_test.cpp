@@ -4,38 +4,67 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 
 namespace spifit::scene {
 namespace {
 
 struct Outcome {
-  double value = 0.0, reference = 0.0;
+  double value = 0.0, reference = 0.0, error = 0.0;
   nlohmann::json details;
   solver::NewtonSummary summary;
 };
 
 Outcome run(const std::string& name, int mesh = 0, int points = 0) {
-  ShellBenchmarkSetup s{name, mesh, points};
-  ShellBenchmark b = make_shell_benchmark(s);
+  ShellBenchmark b = make_shell_benchmark({name, mesh, points});
   solver::NewtonSolver solver(*b.model, *b.constraints, b.solver);
   Outcome o;
   o.summary = solver.solve();
+  EXPECT_TRUE(o.summary.converged) << name << ": " << o.summary.message;
   o.value = b.value(*b.model);
   o.reference = b.reference;
+  o.error = o.value / o.reference - 1.0;
   if (b.details) o.details = b.details(*b.model);
-  std::printf("%-26s mesh %3d: value %.6g reference %.6g ratio %.5f (%d increments, %d iterations) %s\n", name.c_str(), mesh,
-              o.value, o.reference, o.value / o.reference, o.summary.increments, o.summary.iterations, o.details.dump().c_str());
+  std::printf("%-26s mesh %3d, %2d points: value %.6g, reference %.6g, error %+.3f %% (%d increments, %d iterations) %s\n",
+              name.c_str(), mesh, points, o.value, o.reference, 100.0 * o.error, o.summary.increments, o.summary.iterations,
+              o.details.is_null() ? "" : o.details.dump().c_str());
   return o;
 }
 
-TEST(ShellBenchmarks, Explore) {
-  const char* only = std::getenv("BENCH");
-  for (const auto& n : shell_benchmark_names()) {
-    if (only && n != only) continue;
-    const int mesh = std::getenv("MESH") ? std::atoi(std::getenv("MESH")) : 0;
-    run(n, mesh);
-  }
+TEST(ShellBenchmarks, PatchTestsPassToRoundOff) {
+  const Outcome m = run("membrane_patch");
+  EXPECT_LT(m.details["max_interior_error_relative"].get<double>(), 1e-12);
+  const Outcome b = run("bending_patch");
+  // Round-off of a thin plate (t = 0.001): membrane/bending stiffness ratio ~ (L/t)^2.
+  EXPECT_LT(b.details["max_interior_error_relative"].get<double>(), 1e-10);
+}
+
+TEST(ShellBenchmarks, LinearBenchmarksWithinTwoPercentOnStandardMeshes) {
+  for (const char* name : {"cantilever_shear", "scordelis_lo", "pinched_hemisphere", "twisted_beam_in_plane", "twisted_beam_out_of_plane"})
+    EXPECT_LT(std::abs(run(name).error), 0.02) << name;
+}
+
+TEST(ShellBenchmarks, CoarseQuarterMeshesWithinFivePercent) {
+  EXPECT_LT(std::abs(run("scordelis_lo", 8).error), 0.05);
+  EXPECT_LT(std::abs(run("pinched_hemisphere", 8).error), 0.05);
+}
+
+TEST(ShellBenchmarks, EndMomentClosesTheStripIntoACircle) {
+  const Outcome o = run("rollup");
+  EXPECT_LT(std::abs(o.error), 0.01);
+  EXPECT_LT(o.details["closure_gap_over_length"].get<double>(), 0.01);
+  // Second-order convergence of the gap with the mesh (director interpolation of the arc).
+  const double coarse = run("rollup", 16).details["closure_gap_over_length"].get<double>();
+  EXPECT_GT(coarse / o.details["closure_gap_over_length"].get<double>(), 3.5);
+}
+
+TEST(ShellBenchmarks, LimitMomentOfThePerfectlyPlasticStrip) {
+  // Gauss-Legendre through the thickness integrates the fully plastic (sign-like) stress
+  // inexactly: sum w |zeta| = 0.9875 with 11 points, 0.9449 with 5 (thickness_rule_test).
+  const Outcome eleven = run("limit_moment", 0, 11);
+  const Outcome five = run("limit_moment", 0, 5);
+  EXPECT_NEAR(eleven.error, 0.98752 / (1.0 - 1.0 / 2700.0) - 1.0, 0.004);
+  EXPECT_LT(std::abs(eleven.error), 0.02);
+  EXPECT_NEAR(five.error, 0.94485 / (1.0 - 1.0 / 2700.0) - 1.0, 0.006);
 }
 
 }  // namespace

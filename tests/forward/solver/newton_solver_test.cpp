@@ -1,0 +1,176 @@
+#include "forward/mesh/benchmark_meshes.hpp"
+#include "forward/mesh/disc_mesh.hpp"
+#include "forward/model/cyclic_symmetry.hpp"
+#include "forward/model/shell_model.hpp"
+#include "forward/scenes/shell_benchmarks.hpp"
+#include "forward/solver/newton_solver.hpp"
+
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace spifit::solver {
+namespace {
+
+using model::ShellModel;
+
+material::MaterialParams<double> aluminium(bool plastic) {
+  material::MaterialParams<double> p;
+  p.E = 70000.0; p.nu = 0.3; p.K = 100.0; p.eps0 = 0.001; p.n = 0.2; p.plastic = plastic;
+  return p;
+}
+
+// A thick cantilever strip (10 x 1 x 1, 10 x 2 elements) under a large tip load, solved in one
+// increment (the solver may cut it back); returns the Newton corrections of the first
+// converged increment.
+std::vector<double> cantilever_corrections(bool plastic, double load) {
+  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 2);
+  ShellModel model(m, 1.0, aluminium(plastic), {});
+  DofConstraints c(model.num_dofs());
+  for (int n : m.node_sets.at("clamped"))
+    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
+  for (int n : m.node_sets.at("tip")) model.add_nodal_load(ShellModel::dof(n, 2), load / 3.0);
+  c.finalize();
+  NewtonOptions o;
+  o.initial_increment = o.max_increment = 1.0;
+  o.max_iterations = 30;
+  o.force_tolerance = 1e-9;
+  NewtonSolver s(model, c, o);
+  const NewtonSummary summary = s.solve();
+  EXPECT_TRUE(summary.converged) << summary.message;
+  const IncrementReport& r = summary.history.at(0);
+  std::printf("%s, tip load %g: tip deflection %.4f\n  residuals:", plastic ? "plastic" : "elastic", load,
+              model.displacement(m.node_sets.at("tip_centre")[0]).z());
+  for (double v : r.residual_norms) std::printf(" %.2e", v);
+  std::printf("\n  corrections:");
+  for (double v : r.correction_norms) std::printf(" %.2e", v);
+  std::printf("\n");
+  return r.correction_norms;
+}
+
+// Order of convergence from the last three corrections above the round-off floor.
+double convergence_order(const std::vector<double>& d) {
+  std::vector<double> e;
+  for (double v : d)
+    if (v > 1e-11 * d.front()) e.push_back(v);
+  if (e.size() < 3) return 0.0;
+  const std::size_t k = e.size() - 1;
+  return std::log(e[k] / e[k - 1]) / std::log(e[k - 1] / e[k - 2]);
+}
+
+TEST(NewtonSolver, ConvergesQuadraticallyWithTheExactTangent) {
+  const double p_elastic = convergence_order(cantilever_corrections(false, 300.0));
+  const double p_plastic = convergence_order(cantilever_corrections(true, 3.0));
+  std::printf("order of convergence: elastic %.2f, plastic %.2f\n", p_elastic, p_plastic);
+  EXPECT_GT(p_elastic, 1.6);
+  EXPECT_GT(p_plastic, 1.6);
+}
+
+TEST(NewtonSolver, ResultsDoNotDependOnTheThreadCount) {
+  std::vector<Eigen::Vector3d> first;
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    scene::ShellBenchmark b = scene::make_shell_benchmark({"scordelis_lo", 8, 5});
+    NewtonSolver s(*b.model, *b.constraints, b.solver);
+    ASSERT_TRUE(s.solve().converged);
+    std::vector<Eigen::Vector3d> u;
+    for (int n = 0; n < b.model->num_nodes(); ++n) u.push_back(b.model->displacement(n));
+    if (first.empty()) first = u;
+    else
+      for (std::size_t i = 0; i < u.size(); ++i) EXPECT_EQ(u[i], first[i]) << "node " << i;  // bitwise
+  }
+}
+
+TEST(DofConstraints, ExpandsAndReducesWithTies) {
+  DofConstraints c(4);
+  c.prescribe(0, 2.0);
+  c.tie(3, {{1, 0.5}, {0, 1.0}});  // u3 = 0.5 u1 + u0 = 0.5 u1 + 2 lambda
+  c.finalize();
+  EXPECT_EQ(c.num_reduced(), 2);
+  EXPECT_DOUBLE_EQ(c.amplitude(3), 2.0);
+  const Eigen::VectorXd full = c.expand(Eigen::Vector2d(4.0, 6.0));
+  EXPECT_DOUBLE_EQ(full(1), 4.0);
+  EXPECT_DOUBLE_EQ(full(2), 6.0);
+  EXPECT_DOUBLE_EQ(full(3), 2.0);
+  const Eigen::VectorXd red = c.reduce(Eigen::Vector4d(1.0, 1.0, 1.0, 1.0));  // T^T f
+  EXPECT_DOUBLE_EQ(red(0), 1.5);
+  EXPECT_DOUBLE_EQ(red(1), 1.0);
+}
+
+TEST(DofConstraints, InconsistentConstraintsAreErrors) {
+  auto expect_error = [](const std::function<void(DofConstraints&)>& f, const std::string& fragment) {
+    DofConstraints c(6);
+    try {
+      f(c);
+      c.finalize();
+      ADD_FAILURE() << "no error for " << fragment;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("inconsistent constraint"), std::string::npos) << e.what();
+    }
+  };
+  expect_error([](DofConstraints& c) { c.prescribe(1, 1.0); c.prescribe(1, 2.0); }, "prescribed to");
+  expect_error([](DofConstraints& c) { c.prescribe(1); c.tie(1, {{2, 1.0}}); }, "prescribed and tied");
+  expect_error([](DofConstraints& c) { c.tie(1, {{2, 1.0}}); c.tie(2, {{3, 1.0}}); }, "chains");
+  expect_error([](DofConstraints& c) { c.tie(1, {{1, 1.0}}); }, "itself");
+  expect_error([](DofConstraints& c) { c.prescribe(9); }, "out of range");
+}
+
+TEST(CyclicSymmetry, PieReproducesTheHomogeneousExpansionOfADisc) {
+  // A 90 deg pie whose second edge is tied to the rotated first edge, rim pushed out by 1 %:
+  // the exact solution is the homogeneous equibiaxial expansion u = 0.01 x everywhere.
+  mesh::DiscOptions o;
+  o.radius = 10.0;
+  o.angle_deg = 90.0;
+  o.elements_per_45deg = 4;
+  const mesh::Mesh m = mesh::disc_mesh(o);
+  ShellModel model(m, 0.5, aluminium(false), {});
+  DofConstraints c(model.num_dofs());
+  model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", 90.0, &c);
+  for (int n : m.node_sets.at("rim")) {
+    const Eigen::Vector3d& p = m.nodes[static_cast<std::size_t>(n)];
+    if (c.tied(ShellModel::dof(n, 0))) continue;  // the rim node on the second edge follows its partner
+    c.prescribe(ShellModel::dof(n, 0), 0.01 * p.x());
+    c.prescribe(ShellModel::dof(n, 1), 0.01 * p.y());
+  }
+  for (int n = 0; n < m.num_nodes(); ++n)
+    if (!c.tied(ShellModel::dof(n, 2))) c.prescribe(ShellModel::dof(n, 2));
+  c.finalize();
+  NewtonOptions no;
+  no.linear = true;
+  no.initial_increment = no.max_increment = 1.0;
+  NewtonSolver s(model, c, no);
+  ASSERT_TRUE(s.solve().converged);
+  double err = 0.0;
+  for (int n = 0; n < m.num_nodes(); ++n)
+    err = std::max(err, (model.displacement(n) - 0.01 * Eigen::Vector3d(m.nodes[static_cast<std::size_t>(n)].x(), m.nodes[static_cast<std::size_t>(n)].y(), 0.0)).norm());
+  std::printf("cyclic pie: largest displacement error %.3e mm (rim displacement 0.1 mm)\n", err);
+  EXPECT_LT(err, 1e-12);
+}
+
+TEST(NewtonSolver, StopsAtTheMinimumIncrementAndSaysWhereAndWhy) {
+  scene::ShellBenchmark b = scene::make_shell_benchmark({"limit_moment", 4, 5});
+  b.solver.max_iterations = 1;  // cannot converge
+  b.solver.min_increment = 1e-3;
+  b.solver.initial_increment = 0.02;
+  int increments = 0;
+  NewtonSolver s(*b.model, *b.constraints, b.solver);
+  const NewtonSummary r = s.solve(1.0, [&](const IncrementReport&) { return ++increments, true; });
+  EXPECT_FALSE(r.converged);
+  EXPECT_NE(r.message.find("minimum increment"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("no convergence in 1 iterations"), std::string::npos) << r.message;
+  EXPECT_GT(r.cutbacks, 0);
+}
+
+TEST(NewtonOptions, ValidateNamesTheProblem) {
+  NewtonOptions o;
+  EXPECT_EQ(o.validate(), "");
+  o.min_increment = 0.5;
+  EXPECT_NE(o.validate().find("min_increment"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace spifit::solver
