@@ -125,6 +125,7 @@ ShellSceneReport run_shell_benchmark_scene(const ShellBenchmarkScene& scene, con
   if (scene.vtu) {
     std::filesystem::create_directories(out.path() / "vtu");
     pvd = std::make_unique<io::PvdCollection>(out.path() / "vtu", "shell");
+    pvd->write_step(0.0, *b.mesh, b.model->vtu_frame());  // the initial state
   }
   std::ostringstream inc;
   inc << "# spifit shell benchmark " << scene.name << ": Newton convergence per increment\n"
