@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # README command 1: install missing packages, build, and run the main job: the bundled
 # AA3003-O identification (fit_classic: measured r-values + synthetic curves from card C.2),
-# then the N-conflict fit and the bundled material-point scenes.
+# then the N-conflict fit, the bundled material-point scenes and the shell benchmarks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/build.sh
@@ -20,4 +20,10 @@ echo "== AA3003-O material-point scenes (results in $out/scenes/<scene>/) =="
 for scene in experiments/aa3003o/scenes/*.toml; do
   name=$(basename "$scene" .toml)
   "$spifit" run "$scene" --out "$out/scenes/$name" --force
+done
+echo
+echo "== Shell element obstacle course (experiments/benchmarks; results in $out/benchmarks/<name>/) =="
+for scene in experiments/benchmarks/*.toml; do
+  name=$(basename "$scene" .toml)
+  "$spifit" run "$scene" --out "$out/benchmarks/$name" --force
 done
