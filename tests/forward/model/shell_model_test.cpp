@@ -1,0 +1,98 @@
+#include "forward/mesh/benchmark_meshes.hpp"
+#include "forward/mesh/square_sheet.hpp"
+#include "forward/model/shell_model.hpp"
+#include "forward/scenes/shell_benchmarks.hpp"
+#include "forward/solver/newton_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <numeric>
+#include <stdexcept>
+
+namespace spifit::model {
+namespace {
+
+material::MaterialParams<double> steel() {
+  material::MaterialParams<double> p;
+  p.E = 210000.0; p.nu = 0.3; p.plastic = false;
+  return p;
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const std::invalid_argument& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(ShellModel, DegenerateElementsAreErrorsNamingTheElement) {
+  mesh::Mesh m = mesh::strip(4.0, 1.0, 4, 1);
+  m.nodes[7] = m.nodes[2];  // element 1 and 2 collapse an edge
+  const std::string err = error_of([&] { ShellModel sm(m, 0.1, steel(), {}); });
+  EXPECT_NE(err.find("element 1"), std::string::npos) << err;
+  mesh::Mesh flat = mesh::strip(4.0, 1.0, 4, 1);
+  for (auto& p : flat.nodes) p.y() = 0.0;  // zero area everywhere
+  EXPECT_NE(error_of([&] { ShellModel sm(flat, 0.1, steel(), {}); }), "");
+}
+
+TEST(ShellModel, ThicknessOverLengthWarnsAboveOneAndRefusesAboveThree) {
+  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 1);  // 1 mm elements
+  ShellModel ok(m, 0.5, steel(), {});
+  EXPECT_TRUE(ok.warnings().empty());
+  ShellModel warned(m, 1.7, steel(), {});  // the thesis's fine cone mesh
+  ASSERT_EQ(warned.warnings().size(), 1u);
+  EXPECT_NE(warned.warnings()[0].find("t/l = 1.7"), std::string::npos) << warned.warnings()[0];
+  const std::string err = error_of([&] { ShellModel sm(m, 3.5, steel(), {}); });
+  EXPECT_NE(err.find("t/l = 3.5"), std::string::npos) << err;
+}
+
+TEST(ShellModel, UnsupportedThicknessPointCountIsAnError) {
+  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 1);
+  ShellModelOptions o;
+  o.shell.thickness_points = 12;
+  EXPECT_NE(error_of([&] { ShellModel sm(m, 0.5, steel(), o); }).find("thickness points"), std::string::npos);
+}
+
+TEST(ShellModel, LumpedMassAddsUpToThePlateMass) {
+  mesh::SquareSheetOptions so;
+  so.length_x = so.length_y = 100.0;
+  so.nx = so.ny = 10;
+  const mesh::Mesh m = mesh::square_sheet(so);
+  ShellModel sm(m, 1.2, steel(), {});
+  const auto mass = sm.lumped_mass();
+  const double total = std::accumulate(mass.translational.begin(), mass.translational.end(), 0.0);
+  EXPECT_NEAR(total / (2.7e-9 * 1.2 * 100.0 * 100.0), 1.0, 1e-13);
+  // Corner node: a quarter of one element (10 x 10 mm); rotary term max(t^2, A)/12 = A/12.
+  const int corner = 0;
+  EXPECT_NEAR(mass.translational[corner] / (2.7e-9 * 1.2 * 100.0 / 4.0), 1.0, 1e-13);
+  EXPECT_NEAR(mass.rotational[corner] / (mass.translational[corner] * 100.0 / 12.0), 1.0, 1e-13);
+}
+
+TEST(ShellModel, VtuFrameHasEveryArrayAtTheRightSize) {
+  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 2);
+  ShellModel sm(m, 0.5, steel(), {});
+  const io::VtuFrame f = sm.vtu_frame();
+  ASSERT_EQ(f.point_data.size(), 3u);
+  for (const auto& a : f.point_data) EXPECT_EQ(a.values.size(), static_cast<std::size_t>(a.components * m.num_nodes())) << a.name;
+  ASSERT_EQ(f.cell_data.size(), 4u);
+  for (const auto& a : f.cell_data) EXPECT_EQ(a.values.size(), static_cast<std::size_t>(a.components * m.num_elements())) << a.name;
+}
+
+TEST(ShellModel, CholmodAndUmfpackAgreeOnASymmetricProblem) {
+  double values[2];
+  for (int k = 0; k < 2; ++k) {
+    scene::ShellBenchmark b = scene::make_shell_benchmark({"pinched_hemisphere", 8, 5});
+    b.solver.linear_solver = k == 0 ? solver::LinearSolverKind::umfpack : solver::LinearSolverKind::cholmod;
+    solver::NewtonSolver s(*b.model, *b.constraints, b.solver);
+    const auto r = s.solve();
+    ASSERT_TRUE(r.converged) << r.message;
+    EXPECT_EQ(r.symbolic_analyses, 1);
+    values[k] = b.value(*b.model);
+  }
+  EXPECT_NEAR(values[1] / values[0], 1.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace spifit::model
