@@ -33,6 +33,7 @@ namespace spifit::element {
 
 struct ShellOptions {
   int thickness_points = 5;
+  ThicknessRuleKind thickness_rule = ThicknessRuleKind::gauss;
   double shear_factor = 5.0 / 6.0;
   double drilling_factor = 1e-4;           // x mean rotational stiffness of the element
   // In-plane shear strain taken at the element centre (selective reduced integration): removes

@@ -11,7 +11,7 @@ namespace spifit::model {
 
 ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
                        const ShellModelOptions& options)
-    : mesh_(&mesh), options_(options), law_(material), rule_(element::gauss_legendre_rule(options.shell.thickness_points)),
+    : mesh_(&mesh), options_(options), law_(material), rule_(element::make_thickness_rule(options.shell.thickness_rule, options.shell.thickness_points)),
       thickness_(thickness) {
   if (!(thickness > 0.0)) throw std::invalid_argument("thickness must be > 0, got " + std::to_string(thickness));
   const int nn = mesh.num_nodes(), ne = mesh.num_elements();

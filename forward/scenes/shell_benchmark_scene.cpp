@@ -30,7 +30,7 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
   root.allow_only({"scene", "solver", "output"});
   const auto sc = root.table("scene");
   if (!sc) root.fail("scene", "required table [scene] is missing");
-  sc->allow_only({"kind", "name", "description", "benchmark", "mesh", "thickness_points"});
+  sc->allow_only({"kind", "name", "description", "benchmark", "mesh", "thickness_points", "thickness_rule"});
   if (sc->string("kind") != "shell_benchmark") sc->fail("kind", "expected \"shell_benchmark\"");
   ShellBenchmarkScene s;
   s.file = path;
@@ -46,6 +46,13 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
   if (sc->has("thickness_points") && !(s.setup.thickness_points >= element::kMinThicknessPoints &&
                                        s.setup.thickness_points <= element::kMaxThicknessPoints))
     sc->fail("thickness_points", "unsupported number of thickness points (1 to 11)");
+  if (sc->has("thickness_rule")) {
+    if (!element::thickness_rule_from_string(sc->string("thickness_rule"), &s.setup.thickness_rule))
+      sc->fail("thickness_rule", "expected \"gauss\" or \"surface\"");
+    if (s.setup.thickness_rule == element::ThicknessRuleKind::surface && s.setup.thickness_points > 0 &&
+        (s.setup.thickness_points < 3 || s.setup.thickness_points % 2 == 0))
+      sc->fail("thickness_points", "the surface rule needs an odd count from 3 to 11");
+  }
   if (const auto so = root.table("solver")) {
     so->allow_only({"initial_increment", "min_increment", "max_increment", "max_iterations", "force_tolerance",
                     "displacement_tolerance", "line_search", "linear_solver"});
@@ -68,9 +75,10 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
     if (so->has("line_search")) s.line_search = so->boolean("line_search", false);
     if (so->has("linear_solver")) {
       const std::string k = so->string("linear_solver");
-      if (k == "umfpack") s.linear_solver = solver::LinearSolverKind::umfpack;
+      if (k == "auto") s.linear_solver = solver::LinearSolverKind::automatic;
+      else if (k == "umfpack") s.linear_solver = solver::LinearSolverKind::umfpack;
       else if (k == "cholmod") s.linear_solver = solver::LinearSolverKind::cholmod;
-      else so->fail("linear_solver", "expected \"umfpack\" or \"cholmod\"");
+      else so->fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
     }
   }
   if (const auto out = root.table("output")) {
@@ -116,6 +124,7 @@ ShellSceneReport run_shell_benchmark_scene(const ShellBenchmarkScene& scene, con
   s["mesh"] = {{"elements", b.model->num_elements()}, {"nodes", b.model->num_nodes()}, {"dofs", b.model->num_dofs()},
                {"reduced_dofs", b.constraints->num_reduced()}, {"thickness", b.thickness},
                {"thickness_points", b.model->element(0).section(0).layers()},
+               {"thickness_rule", element::to_string(b.thickness_rule)},
                {"max_thickness_over_length", b.model->max_thickness_over_length()}};
   s["warnings"] = b.model->warnings();
   s["status"] = "running";
@@ -155,7 +164,8 @@ ShellSceneReport run_shell_benchmark_scene(const ShellBenchmarkScene& scene, con
   s["wall_seconds"] = wall;
   s["solver"] = {{"increments", r.increments}, {"iterations", r.iterations}, {"cutbacks", r.cutbacks},
                  {"factorisations", r.factorisations}, {"symbolic_analyses", r.symbolic_analyses},
-                 {"linear_solver", o.linear_solver == solver::LinearSolverKind::umfpack ? "umfpack" : "cholmod"},
+                 {"linear_solver", solver::to_string(o.linear_solver)},
+                 {"cholmod_factorisations", r.cholmod_factorisations}, {"umfpack_factorisations", r.umfpack_factorisations},
                  {"load_factor", r.lambda}};
   s["message"] = r.message;
   if (!r.converged) {

@@ -33,6 +33,7 @@ void build(ShellBenchmark& b, mesh::Mesh m, double thickness, const material::Ma
   b.thickness = thickness;
   model::ShellModelOptions o;
   o.shell.thickness_points = points;
+  o.shell.thickness_rule = b.thickness_rule;
   b.model = std::make_unique<ShellModel>(*b.mesh, thickness, mat, o);
   b.constraints = std::make_unique<solver::DofConstraints>(b.model->num_dofs());
 }
@@ -259,6 +260,7 @@ std::string shell_benchmark_defaults(const std::string& name) {
 ShellBenchmark make_shell_benchmark(const ShellBenchmarkSetup& s) {
   ShellBenchmark b;
   b.benchmark = s.benchmark;
+  b.thickness_rule = s.thickness_rule;
   const auto pick = [&](int fallback) { return s.mesh > 0 ? s.mesh : fallback; };
   const int points = s.thickness_points > 0 ? s.thickness_points : (s.benchmark == "limit_moment" ? 11 : 5);
   if (s.mesh < 0) throw std::invalid_argument("mesh must be >= 1");

@@ -21,6 +21,7 @@ struct ShellBenchmarkSetup {
   std::string benchmark;      // see shell_benchmark_names()
   int mesh = 0;               // elements per side / along the length; 0 = the benchmark's default
   int thickness_points = 0;   // 0 = the benchmark's default
+  element::ThicknessRuleKind thickness_rule = element::ThicknessRuleKind::gauss;
 };
 
 // A model ready to solve. `mesh` is owned here and outlives `model`.
@@ -35,6 +36,7 @@ struct ShellBenchmark {
   std::unique_ptr<model::ShellModel> model;
   std::unique_ptr<solver::DofConstraints> constraints;
   double thickness = 0.0;
+  element::ThicknessRuleKind thickness_rule = element::ThicknessRuleKind::gauss;
   std::function<double(model::ShellModel&)> value;
   std::function<nlohmann::json(model::ShellModel&)> details;  // extra numbers for summary.json
 };

@@ -25,7 +25,11 @@ class LinearSolver {
   int symbolic_ = 0, numeric_ = 0;
 };
 
-enum class LinearSolverKind { umfpack, cholmod };
+// automatic: CHOLMOD when the assembled matrix is symmetric (to 1e-10 of its largest entry),
+// UMFPACK otherwise; decided at every factorisation by the Newton solver.
+enum class LinearSolverKind { automatic, umfpack, cholmod };
+const char* to_string(LinearSolverKind kind);
+// umfpack or cholmod (automatic gives UMFPACK).
 std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind);
 
 }  // namespace spifit::solver

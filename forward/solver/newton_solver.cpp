@@ -25,7 +25,25 @@ NewtonSolver::NewtonSolver(NonlinearProblem& problem, const DofConstraints& cons
     : problem_(problem), constraints_(constraints), options_(options) {
   assembler_ = std::make_unique<ReducedAssembler>(constraints, problem.element_dofs());
   k_ = std::make_unique<SparseMatrix>(assembler_->pattern());
-  linear_ = make_linear_solver(options.linear_solver);
+}
+
+LinearSolver& NewtonSolver::umfpack() {
+  if (!umfpack_) umfpack_ = make_linear_solver(LinearSolverKind::umfpack);
+  return *umfpack_;
+}
+
+LinearSolver& NewtonSolver::cholmod() {
+  if (!cholmod_) cholmod_ = make_linear_solver(LinearSolverKind::cholmod);
+  return *cholmod_;
+}
+
+LinearSolver& NewtonSolver::linear_solver() {
+  switch (options_.linear_solver) {
+    case LinearSolverKind::umfpack: return umfpack();
+    case LinearSolverKind::cholmod: return cholmod();
+    case LinearSolverKind::automatic: break;
+  }
+  return k_->is_symmetric(1e-10) ? cholmod() : umfpack();
 }
 
 NewtonSolver::~NewtonSolver() = default;
@@ -74,15 +92,16 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
 }
 
 bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error) {
-  if (linear_->factorize(*k_) && linear_->solve(rhs, x)) return true;
-  if (options_.linear_solver == LinearSolverKind::cholmod) {
+  LinearSolver& first = linear_solver();
+  if (first.factorize(*k_) && first.solve(rhs, x)) return true;
+  if (&first == cholmod_.get()) {
     // Not positive definite (e.g. past a limit point): the general solver still applies.
-    if (!fallback_) fallback_ = make_linear_solver(LinearSolverKind::umfpack);
-    if (fallback_->factorize(*k_) && fallback_->solve(rhs, x)) return true;
-    *error = fallback_->error();
+    LinearSolver& general = umfpack();
+    if (general.factorize(*k_) && general.solve(rhs, x)) return true;
+    *error = general.error();
     return false;
   }
-  *error = linear_->error();
+  *error = first.error();
   return false;
 }
 
@@ -204,8 +223,10 @@ NewtonSummary NewtonSolver::solve(double lambda_end, const IncrementCallback& ca
   }
   summary.converged = summary.lambda >= lambda_end - 1e-12;
   if (summary.converged && summary.message.empty()) summary.message = "converged";
-  summary.factorisations = linear_->numeric_factorisations() + (fallback_ ? fallback_->numeric_factorisations() : 0);
-  summary.symbolic_analyses = linear_->symbolic_analyses() + (fallback_ ? fallback_->symbolic_analyses() : 0);
+  summary.cholmod_factorisations = cholmod_ ? cholmod_->numeric_factorisations() : 0;
+  summary.umfpack_factorisations = umfpack_ ? umfpack_->numeric_factorisations() : 0;
+  summary.factorisations = summary.cholmod_factorisations + summary.umfpack_factorisations;
+  summary.symbolic_analyses = (cholmod_ ? cholmod_->symbolic_analyses() : 0) + (umfpack_ ? umfpack_->symbolic_analyses() : 0);
   return summary;
 }
 

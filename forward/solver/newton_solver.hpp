@@ -30,7 +30,7 @@ struct NewtonOptions {
   // element fails are halved whatever this says.
   bool line_search = false;
   int max_line_search = 6;
-  LinearSolverKind linear_solver = LinearSolverKind::umfpack;
+  LinearSolverKind linear_solver = LinearSolverKind::automatic;
   int element_chunk = 2048;
   // Linear analysis: one increment, one solve from the reference state, no equilibrium
   // iterations (patch tests and the linear benchmarks).
@@ -53,6 +53,7 @@ struct NewtonSummary {
   double lambda = 0.0;            // last converged load factor
   int increments = 0, iterations = 0, cutbacks = 0;
   int factorisations = 0, symbolic_analyses = 0;
+  int cholmod_factorisations = 0, umfpack_factorisations = 0;
   std::string message;            // why it stopped (failure: where and why)
   std::vector<IncrementReport> history;
 };
@@ -72,7 +73,8 @@ class NewtonSolver {
   };
   Assembly assemble(double lambda, bool with_tangent, const Eigen::VectorXd* dg_full);
   SparseMatrix& tangent() { return *k_; }
-  LinearSolver& linear_solver() { return *linear_; }
+  // The solver the next factorisation would use (automatic: by the tangent's symmetry).
+  LinearSolver& linear_solver();
 
  private:
   NonlinearProblem& problem_;
@@ -80,8 +82,9 @@ class NewtonSolver {
   NewtonOptions options_;
   std::unique_ptr<class ReducedAssembler> assembler_;
   std::unique_ptr<SparseMatrix> k_;
-  std::unique_ptr<LinearSolver> linear_;
-  std::unique_ptr<LinearSolver> fallback_;
+  std::unique_ptr<LinearSolver> umfpack_, cholmod_;
+  LinearSolver& umfpack();
+  LinearSolver& cholmod();
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error);
   // Returns false (with a message) when the increment fails.
   bool increment(double lambda0, double lambda1, IncrementReport* report, ElementEvaluation* failure);

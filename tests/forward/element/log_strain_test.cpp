@@ -80,5 +80,31 @@ TEST(ThicknessRule, FullyPlasticMomentIsUnderIntegrated) {
   EXPECT_NEAR(plastic(11), 0.987523, 1e-6);  // still 1.25 % short
 }
 
+TEST(ThicknessRule, SurfaceRuleHasSurfaceAndMidPointsAndIntegratesBendingExactly) {
+  for (int n = 3; n <= 11; n += 2) {
+    const ThicknessRule r = make_thickness_rule(ThicknessRuleKind::surface, n);
+    ASSERT_EQ(static_cast<int>(r.zeta.size()), n);
+    EXPECT_DOUBLE_EQ(r.zeta.front(), -1.0);
+    EXPECT_DOUBLE_EQ(r.zeta.back(), 1.0);
+    EXPECT_NEAR(r.zeta[static_cast<std::size_t>(n / 2)], 0.0, 1e-15);
+    const int m = (n + 1) / 2;  // Lobatto points per half: exact to degree 2m - 3 on each half
+    double plastic = 0.0;
+    for (std::size_t i = 0; i < r.zeta.size(); ++i) plastic += r.weight[i] * std::abs(r.zeta[i]);
+    EXPECT_NEAR(plastic, 1.0, 1e-14) << n;  // the fully plastic moment, exactly
+    for (int degree = 0; degree <= 2 * m - 3; ++degree) {
+      double s = 0.0;
+      for (std::size_t i = 0; i < r.zeta.size(); ++i) s += r.weight[i] * std::pow(r.zeta[i], degree);
+      EXPECT_NEAR(s, degree % 2 == 1 ? 0.0 : 2.0 / (degree + 1.0), 1e-14) << n << " points, degree " << degree;
+    }
+  }
+  // 5 points = Simpson's rule on each half: weights (1, 4, 2, 4, 1) / 6.
+  const ThicknessRule simpson = make_thickness_rule(ThicknessRuleKind::surface, 5);
+  const double expected[5] = {1.0 / 6.0, 4.0 / 6.0, 2.0 / 6.0, 4.0 / 6.0, 1.0 / 6.0};
+  for (int i = 0; i < 5; ++i) EXPECT_NEAR(simpson.weight[static_cast<std::size_t>(i)], expected[i], 1e-15);
+  EXPECT_THROW(make_thickness_rule(ThicknessRuleKind::surface, 4), std::invalid_argument);
+  EXPECT_THROW(make_thickness_rule(ThicknessRuleKind::surface, 1), std::invalid_argument);
+  EXPECT_THROW(make_thickness_rule(ThicknessRuleKind::surface, 13), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace spifit::element

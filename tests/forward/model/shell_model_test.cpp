@@ -94,5 +94,34 @@ TEST(ShellModel, CholmodAndUmfpackAgreeOnASymmetricProblem) {
   EXPECT_NEAR(values[1] / values[0], 1.0, 1e-9);
 }
 
+TEST(ShellModel, AutomaticLinearSolverFollowsTheTangentsSymmetry) {
+  // Elastic hemisphere: symmetric tangent, CHOLMOD only.
+  scene::ShellBenchmark b = scene::make_shell_benchmark({"pinched_hemisphere", 8, 5});
+  solver::NewtonSolver s(*b.model, *b.constraints, b.solver);
+  const auto r = s.solve();
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_GE(r.cholmod_factorisations, 1);
+  EXPECT_EQ(r.umfpack_factorisations, 0);
+  // Hill + Armstrong-Frederick (card C.7): the consistent tangent is non-symmetric once
+  // plastic, and UMFPACK takes over.
+  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 1);
+  material::MaterialParams<double> af;
+  af.F = 1.224; af.G = 1.193; af.H = 0.807; af.N = af.L = af.M = 4.06;
+  af.K = 111.0; af.eps0 = 5e-4; af.n = 0.266;
+  af.kinematic = material::KinematicLaw::armstrong_frederick; af.CX = 51.4; af.Xsat = 46.0;
+  ShellModel model(m, 1.0, af, {});
+  solver::DofConstraints c(model.num_dofs());
+  for (int n : m.node_sets.at("clamped"))
+    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
+  for (int n : m.node_sets.at("tip")) c.prescribe(ShellModel::dof(n, 0), 0.2);  // 2 % stretch
+  c.finalize();
+  solver::NewtonOptions o;
+  o.initial_increment = 0.25;
+  solver::NewtonSolver s2(model, c, o);
+  const auto r2 = s2.solve();
+  ASSERT_TRUE(r2.converged) << r2.message;
+  EXPECT_GT(r2.umfpack_factorisations, 0);
+}
+
 }  // namespace
 }  // namespace spifit::model
