@@ -89,6 +89,15 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
     area_ += pg.weight;
   }
   setup(centre_);
+  // Directors must agree with the element's orientation (consistently numbered mesh, no kink
+  // sharper than 60 degrees between neighbouring elements).
+  for (int i = 0; i < 4; ++i) {
+    const Eigen::Matrix<double, 2, 4> dn = shape_derivatives(kNodeXi[i], kNodeEta[i]);
+    const Eigen::Vector3d n = combine(dn.row(0).transpose(), X).cross(combine(dn.row(1).transpose(), X));
+    if (!(n.normalized().dot(D[static_cast<std::size_t>(i)]) > 0.5))
+      throw std::invalid_argument("node " + std::to_string(i) +
+                                  ": director at more than 60 deg from the element normal (inconsistent orientation of neighbouring elements?)");
+  }
   for (int t = 0; t < 4; ++t) {
     TyingPoint& tp = tying_[static_cast<std::size_t>(t)];
     tp.N = shape(kTieXi[t], kTieEta[t]);

@@ -18,6 +18,17 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
   kappa_trial_ = kappa;
   if (resultant) resultant->setZero();
   if (tangent) tangent->setZero();
+  {
+    const double c11 = 1.0 + 2.0 * e(0), c22 = 1.0 + 2.0 * e(1);
+    const double det = c11 * c22 - e(2) * e(2);
+    if (!(det > 1e-12 && c11 > 0.0 && c22 > 0.0)) {
+      status.ok = false;
+      status.reason = std::isfinite(det) ? "mid-surface stretched to a non-positive metric (det C = " + std::to_string(det) + ")"
+                                         : "non-finite strain";
+      status.suggested_scale = 0.25;
+      return status;
+    }
+  }
   for (std::size_t l = 0; l < points_.size(); ++l) {
     const double z = rule_->zeta[l] * 0.5 * h_;
     const double w = rule_->weight[l] * 0.5 * h0_;
@@ -45,7 +56,9 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
       return status;
     }
     if (tangent) {
-      if (d_eps.isZero(0.0)) ct = tangent_[l];  // start of an increment: last converged tangent
+      // Start of an increment (no strain change beyond round-off): the last converged
+      // consistent tangent instead of the elastic one.
+      if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_[l].cwiseAbs().maxCoeff())) ct = tangent_[l];
       tangent_trial_[l] = ct;
     }
     const Vec3& t = points_[l].trial().stress;
@@ -75,11 +88,11 @@ void ShellSection::commit() {
   e_committed_ = e_trial_;
   const double c11 = 1.0 + 2.0 * e_trial_(0), c22 = 1.0 + 2.0 * e_trial_(1);
   const double det = c11 * c22 - e_trial_(2) * e_trial_(2);
-  const double h_new = h0_ / std::sqrt(det);
+  const double h_new = det > 0.0 ? h0_ / std::sqrt(det) : h_;  // update() refused det <= 0
   if (h_new != h_) {
     h_ = h_new;
     for (std::size_t l = 0; l < points_.size(); ++l)
-      eps_[l] = eps_trial_[l] = log_strain_of_green<double>(e_trial_ + rule_->zeta[l] * 0.5 * h_ * kappa_trial_);
+      eps_[l] = eps_trial_[l] = log_strain_with_derivatives(e_trial_ + rule_->zeta[l] * 0.5 * h_ * kappa_trial_).value;
   }
 }
 

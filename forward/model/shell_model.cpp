@@ -16,6 +16,9 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
   if (!(thickness > 0.0)) throw std::invalid_argument("thickness must be > 0, got " + std::to_string(thickness));
   const int nn = mesh.num_nodes(), ne = mesh.num_elements();
   if (ne == 0) throw std::invalid_argument("the mesh has no element");
+  for (int e = 0; e < ne; ++e)
+    for (int i : mesh.quads[static_cast<std::size_t>(e)])
+      if (i < 0 || i >= nn) throw std::invalid_argument("element " + std::to_string(e) + " refers to node " + std::to_string(i) + " out of range");
   // Thickness over the shortest edge of each element.
   int worst = -1;
   for (int e = 0; e < ne; ++e) {
@@ -52,7 +55,8 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
   }
   for (int i = 0; i < nn; ++i) {
     const double len = d0_[static_cast<std::size_t>(i)].norm();
-    if (!(len > 0.0)) throw std::invalid_argument("node " + std::to_string(i) + " belongs to no element or only to degenerate ones");
+    if (!(len > 0.0)) throw std::invalid_argument("node " + std::to_string(i) +
+                                  ": the normals of its elements cancel (no element, degenerate elements or inconsistent orientation)");
     d0_[static_cast<std::size_t>(i)] /= len;
   }
   elements_.reserve(static_cast<std::size_t>(ne));
@@ -80,6 +84,11 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
 
 void ShellModel::add_nodal_load(int dof_index, double amplitude) {
   if (dof_index < 0 || dof_index >= num_dofs()) throw std::invalid_argument("load on DOF " + std::to_string(dof_index) + " out of range");
+  // The shell carries no moment about its director (the drilling rotation has no stiffness).
+  const int node = dof_index / 6, comp = dof_index % 6;
+  if (comp >= 3 && amplitude != 0.0 && std::abs(d0_[static_cast<std::size_t>(node)](comp - 3)) > 1e-8)
+    throw std::invalid_argument("moment about axis " + std::to_string(comp - 3) + " at node " + std::to_string(node) +
+                                " has a component about the shell normal (drilling), which the shell cannot carry");
   loads_.emplace_back(dof_index, amplitude);
 }
 

@@ -23,6 +23,25 @@ std::string join(const std::vector<std::string>& v) {
   return s;
 }
 
+// The benchmark's solver defaults with the scene's [solver] overrides.
+solver::NewtonOptions solver_options(const ShellBenchmarkScene& scene, const ShellBenchmark& b) {
+  solver::NewtonOptions o = b.solver;
+  if (scene.initial_increment) o.initial_increment = *scene.initial_increment;
+  if (scene.min_increment) o.min_increment = *scene.min_increment;
+  if (scene.max_increment) o.max_increment = *scene.max_increment;
+  if (scene.force_tolerance) o.force_tolerance = *scene.force_tolerance;
+  if (scene.displacement_tolerance) o.displacement_tolerance = *scene.displacement_tolerance;
+  if (scene.max_iterations) o.max_iterations = *scene.max_iterations;
+  if (scene.line_search) o.line_search = *scene.line_search;
+  if (scene.linear_solver) o.linear_solver = *scene.linear_solver;
+  if (b.linear) {
+    o.linear = true;
+    o.initial_increment = o.max_increment = 1.0;
+    o.min_increment = std::min(o.min_increment, 1.0);
+  }
+  return o;
+}
+
 }  // namespace
 
 ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
@@ -87,10 +106,14 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
     s.vtu_every = out->integer("vtu_every", 0);
     if (s.vtu_every < 0) out->fail("vtu_every", "must be >= 0 (0: the final state only)");
   }
-  try {  // builds the model once to report mesh/setting errors before any output is touched
-    make_shell_benchmark(s.setup);
+  // Builds the model once to report mesh and setting errors before any output is touched.
+  try {
+    const ShellBenchmark b = make_shell_benchmark(s.setup);
+    if (const std::string err = solver_options(s, b).validate(); !err.empty())
+      root.fail("solver", err + " (benchmark defaults: initial " + std::to_string(b.solver.initial_increment) + ", max " +
+                              std::to_string(b.solver.max_increment) + ")");
   } catch (const std::invalid_argument& e) {
-    sc->fail("benchmark", e.what());
+    sc->fail(sc->has("mesh") ? "mesh" : "benchmark", e.what());
   }
   return s;
 }
@@ -98,18 +121,8 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
 ShellSceneReport run_shell_benchmark_scene(const ShellBenchmarkScene& scene, const io::OutputDirectory& out, bool progress) {
   ShellSceneReport rep;
   ShellBenchmark b = make_shell_benchmark(scene.setup);
-  solver::NewtonOptions& o = b.solver;
-  if (scene.initial_increment) o.initial_increment = *scene.initial_increment;
-  if (scene.min_increment) o.min_increment = *scene.min_increment;
-  if (scene.max_increment) o.max_increment = *scene.max_increment;
-  if (scene.force_tolerance) o.force_tolerance = *scene.force_tolerance;
-  if (scene.displacement_tolerance) o.displacement_tolerance = *scene.displacement_tolerance;
-  if (scene.max_iterations) o.max_iterations = *scene.max_iterations;
-  if (scene.line_search) o.line_search = *scene.line_search;
-  if (scene.linear_solver) o.linear_solver = *scene.linear_solver;
-  if (b.linear) { o.linear = true; o.initial_increment = o.max_increment = 1.0; o.min_increment = std::min(o.min_increment, 1.0); }
-  if (const std::string err = o.validate(); !err.empty())
-    throw io::InputError(scene.file, "solver", "", err);
+  const solver::NewtonOptions o = solver_options(scene, b);
+  if (const std::string err = o.validate(); !err.empty()) throw io::InputError(scene.file, "solver", "", err);
 
   json s;
   s["scene"] = scene.name;

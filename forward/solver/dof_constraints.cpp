@@ -70,7 +70,12 @@ void DofConstraints::finalize() {
   finalized_ = true;
 }
 
+void DofConstraints::require_finalized() const {
+  if (!finalized_) throw std::logic_error("DofConstraints used before finalize() (or changed after it)");
+}
+
 std::span<const DofConstraints::Term> DofConstraints::expansion(int dof) const {
+  require_finalized();
   const auto i = static_cast<std::size_t>(dof);
   return {terms_.data() + offset_[i], static_cast<std::size_t>(offset_[i + 1] - offset_[i])};
 }
@@ -90,6 +95,7 @@ Eigen::VectorXd DofConstraints::reduce(const Eigen::VectorXd& full) const {
 }
 
 Eigen::VectorXd DofConstraints::prescribed_values(double load_factor) const {
+  require_finalized();
   Eigen::VectorXd g(num_dofs());
   for (int i = 0; i < num_dofs(); ++i) g(i) = load_factor * amplitude_[static_cast<std::size_t>(i)];
   return g;

@@ -37,6 +37,7 @@ class DofConstraints {
   // an index out of range. Prescribed masters contribute to the slave's prescribed part.
   void finalize();
 
+  bool finalized() const { return finalized_; }
   int num_dofs() const { return static_cast<int>(kind_.size()); }
   int num_reduced() const { return num_reduced_; }
   bool prescribed(int dof) const { return kind_[static_cast<std::size_t>(dof)] == Kind::prescribed; }
@@ -59,6 +60,7 @@ class DofConstraints {
   int num_reduced_ = 0;
   bool finalized_ = false;
   void check_dof(int dof, const char* what) const;
+  void require_finalized() const;
 };
 
 }  // namespace spifit::solver

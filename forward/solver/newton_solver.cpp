@@ -6,12 +6,17 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 
 namespace spifit::solver {
 
 std::string NewtonOptions::validate() const {
-  if (!(min_increment > 0.0 && min_increment <= initial_increment && initial_increment <= max_increment && max_increment <= 1.0))
-    return "increments must satisfy 0 < min_increment <= initial_increment <= max_increment <= 1";
+  if (!(min_increment > 0.0 && min_increment <= initial_increment && initial_increment <= max_increment && max_increment <= 1.0)) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "min_increment %g, initial_increment %g, max_increment %g: need 0 < min <= initial <= max <= 1",
+                  min_increment, initial_increment, max_increment);
+    return buf;
+  }
   if (!(growth >= 1.0)) return "growth must be >= 1";
   if (!(cutback > 0.0 && cutback < 1.0)) return "cutback must be in (0, 1)";
   if (max_iterations < 1) return "max_iterations must be >= 1";
@@ -23,6 +28,8 @@ std::string NewtonOptions::validate() const {
 
 NewtonSolver::NewtonSolver(NonlinearProblem& problem, const DofConstraints& constraints, NewtonOptions options)
     : problem_(problem), constraints_(constraints), options_(options) {
+  if (const std::string err = options.validate(); !err.empty()) throw std::invalid_argument("Newton options: " + err);
+  if (!constraints.finalized()) throw std::logic_error("DofConstraints used before finalize()");
   assembler_ = std::make_unique<ReducedAssembler>(constraints, problem.element_dofs());
   k_ = std::make_unique<SparseMatrix>(assembler_->pattern());
 }
@@ -115,8 +122,9 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     *failure = a.failure;
     return false;
   }
-  double scale = std::max({f_ext.norm(), a.reaction_norm, a.residual.norm(), 1e-300});
-  report->residual_norms.push_back(a.residual.norm() / scale);
+  // Force scale of the convergence test: external forces and the reactions of the current
+  // iterate (the first residual only for the report, where both may still vanish).
+  report->residual_norms.push_back(a.residual.norm() / std::max({f_ext.norm(), a.reaction_norm, a.residual.norm(), 1e-300}));
   Eigen::VectorXd r = a.residual;
   bool first = true;
   for (int it = 1; it <= options_.max_iterations; ++it) {
@@ -158,8 +166,7 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     first = false;
     r = trial.residual;
     report->iterations = it;
-    scale = std::max({scale, f_ext.norm(), trial.reaction_norm});
-    const double rel = r.norm() / scale;
+    const double rel = r.norm() / std::max({f_ext.norm(), trial.reaction_norm, 1e-300});
     report->residual_norms.push_back(rel);
     if (!std::isfinite(rel) || rel > 1e10) {
       failure->ok = false;

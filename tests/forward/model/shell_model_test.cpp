@@ -37,6 +37,16 @@ TEST(ShellModel, DegenerateElementsAreErrorsNamingTheElement) {
   EXPECT_NE(error_of([&] { ShellModel sm(flat, 0.1, steel(), {}); }), "");
 }
 
+TEST(ShellModel, InconsistentOrientationAndDrillingMomentsAreErrors) {
+  mesh::Mesh m = mesh::strip(4.0, 1.0, 4, 1);
+  std::swap(m.quads[2][1], m.quads[2][3]);  // element 2 numbered clockwise: its normal is -z
+  EXPECT_NE(error_of([&] { ShellModel sm(m, 0.1, steel(), {}); }).find("orientation"), std::string::npos);
+  const mesh::Mesh flat = mesh::strip(4.0, 1.0, 4, 1);
+  ShellModel sm(flat, 0.1, steel(), {});
+  EXPECT_NE(error_of([&] { sm.add_nodal_load(ShellModel::dof(3, 5), 1.0); }).find("drilling"), std::string::npos);
+  EXPECT_EQ(error_of([&] { sm.add_nodal_load(ShellModel::dof(3, 4), 1.0); }), "");  // bending moment: fine
+}
+
 TEST(ShellModel, ThicknessOverLengthWarnsAboveOneAndRefusesAboveThree) {
   const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 1);  // 1 mm elements
   ShellModel ok(m, 0.5, steel(), {});

@@ -169,7 +169,12 @@ TEST(NewtonOptions, ValidateNamesTheProblem) {
   NewtonOptions o;
   EXPECT_EQ(o.validate(), "");
   o.min_increment = 0.5;
-  EXPECT_NE(o.validate().find("min_increment"), std::string::npos);
+  EXPECT_NE(o.validate().find("min_increment 0.5"), std::string::npos) << o.validate();
+  // The solver refuses invalid options and unfinalised constraints instead of looping.
+  scene::ShellBenchmark b = scene::make_shell_benchmark({"membrane_patch", 0, 0});
+  EXPECT_THROW(NewtonSolver(*b.model, *b.constraints, o), std::invalid_argument);
+  DofConstraints open(b.model->num_dofs());
+  EXPECT_THROW(NewtonSolver(*b.model, open, NewtonOptions{}), std::logic_error);
 }
 
 }  // namespace
