@@ -45,6 +45,23 @@ constexpr int kTieDir[4] = {0, 0, 1, 1};
 
 }  // namespace
 
+void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku) {
+  // dd_I = dpsi_I x d_I = -skew(d_I) dpsi_I.
+  *ru = rp;
+  for (int I = 0; I < 4; ++I) ru->segment<3>(6 * I + 3) = d[static_cast<std::size_t>(I)].cross(rp.segment<3>(6 * I + 3));
+  if (!kp || !ku) return;
+  Mat24 T = Mat24::Identity();
+  for (int I = 0; I < 4; ++I) T.block<3, 3>(6 * I + 3, 6 * I + 3) = -skew(d[static_cast<std::size_t>(I)]);
+  *ku = T.transpose() * (*kp) * T;
+  for (int I = 0; I < 4; ++I) {
+    // Rotational geometric term, projected on the plane normal to the director (the drilling
+    // rotation does not move d): P (d r^T - (d.r) I) P = -(d.r) P with P = I - d d^T.
+    const Eigen::Vector3d& dI = d[static_cast<std::size_t>(I)];
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - dI * dI.transpose();
+    ku->block<3, 3>(6 * I + 3, 6 * I + 3) += -dI.dot(rp.segment<3>(6 * I + 3)) * P;
+  }
+}
+
 ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, const ShellSection::Law& law,
                  const ThicknessRule& rule, const ShellOptions& options)
     : options_(options), h0_(thickness) {
@@ -145,7 +162,7 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
 
     // The layers work in the material frame: e_m = Q e, (N, M) = Q^T (N_m, M_m).
     Vec6 s6m;
-    Mat6 d6m;
+    Mat6 d6m = Mat6::Zero();
     const SectionStatus ss = sections_[q].update(pg.Q * e, pg.Q * kappa, &s6m, tangent ? &d6m : nullptr);
     if (!ss.ok) {
       status.ok = false;
@@ -159,7 +176,7 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     q6.topLeftCorner<3, 3>() = pg.Q;
     q6.bottomRightCorner<3, 3>() = pg.Q;
     const Vec6 s6 = q6.transpose() * s6m;
-    Mat6 d6;
+    Mat6 d6 = Mat6::Zero();
     if (tangent) d6 = q6.transpose() * d6m * q6;
     const Eigen::Vector2d Q = ks * gamma;
 
@@ -212,9 +229,9 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     }
   }
 
-  // From p = (x_I, d_I) to the DOFs u = (u_I, psi_I): dd_I = dpsi_I x d_I = -skew(d_I) dpsi_I.
-  Vec24 ru = rp;
-  for (int I = 0; I < 4; ++I) ru.segment<3>(6 * I + 3) = d[static_cast<std::size_t>(I)].cross(rp.segment<3>(6 * I + 3));
+  Vec24 ru;
+  Mat24 ku;
+  director_to_dofs(d, rp, tangent ? &kp : nullptr, &ru, tangent ? &ku : nullptr);
   if (!ru.allFinite()) {
     status.ok = false;
     status.reason = "non-finite element forces";
@@ -223,9 +240,7 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
   }
   if (residual) *residual = ru;
   if (tangent) {
-    Mat24 T = Mat24::Identity();
-    for (int I = 0; I < 4; ++I) T.block<3, 3>(6 * I + 3, 6 * I + 3) = -skew(d[static_cast<std::size_t>(I)]);
-    Mat24 ku = T.transpose() * kp * T;
+    // Drilling regularisation: tangent only (it never enters the residual).
     double rot_trace = 0.0, trans_trace = 0.0;
     for (int I = 0; I < 4; ++I) {
       rot_trace += ku.block<3, 3>(6 * I + 3, 6 * I + 3).trace();
@@ -233,12 +248,8 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     }
     const double k_drill = options_.drilling_factor * (rot_trace > 0.0 ? rot_trace / 12.0 : trans_trace / 12.0 * area_);
     for (int I = 0; I < 4; ++I) {
-      // Rotational geometric term, projected on the plane normal to the director (the drilling
-      // rotation does not move d): P (d r^T - (d.r) I) P = -(d.r) P with P = I - d d^T.
       const Eigen::Vector3d& dI = d[static_cast<std::size_t>(I)];
-      const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - dI * dI.transpose();
-      const double dr = dI.dot(rp.segment<3>(6 * I + 3));
-      ku.block<3, 3>(6 * I + 3, 6 * I + 3) += -dr * P + k_drill * dI * dI.transpose();
+      ku.block<3, 3>(6 * I + 3, 6 * I + 3) += k_drill * dI * dI.transpose();
     }
     *tangent = ku;
   }

@@ -47,6 +47,11 @@ using Vec24 = Eigen::Matrix<double, 24, 1>;
 using Mat24 = Eigen::Matrix<double, 24, 24>;
 using NodeVectors = std::array<Eigen::Vector3d, 4>;
 
+// From derivatives with respect to p = (x_I, d_I) (positions and directors, 6 per node) to
+// the DOFs u = (translation, rotation increment): residual and exact tangent on the rotations
+// normal to the directors (no drilling stiffness). Shared by the shell and its contact.
+void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku);
+
 struct ElementStatus {
   bool ok = true;
   int point = -1, layer = -1;  // in-plane Gauss point 0..3, layer from the bottom
