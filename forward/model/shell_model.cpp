@@ -127,6 +127,29 @@ Eigen::VectorXd ShellModel::internal_forces() {
   return f;
 }
 
+void ShellModel::set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options) {
+  if (!(radius > 0.0)) throw std::invalid_argument("tool radius must be > 0");
+  if (const std::string err = options.validate(); !err.empty()) throw std::invalid_argument("contact: " + err);
+  contact_ = std::make_unique<contact::ShellContact>(*mesh_, options);
+  tool_path_ = std::move(path);
+  tool_.radius = radius;
+  tool_.centre = tool_.centre_committed = tool_path_(lambda_);
+}
+
+contact::ContactSummary ShellModel::contact_summary() const { return contact_ ? contact_->committed_summary() : contact::ContactSummary{}; }
+
+void ShellModel::begin_increment(double lambda0, double lambda1) {
+  if (!contact_) return;
+  tool_.centre_committed = tool_path_(lambda0);
+  tool_.centre = tool_path_(lambda1);
+}
+
+double ShellModel::element_thickness(int e) const {
+  double h = 0.0;
+  for (int p = 0; p < element::ShellQ4::kPoints; ++p) h += 0.25 * elements_[static_cast<std::size_t>(e)].section(p).thickness();
+  return h;
+}
+
 solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
   const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
   element::NodeVectors x, d;
@@ -146,6 +169,22 @@ solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* r
     if (s.point >= 0) out.where += ", in-plane point " + std::to_string(s.point);
     if (s.layer >= 0) out.where += ", layer " + std::to_string(s.layer);
     return out;
+  }
+  if (contact_) {
+    element::Vec24 rc = element::Vec24::Zero();
+    element::Mat24 kc = element::Mat24::Zero();
+    element::NodeVectors x0, d0;
+    for (std::size_t i = 0; i < 4; ++i) {
+      x0[i] = x_[static_cast<std::size_t>(q[i])];
+      d0[i] = d_[static_cast<std::size_t>(q[i])];
+    }
+    if (contact_->element(e, x, d, x0, d0, 0.5 * element_thickness(e), tool_, &rc, ke ? &kc : nullptr, nullptr)) {
+      element::Vec24 ru;
+      element::Mat24 ku;
+      element::director_to_dofs(d, rc, ke ? &kc : nullptr, &ru, ke ? &ku : nullptr);
+      r += ru;
+      if (ke) k += ku;
+    }
   }
   *re = r;
   if (ke) *ke = k;
@@ -178,6 +217,10 @@ void ShellModel::commit(double lambda) {
   x_ = xi_;
   d_ = di_;
   for (auto& el : elements_) el.commit();
+  if (contact_) {
+    contact_->commit();
+    tool_.centre_committed = tool_.centre;
+  }
   increment_.setZero();
   increment_trial_.setZero();
   lambda_ = lambda;
@@ -187,6 +230,7 @@ void ShellModel::revert() {
   xi_ = xt_ = x_;
   di_ = dt_ = d_;
   for (auto& el : elements_) el.revert();
+  if (contact_) contact_->revert();
   increment_.setZero();
   increment_trial_.setZero();
 }
@@ -254,6 +298,7 @@ io::VtuFrame ShellModel::vtu_frame() const {
     }
   }
   f.cell_data = {eq_max, s_bot, s_mid, s_top};
+  if (contact_) f.cell_data.push_back({"contact_pressure", 1, contact_->element_pressure()});
   return f;
 }
 

@@ -2,11 +2,14 @@
 // A shell finite-element model: mesh, ShellQ4 elements, six DOFs per node (ux uy uz, then
 // rotation increments about x y z), nodal directors, concentrated loads, and the
 // configuration bookkeeping the Newton solver needs (committed / iterate / trial).
+#include "forward/contact/shell_contact.hpp"
 #include "forward/element/shell_q4.hpp"
 #include "forward/io/vtu_writer.hpp"
 #include "forward/mesh/mesh.hpp"
 #include "forward/solver/nonlinear_problem.hpp"
 
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,7 +44,18 @@ class ShellModel final : public solver::NonlinearProblem {
   // Internal forces at the current iterate (full vector): reactions at supported DOFs.
   Eigen::VectorXd internal_forces();
 
+  // Contact with a rigid sphere whose centre follows path(lambda) (tool travel as load factor).
+  using ToolPathFunction = std::function<Eigen::Vector3d(double)>;
+  void set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options);
+  bool has_tool() const { return contact_ != nullptr; }
+  const contact::SphereTool& tool() const { return tool_; }
+  // Committed contact: force on the sheet, penetration, pressure (zero without a tool).
+  contact::ContactSummary contact_summary() const;
+  // Force exerted BY the sheet ON the tool (SPEC §1), committed state.
+  Eigen::Vector3d tool_force() const { return -contact_summary().force_on_sheet; }
+
   // NonlinearProblem
+  void begin_increment(double lambda0, double lambda1) override;
   int num_dofs() const override { return 6 * num_nodes(); }
   const std::vector<std::vector<int>>& element_dofs() const override { return element_dofs_; }
   solver::ElementEvaluation evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) override;
@@ -89,6 +103,10 @@ class ShellModel final : public solver::NonlinearProblem {
   double lambda_ = 0.0;
   std::vector<std::string> warnings_;
   double max_t_over_l_ = 0.0;
+  std::unique_ptr<contact::ShellContact> contact_;
+  ToolPathFunction tool_path_;
+  contact::SphereTool tool_;
+  double element_thickness(int e) const;
 };
 
 }  // namespace spifit::model

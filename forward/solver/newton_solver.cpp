@@ -114,6 +114,7 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, 
 
 bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* report, ElementEvaluation* failure) {
   problem_.revert();
+  problem_.begin_increment(lambda0, lambda1);
   const Eigen::VectorXd f_ext = constraints_.reduce(problem_.external_forces(lambda1));
   const Eigen::VectorXd dg = constraints_.prescribed_values(lambda1 - lambda0);
   const bool has_dg = dg.squaredNorm() > 0.0;

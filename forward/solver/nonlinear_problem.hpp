@@ -26,6 +26,9 @@ class NonlinearProblem {
   // Residual re = internal - external element forces, tangent ke = d re / d u at the trial
   // configuration (ke may be null). Called concurrently for different e.
   virtual ElementEvaluation evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) = 0;
+  // Called at the start of every increment attempt (after revert): time-dependent boundary
+  // conditions such as the tool position move to lambda1.
+  virtual void begin_increment(double lambda0, double lambda1) { (void)lambda0; (void)lambda1; }
   // Concentrated external forces at load factor lambda (full DOF vector).
   virtual Eigen::VectorXd external_forces(double lambda) const = 0;
   // trial = iterate (+) alpha x delta (delta: full DOF correction; rotations compose).

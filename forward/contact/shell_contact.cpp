@@ -1,0 +1,171 @@
+#include "forward/contact/shell_contact.hpp"
+
+#include <cmath>
+
+namespace spifit::contact {
+
+std::string ContactOptions::validate() const {
+  if (!(penalty > 0.0 && std::isfinite(penalty))) return "penalty must be > 0";
+  if (!(friction >= 0.0 && friction <= 2.0)) return "friction must lie in [0, 2]";
+  if (!(tangential_penalty >= 0.0 && std::isfinite(tangential_penalty))) return "tangential_penalty must be >= 0";
+  if (points < 1 || points > 6) return "points must be 1 to 6 per direction";
+  return {};
+}
+
+namespace {
+constexpr double kNodeXi[4] = {-1.0, 1.0, 1.0, -1.0};
+constexpr double kNodeEta[4] = {-1.0, -1.0, 1.0, 1.0};
+
+// Gauss-Legendre points on [-1, 1] (1..6).
+void gauss(int n, std::vector<double>* x, std::vector<double>* w) {
+  const element::ThicknessRule r = element::gauss_legendre_rule(n);
+  *x = r.zeta;
+  *w = r.weight;
+}
+}  // namespace
+
+ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options) : options_(options), mesh_(&mesh) {
+  std::vector<double> g, w;
+  gauss(options.points, &g, &w);
+  const int n = options.points;
+  per_element_ = n * n;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      PointGeometry pg;
+      for (int k = 0; k < 4; ++k)
+        pg.N(k) = 0.25 * (1.0 + kNodeXi[k] * g[static_cast<std::size_t>(i)]) * (1.0 + kNodeEta[k] * g[static_cast<std::size_t>(j)]);
+      pg.area = w[static_cast<std::size_t>(i)] * w[static_cast<std::size_t>(j)];
+      points_.push_back(pg);
+    }
+  const int ne = mesh.num_elements();
+  areas_.resize(static_cast<std::size_t>(ne * per_element_));
+  for (int e = 0; e < ne; ++e) {
+    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    for (int p = 0; p < per_element_; ++p) {
+      const int i = p % n, j = p / n;
+      const double xi = g[static_cast<std::size_t>(i)], eta = g[static_cast<std::size_t>(j)];
+      Eigen::Vector3d a0 = Eigen::Vector3d::Zero(), a1 = Eigen::Vector3d::Zero();
+      for (int k = 0; k < 4; ++k) {
+        const Eigen::Vector3d& X = mesh.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(k)])];
+        a0 += 0.25 * kNodeXi[k] * (1.0 + kNodeEta[k] * eta) * X;
+        a1 += 0.25 * kNodeEta[k] * (1.0 + kNodeXi[k] * xi) * X;
+      }
+      areas_[static_cast<std::size_t>(e * per_element_ + p)] = points_[static_cast<std::size_t>(p)].area * a0.cross(a1).norm();
+    }
+  }
+  committed_.assign(areas_.size(), PointState{});
+  trial_ = committed_;
+}
+
+bool ShellContact::element(int e, const element::NodeVectors& x, const element::NodeVectors& d, const element::NodeVectors& x0,
+                           const element::NodeVectors& d0, double offset, const SphereTool& tool, element::Vec24* rp,
+                           element::Mat24* kp, ContactSummary* summary) {
+  // Quick rejection: the element's bounding sphere (tool-side surface) misses the tool.
+  Eigen::Vector3d centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
+  double radius = 0.0;
+  for (const auto& xi : x) radius = std::max(radius, (xi - centre).norm());
+  const std::size_t base = static_cast<std::size_t>(e * per_element_);
+  if ((centre - tool.centre).norm() > tool.radius + radius + 2.0 * offset) {
+    for (int p = 0; p < per_element_; ++p) trial_[base + static_cast<std::size_t>(p)] = PointState{};
+    return false;
+  }
+  const double kp_n = options_.penalty;
+  const double kt = options_.tangential_penalty > 0.0 ? options_.tangential_penalty : options_.penalty;
+  const double mu = options_.friction;
+  bool any = false;
+  for (int p = 0; p < per_element_; ++p) {
+    const PointGeometry& pg = points_[static_cast<std::size_t>(p)];
+    const std::size_t id = base + static_cast<std::size_t>(p);
+    PointState& st = trial_[id];
+    st = PointState{};
+    Eigen::Vector3d xp = Eigen::Vector3d::Zero(), xp0 = Eigen::Vector3d::Zero();
+    for (std::size_t k = 0; k < 4; ++k) {
+      xp += pg.N(static_cast<Eigen::Index>(k)) * (x[k] + offset * d[k]);
+      xp0 += pg.N(static_cast<Eigen::Index>(k)) * (x0[k] + offset * d0[k]);
+    }
+    const Eigen::Vector3d v = xp - tool.centre;
+    const double rho = v.norm();
+    const double gap = rho - tool.radius;
+    if (!(gap < 0.0) || rho <= 0.0) continue;
+    any = true;
+    const double da = areas_[id];
+    const Eigen::Vector3d n = v / rho;
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - n * n.transpose();
+    const double pressure = -kp_n * gap;
+    // Force per area on the sheet q = p n + t and its derivative with respect to the point.
+    Eigen::Vector3d q = pressure * n;
+    Eigen::Matrix3d dq = -kp_n * n * n.transpose() + (pressure / rho) * P;
+    Eigen::Vector3d t = Eigen::Vector3d::Zero();
+    if (mu > 0.0) {
+      // Slip of the sheet point relative to the tool over the increment; the committed traction
+      // is zero for a point that was not in contact.
+      const Eigen::Vector3d slip = (xp - xp0) - (tool.centre - tool.centre_committed);
+      const Eigen::Vector3d w = committed_[id].traction - kt * slip;
+      const Eigen::Vector3d ttr = P * w;
+      // d(P w)/dx = -kt P - (n.w) P / rho - n (P w)^T / rho
+      Eigen::Matrix3d dttr = -kt * P - (n.dot(w) / rho) * P - n * (P * w).transpose() / rho;
+      const double norm = ttr.norm(), limit = mu * pressure;
+      if (norm <= limit) {
+        t = ttr;
+        dq += dttr;
+      } else {
+        const Eigen::Vector3d dir = ttr / norm;
+        t = limit * dir;
+        dq += mu * dir * (-kp_n * n.transpose()) + (limit / norm) * (Eigen::Matrix3d::Identity() - dir * dir.transpose()) * dttr;
+      }
+      q += t;
+    }
+    st.active = true;
+    st.traction = t;
+    st.pressure = pressure;
+    st.penetration = -gap;
+    st.force = q * da;
+    if (summary) {
+      summary->force_on_sheet += st.force;
+      summary->max_penetration = std::max(summary->max_penetration, -gap);
+      summary->max_pressure = std::max(summary->max_pressure, pressure);
+      ++summary->active_points;
+    }
+    // r = f_int - f_ext: the contact force is external. p = (x_I, d_I): dx/dx_I = N_I, dx/dd_I = offset N_I.
+    const Eigen::Vector3d f = -q * da;
+    const Eigen::Matrix3d kx = -dq * da;
+    for (int I = 0; I < 4; ++I) {
+      const double nI = pg.N(I);
+      rp->segment<3>(6 * I) += nI * f;
+      rp->segment<3>(6 * I + 3) += (nI * offset) * f;
+      if (!kp) continue;
+      for (int J = 0; J < 4; ++J) {
+        const double nn = nI * pg.N(J);
+        kp->block<3, 3>(6 * I, 6 * J) += nn * kx;
+        kp->block<3, 3>(6 * I, 6 * J + 3) += (nn * offset) * kx;
+        kp->block<3, 3>(6 * I + 3, 6 * J) += (nn * offset) * kx;
+        kp->block<3, 3>(6 * I + 3, 6 * J + 3) += (nn * offset * offset) * kx;
+      }
+    }
+  }
+  return any;
+}
+
+void ShellContact::commit() { committed_ = trial_; }
+void ShellContact::revert() { trial_ = committed_; }
+
+ContactSummary ShellContact::committed_summary() const {
+  ContactSummary s;
+  for (const auto& p : committed_) {
+    if (!p.active) continue;
+    s.force_on_sheet += p.force;
+    s.max_penetration = std::max(s.max_penetration, p.penetration);
+    s.max_pressure = std::max(s.max_pressure, p.pressure);
+    ++s.active_points;
+  }
+  return s;
+}
+
+std::vector<double> ShellContact::element_pressure() const {
+  std::vector<double> out(static_cast<std::size_t>(mesh_->num_elements()), 0.0);
+  for (std::size_t i = 0; i < committed_.size(); ++i)
+    out[i / static_cast<std::size_t>(per_element_)] = std::max(out[i / static_cast<std::size_t>(per_element_)], committed_[i].pressure);
+  return out;
+}
+
+}  // namespace spifit::contact

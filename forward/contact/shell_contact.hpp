@@ -1,0 +1,80 @@
+#pragma once
+// Contact between a rigid analytic sphere (the forming tool) and the tool-side surface of the
+// shell (NUMERICS.md "Contact"; thesis §3.2, §7.1): penalty normal pressure p = K_p <-g> at
+// n x n contact points per element (the mid-surface offset by h/2 along the director), and
+// regularised Coulomb friction (elastic stick with a tangential penalty K_t, return to the cone
+// |t| <= mu p). The contribution of an element is returned in the shell's p-variables
+// (positions and directors), with its exact (non-symmetric once sliding) tangent; the shell's
+// director_to_dofs turns it into nodal forces and moments.
+#include "forward/element/shell_q4.hpp"
+#include "forward/mesh/mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace spifit::contact {
+
+struct ContactOptions {
+  double penalty = 1000.0;           // K_p [N/mm^3]
+  double friction = 0.0;             // Coulomb coefficient mu
+  double tangential_penalty = 0.0;   // K_t [N/mm^3]; 0: equal to K_p
+  int points = 2;                    // contact points per direction and element (1..6)
+  std::string validate() const;      // empty when valid
+};
+
+struct SphereTool {
+  double radius = 5.0;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();           // at the end of the increment
+  Eigen::Vector3d centre_committed = Eigen::Vector3d::Zero(); // at its start (slip reference)
+};
+
+// What an element's contact points carry at the trial state.
+struct ContactSummary {
+  Eigen::Vector3d force_on_sheet = Eigen::Vector3d::Zero();  // N
+  double max_penetration = 0.0;  // mm
+  double max_pressure = 0.0;     // MPa
+  int active_points = 0;
+};
+
+class ShellContact {
+ public:
+  // Reference geometry of the contact points of every element of the mesh.
+  ShellContact(const mesh::Mesh& mesh, const ContactOptions& options);
+
+  // Adds the contact of element e (current nodes x, directors d; x0, d0 at the start of the
+  // increment, for the slip; tool-side offset `offset` = h/2) to rp (forces on p) and kp (their
+  // derivative). Returns false when the element is too far from the tool to touch it (nothing
+  // added). Thread-safe for distinct e.
+  bool element(int e, const element::NodeVectors& x, const element::NodeVectors& d, const element::NodeVectors& x0,
+               const element::NodeVectors& d0, double offset, const SphereTool& tool, element::Vec24* rp, element::Mat24* kp,
+               ContactSummary* summary);
+  void commit();
+  void revert();
+
+  // Sum over the committed contact points (element order: deterministic).
+  ContactSummary committed_summary() const;
+  // Largest committed pressure over each element's points (VTU cell data).
+  std::vector<double> element_pressure() const;
+  const ContactOptions& options() const { return options_; }
+
+ private:
+  struct PointState {
+    Eigen::Vector3d traction = Eigen::Vector3d::Zero();  // tangential traction on the sheet [MPa]
+    Eigen::Vector3d force = Eigen::Vector3d::Zero();     // force on the sheet [N]
+    double pressure = 0.0, penetration = 0.0;
+    bool active = false;
+  };
+  struct PointGeometry {
+    Eigen::Vector4d N;
+    double area = 0.0;  // reference area weight
+  };
+  ContactOptions options_;
+  const mesh::Mesh* mesh_;
+  std::vector<PointGeometry> points_;  // one set per element (same for all, in natural coordinates) x area
+  std::vector<double> areas_;          // per element x point
+  std::vector<PointState> committed_, trial_;
+  int per_element_ = 0;
+};
+
+}  // namespace spifit::contact

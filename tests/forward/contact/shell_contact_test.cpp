@@ -1,0 +1,137 @@
+#include "forward/contact/shell_contact.hpp"
+#include "forward/mesh/benchmark_meshes.hpp"
+#include "forward/mesh/square_sheet.hpp"
+#include "forward/model/shell_model.hpp"
+#include "forward/solver/newton_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+namespace spifit::contact {
+namespace {
+
+using element::Mat24;
+using element::NodeVectors;
+using element::Vec24;
+
+// One element 2 x 2 mm, slightly warped, directors tilted; a 5 mm tool pressing on it.
+struct OneElement {
+  mesh::Mesh mesh = mesh::strip(2.0, 2.0, 1, 1);
+  NodeVectors x, d;
+  OneElement() {
+    for (int i = 0; i < 4; ++i) {
+      x[static_cast<std::size_t>(i)] = mesh.nodes[static_cast<std::size_t>(mesh.quads[0][static_cast<std::size_t>(i)])];
+      d[static_cast<std::size_t>(i)] = Eigen::Vector3d(0.02 * i, -0.01 * i, 1.0).normalized();
+    }
+    x[2].z() += 0.01;
+  }
+};
+
+double fd_error(ShellContact& c, const NodeVectors& x, const NodeVectors& d, const SphereTool& tool) {
+  Vec24 r = Vec24::Zero();
+  Mat24 k = Mat24::Zero();
+  EXPECT_TRUE(c.element(0, x, d, x, d, 0.25, tool, &r, &k, nullptr));
+  Mat24 kfd;
+  const double h = 1e-7;
+  for (int j = 0; j < 24; ++j) {
+    Vec24 rr[2];
+    for (int s = 0; s < 2; ++s) {
+      NodeVectors xp = x, dp = d;
+      const std::size_t node = static_cast<std::size_t>(j / 6);
+      const int comp = j % 6;
+      (comp < 3 ? xp[node](comp) : dp[node](comp - 3)) += s == 0 ? h : -h;
+      rr[s].setZero();
+      c.element(0, xp, dp, x, d, 0.25, tool, &rr[s], nullptr, nullptr);
+    }
+    kfd.col(j) = (rr[0] - rr[1]) / (2.0 * h);
+  }
+  return (k - kfd).norm() / k.norm();
+}
+
+TEST(ShellContact, TangentMatchesFiniteDifferencesFrictionlessStickAndSlip) {
+  for (double mu : {0.0, 0.3, 0.02}) {  // frictionless, sticking, sliding
+    OneElement s;
+    ContactOptions o;
+    o.penalty = 1000.0;
+    o.friction = mu;
+    o.points = 3;
+    ShellContact c(s.mesh, o);
+    SphereTool tool;
+    tool.radius = 5.0;
+    tool.centre = tool.centre_committed = Eigen::Vector3d(1.0, 0.0, 0.25 + 5.0 - 0.15);
+    Vec24 r = Vec24::Zero();
+    ASSERT_TRUE(c.element(0, s.x, s.d, s.x, s.d, 0.25, tool, &r, nullptr, nullptr));
+    c.commit();
+    // Drag the tool 0.01 mm along x and 0.004 along y, press 0.005 deeper: stick or slip.
+    tool.centre_committed = tool.centre;
+    tool.centre += Eigen::Vector3d(0.01, 0.004, -0.005);
+    ContactSummary sum;
+    Vec24 r2 = Vec24::Zero();
+    c.element(0, s.x, s.d, s.x, s.d, 0.25, tool, &r2, nullptr, &sum);
+    const double err = fd_error(c, s.x, s.d, tool);
+    std::printf("mu %.2f: %d active points, tangential/normal %.4f, tangent error %.2e\n", mu, sum.active_points,
+                std::hypot(sum.force_on_sheet.x(), sum.force_on_sheet.y()) / sum.force_on_sheet.z(), err);
+    EXPECT_LT(err, 1e-6);
+  }
+}
+
+TEST(ShellContact, PenetrationOutsideTheToolGivesNothing) {
+  OneElement s;
+  ShellContact c(s.mesh, ContactOptions{});
+  SphereTool tool;
+  tool.centre = tool.centre_committed = Eigen::Vector3d(1.0, 0.0, 5.3);  // 0.05 mm above the top surface
+  Vec24 r = Vec24::Zero();
+  EXPECT_FALSE(c.element(0, s.x, s.d, s.x, s.d, 0.25, tool, &r, nullptr, nullptr));
+  EXPECT_EQ(r.norm(), 0.0);
+}
+
+// An elastic sheet (it cannot plough: no plastic wave ahead of the tool) indented 0.05 mm and
+// dragged 6 mm: once sliding, the tool's horizontal force is mu times its vertical force
+// (Coulomb), and zero at mu = 0. 0.5 mm elements and 3 x 3 contact points resolve the 0.7 mm
+// contact patch.
+double drag_ratio(double mu) {
+  mesh::SquareSheetOptions so;
+  so.length_x = so.length_y = 20.0;
+  so.nx = so.ny = 40;
+  const mesh::Mesh m = mesh::square_sheet(so);
+  material::MaterialParams<double> stiff;
+  stiff.E = 70000.0;
+  stiff.nu = 0.3;
+  stiff.plastic = false;
+  model::ShellModel sheet(m, 1.0, stiff, {});
+  ContactOptions co;
+  co.penalty = 1000.0;
+  co.friction = mu;
+  co.points = 3;
+  const double R = 5.0, top = 0.5, depth = 0.05;
+  sheet.set_tool(R, [=](double lambda) {
+    const double press = std::min(lambda / 0.2, 1.0), travel = std::max(lambda - 0.2, 0.0) / 0.8;
+    return Eigen::Vector3d(-3.0 + 6.0 * travel, 0.0, top + R - depth * press);
+  }, co);
+  solver::DofConstraints c(sheet.num_dofs());
+  for (int n : m.node_sets.at("boundary"))
+    for (int k = 0; k < 6; ++k) c.prescribe(model::ShellModel::dof(n, k));
+  c.finalize();
+  solver::NewtonOptions o;
+  o.initial_increment = o.max_increment = 0.05;
+  solver::NewtonSolver s(sheet, c, o);
+  const auto r = s.solve();
+  EXPECT_TRUE(r.converged) << r.message;
+  const Eigen::Vector3d f = sheet.tool_force();
+  const ContactSummary cs = sheet.contact_summary();
+  std::printf("mu %.2f: tool force (%.5f, %.5f, %.5f) N, Fx/Fz %.5f, penetration %.5f mm, %d points, %d iterations\n", mu, f.x(),
+              f.y(), f.z(), f.x() / f.z(), cs.max_penetration, cs.active_points, r.iterations);
+  EXPECT_GT(f.z(), 0.0);  // the sheet pushes the tool up
+  return -f.x() / f.z();  // the sheet drags the tool back (-x) while it moves +x
+}
+
+TEST(ShellContact, DraggedToolFeelsCoulombFriction) {
+  EXPECT_NEAR(drag_ratio(0.0), 0.0, 1e-3);  // ripple of the discrete contact points only
+  EXPECT_NEAR(drag_ratio(0.05) / 0.05, 1.0, 0.02);
+  EXPECT_NEAR(drag_ratio(0.15) / 0.15, 1.0, 0.02);
+}
+
+}  // namespace
+}  // namespace spifit::contact
