@@ -3,6 +3,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/scenes/material_point_scene.hpp"
+#include "forward/scenes/forming_scene.hpp"
 #include "forward/scenes/shell_benchmark_scene.hpp"
 #include "reports/card_export.hpp"
 
@@ -103,7 +104,31 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_option("--out", o->out, "output directory")->required();
   cmd->add_flag("--force", o->force, "replace an existing output directory");
   cmd->callback([o, &g, &exit_code] {
-    if (scene::scene_kind(o->scene) == "shell_benchmark") {
+    const std::string kind = scene::scene_kind(o->scene);
+    if (scene::is_forming_kind(kind)) {
+      const auto fs = scene::read_forming_scene(o->scene);  // input errors before touching --out
+      std::vector<std::string> inputs{fs.file, fs.card.file};
+      if (!fs.gcode.empty()) inputs.push_back(fs.gcode);
+      const auto dir = io::OutputDirectory::prepare(o->out, o->force, inputs);
+      const auto rep = scene::run_forming_scene(fs, dir, g.verbose);
+      const auto& s = rep.summary;
+      if (!rep.ok) {
+        std::cerr << "spifit: " << fs.name << " failed: " << s.value("message", std::string("?")) << "\n";
+        exit_code = 1;
+        return;
+      }
+      if (!g.quiet) {
+        const auto& pk = s["peak_force"];
+        std::printf("%-16s %-12s peak force (%.2f, %.2f, %.2f) N, max penetration %.4f mm  (%d elements, %d increments, %d iterations, %.2f s)\n",
+                    fs.name.c_str(), kind.c_str(), pk[0].get<double>(), pk[1].get<double>(), pk[2].get<double>(),
+                    s["max_penetration"].get<double>(), s["model"]["elements"].get<int>(), s["increments"].get<int>(),
+                    s["newton_iterations"].get<int>(), s["wall_seconds"].get<double>());
+        for (const auto& w : s["warnings"]) std::printf("  warning: %s\n", w.get<std::string>().c_str());
+      }
+      exit_code = 0;
+      return;
+    }
+    if (kind == "shell_benchmark") {
       const auto sb = scene::read_shell_benchmark_scene(o->scene);  // input errors before touching --out
       const auto dir = io::OutputDirectory::prepare(o->out, o->force, {sb.file});
       const auto rep = scene::run_shell_benchmark_scene(sb, dir, g.verbose);

@@ -18,8 +18,14 @@ echo "== Do the r45 and shear tests agree on N? (experiments/aa3003o/fit_n_confl
 echo
 echo "== AA3003-O material-point scenes (results in $out/scenes/<scene>/) =="
 for scene in experiments/aa3003o/scenes/*.toml; do
+  case "$(basename "$scene")" in indent*|line*) continue ;; esac   # FE scenes below
   name=$(basename "$scene" .toml)
   "$spifit" run "$scene" --out "$out/scenes/$name" --force
+done
+echo
+echo "== Shell FE with the spherical tool: indent (thesis §7.1) and the line-test indent (point B) =="
+for name in indent indent_line; do
+  "$spifit" run "experiments/aa3003o/scenes/$name.toml" --out "$out/scenes/$name" --force
 done
 echo
 echo "== Shell element obstacle course (experiments/benchmarks; results in $out/benchmarks/<name>/) =="

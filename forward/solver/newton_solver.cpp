@@ -192,9 +192,12 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
   return false;
 }
 
-NewtonSummary NewtonSolver::solve(double lambda_end, const IncrementCallback& callback) {
+NewtonSummary NewtonSolver::solve(double lambda_end, const IncrementCallback& callback) { return solve(0.0, lambda_end, callback); }
+
+NewtonSummary NewtonSolver::solve(double lambda_start, double lambda_end, const IncrementCallback& callback) {
   NewtonSummary summary;
-  double lambda = 0.0, dl = options_.linear ? lambda_end : options_.initial_increment;
+  summary.lambda = lambda_start;
+  double lambda = lambda_start, dl = options_.linear ? lambda_end - lambda_start : options_.initial_increment;
   while (lambda < lambda_end - 1e-12) {
     double lambda1 = std::min(lambda + dl, lambda_end);
     if (lambda_end - lambda1 < 1e-3 * dl) lambda1 = lambda_end;

@@ -65,6 +65,8 @@ class NewtonSolver {
   // Called after every converged increment (outputs, progress). Returning false stops the run.
   using IncrementCallback = std::function<bool(const IncrementReport&)>;
   NewtonSummary solve(double lambda_end = 1.0, const IncrementCallback& callback = {});
+  // From the committed load factor lambda_start (a previous solve's end) to lambda_end.
+  NewtonSummary solve(double lambda_start, double lambda_end, const IncrementCallback& callback);
   // One Newton iteration's building blocks, exposed for benchmarks and tests.
   struct Assembly {
     Eigen::VectorXd residual;  // reduced
