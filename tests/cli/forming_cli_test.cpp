@@ -1,0 +1,77 @@
+// spifit run on the FE forming scenes: the bundled §7.1 indent, and input errors (G-code,
+// paths) that exit 2 with one line naming the file, before the output directory is touched.
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code = -1;
+  std::string out, err;
+};
+
+Result run(const std::string& args) {
+  const fs::path tmp = fs::temp_directory_path() / ("spifit_forming_cli_err_" + std::to_string(::getpid()));
+  const std::string cmd = std::string(SPIFIT_EXE) + " " + args + " 2>" + tmp.string();
+  Result r;
+  FILE* p = popen(cmd.c_str(), "r");
+  std::array<char, 4096> buf{};
+  while (fgets(buf.data(), buf.size(), p)) r.out += buf.data();
+  const int status = pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  std::ifstream f(tmp);
+  std::stringstream ss;
+  ss << f.rdbuf();
+  r.err = ss.str();
+  fs::remove(tmp);
+  return r;
+}
+
+fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_forming_cli_" + std::to_string(::getpid()) + "_" + name); }
+
+TEST(FormingCli, IndentWritesForceSummaryAndVtu) {
+  const fs::path out = temp("indent");
+  fs::remove_all(out);
+  const Result r = run("run " + std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent.toml --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_EQ(s["status"], "ok");
+  EXPECT_NEAR(s["final_force"][2].get<double>(), 289.40, 0.05);  // K_p = 1e3 (docs/contact.md)
+  EXPECT_GT(s["max_penetration"].get<double>(), 0.0);
+  std::ifstream f(out / "force.csv");
+  int lines = 0;
+  for (std::string l; std::getline(f, l);) ++lines;
+  EXPECT_EQ(lines, 2 + s["increments"].get<int>());
+  EXPECT_TRUE(fs::exists(out / "vtu" / "sheet.pvd"));
+  fs::remove_all(out);
+}
+
+TEST(FormingCli, MalformedGcodeExitsTwoNamingFileAndLine) {
+  const fs::path nc = temp("bad.nc");
+  std::ofstream(nc) << "G21 G90\nG00 X0 Y0 Z0\nG41 X1\n";
+  const fs::path scene = temp("bad.toml");
+  std::ofstream(scene) << "[scene]\nkind = \"indent\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
+                       << "[tool]\ngcode = \"" << nc.string() << "\"\n";
+  const fs::path out = temp("bad_out");
+  fs::remove_all(out);
+  const Result r = run("run " + scene.string() + " --out " + out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find(nc.string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("line 3"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("G41"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove(nc);
+  fs::remove(scene);
+}
+
+}  // namespace
