@@ -255,13 +255,15 @@ ShellModel::LumpedMass ShellModel::lumped_mass() const {
   LumpedMass m;
   m.translational.assign(x_.size(), 0.0);
   m.rotational.assign(x_.size(), 0.0);
+  m.drilling.assign(x_.size(), 0.0);
   for (int e = 0; e < num_elements(); ++e) {
     const double area = elements_[static_cast<std::size_t>(e)].reference_area();
     const double mass = options_.density * thickness_ * area / 4.0;
-    const double inertia = mass * std::max(thickness_ * thickness_ / 12.0, area / 12.0);
+    const double inertia = mass * std::max(thickness_ * thickness_ / 12.0, area / 18.0);  // eq. 6.62
     for (int i : mesh_->quads[static_cast<std::size_t>(e)]) {
       m.translational[static_cast<std::size_t>(i)] += mass;
       m.rotational[static_cast<std::size_t>(i)] += inertia;
+      m.drilling[static_cast<std::size_t>(i)] += 2.0 * inertia;  // D6 = D4 + D5 (eq. 6.61)
     }
   }
   return m;

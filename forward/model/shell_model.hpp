@@ -74,12 +74,12 @@ class ShellModel final : public solver::NonlinearProblem {
   double load_factor() const { return lambda_; }
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
   std::vector<double> nodal_thickness() const;
-  // Lumped mass per node: translational m_I (area share x thickness x density) and rotational
-  // inertia m_I (t^2/12 + A_I/12) — the larger of the rotary inertia of the layer and the
-  // share of the element's in-plane polar inertia, a common choice that keeps the rotational
-  // frequencies below the translational ones (docs/numerics-shell.md).
+  // Lumped mass per node, Jetteur's diagonal matrix (thesis eqs. 6.61-6.62): translational
+  // m_I (area share x thickness x density); rotational about the in-plane axes c m_I with
+  // c = max(t^2/12, S/18) (bending and membrane frequencies of a rectangular sheet, S the
+  // element area); about the normal (drilling) twice that.
   struct LumpedMass {
-    std::vector<double> translational, rotational;
+    std::vector<double> translational, rotational, drilling;
   };
   LumpedMass lumped_mass() const;
   io::VtuFrame vtu_frame() const;

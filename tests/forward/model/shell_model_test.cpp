@@ -74,10 +74,11 @@ TEST(ShellModel, LumpedMassAddsUpToThePlateMass) {
   const auto mass = sm.lumped_mass();
   const double total = std::accumulate(mass.translational.begin(), mass.translational.end(), 0.0);
   EXPECT_NEAR(total / (2.7e-9 * 1.2 * 100.0 * 100.0), 1.0, 1e-13);
-  // Corner node: a quarter of one element (10 x 10 mm); rotary term max(t^2, A)/12 = A/12.
+  // Corner node: a quarter of one element (10 x 10 mm); thesis eq. 6.62: c = max(t^2/12, S/18) = S/18.
   const int corner = 0;
   EXPECT_NEAR(mass.translational[corner] / (2.7e-9 * 1.2 * 100.0 / 4.0), 1.0, 1e-13);
-  EXPECT_NEAR(mass.rotational[corner] / (mass.translational[corner] * 100.0 / 12.0), 1.0, 1e-13);
+  EXPECT_NEAR(mass.rotational[corner] / (mass.translational[corner] * 100.0 / 18.0), 1.0, 1e-13);
+  EXPECT_NEAR(mass.drilling[corner] / mass.rotational[corner], 2.0, 1e-13);
 }
 
 TEST(ShellModel, VtuFrameHasEveryArrayAtTheRightSize) {
