@@ -126,11 +126,10 @@ FormingScene read_forming_scene(const std::string& path) {
     s.max_iterations = so->integer("max_iterations", s.max_iterations);
     if (s.max_iterations < 1 || s.max_iterations > 1000) so->fail("max_iterations", "must be in [1, 1000]");
     if (so->has("linear_solver")) {
-      const std::string k = so->string("linear_solver");
-      if (k == "auto") s.linear_solver = solver::LinearSolverKind::automatic;
-      else if (k == "umfpack") s.linear_solver = solver::LinearSolverKind::umfpack;
-      else if (k == "cholmod") s.linear_solver = solver::LinearSolverKind::cholmod;
-      else so->fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
+      solver::LinearSolverKind k{};
+      if (!solver::linear_solver_from_string(so->string("linear_solver"), &k))
+        so->fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
+      s.linear_solver = k;
     }
   }
   if (const auto o = root.table("output")) {

@@ -93,11 +93,10 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
     }
     if (so->has("line_search")) s.line_search = so->boolean("line_search", false);
     if (so->has("linear_solver")) {
-      const std::string k = so->string("linear_solver");
-      if (k == "auto") s.linear_solver = solver::LinearSolverKind::automatic;
-      else if (k == "umfpack") s.linear_solver = solver::LinearSolverKind::umfpack;
-      else if (k == "cholmod") s.linear_solver = solver::LinearSolverKind::cholmod;
-      else so->fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
+      solver::LinearSolverKind k{};
+      if (!solver::linear_solver_from_string(so->string("linear_solver"), &k))
+        so->fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
+      s.linear_solver = k;
     }
   }
   if (const auto out = root.table("output")) {

@@ -169,6 +169,15 @@ const char* to_string(LinearSolverKind kind) {
   return "?";
 }
 
+bool linear_solver_from_string(const std::string& s, LinearSolverKind* kind) {
+  for (auto k : {LinearSolverKind::automatic, LinearSolverKind::umfpack, LinearSolverKind::cholmod})
+    if (s == to_string(k)) {
+      *kind = k;
+      return true;
+    }
+  return false;
+}
+
 std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind) {
   if (kind == LinearSolverKind::cholmod) return std::make_unique<Cholmod>();
   return std::make_unique<Umfpack>();

@@ -29,6 +29,8 @@ class LinearSolver {
 // UMFPACK otherwise; decided at every factorisation by the Newton solver.
 enum class LinearSolverKind { automatic, umfpack, cholmod };
 const char* to_string(LinearSolverKind kind);
+// "auto", "umfpack" or "cholmod"; false otherwise.
+bool linear_solver_from_string(const std::string& s, LinearSolverKind* kind);
 // umfpack or cholmod (automatic gives UMFPACK).
 std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind);
 

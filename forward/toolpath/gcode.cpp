@@ -1,5 +1,7 @@
 #include "forward/toolpath/gcode.hpp"
 
+#include "forward/io/text_file.hpp"
+
 #include "forward/io/input_error.hpp"
 
 #include <array>
@@ -331,15 +333,6 @@ ToolPath parse_gcode(const std::string& text, const std::string& file_name_for_e
   return ToolPath(std::move(points), o.rapid_feed);
 }
 
-ToolPath read_gcode(const std::string& file, const GcodeOptions& o) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw InputError(file, "", "", "cannot read file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, "", "", "cannot read file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(file, "", "", "cannot read file");
-  return parse_gcode(text.str(), file, o);
-}
+ToolPath read_gcode(const std::string& file, const GcodeOptions& o) { return parse_gcode(io::read_text_file(file), file, o); }
 
 }  // namespace spifit::toolpath

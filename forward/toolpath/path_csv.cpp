@@ -1,5 +1,7 @@
 #include "forward/toolpath/path_csv.hpp"
 
+#include "forward/io/text_file.hpp"
+
 #include "forward/io/input_error.hpp"
 
 #include <algorithm>
@@ -51,16 +53,6 @@ std::optional<double> parse_number(const std::string& s) {
   return v;
 }
 
-std::string read_text(const std::string& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw InputError(file, "", "", "cannot read file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw InputError(file, "", "", "cannot read file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw InputError(file, "", "", "cannot read file");
-  return text.str();
-}
 
 struct Reader {
   const std::string& file;
@@ -105,7 +97,7 @@ std::array<int, kNumColumns> parse_header(const Reader& r, const std::string& te
 ToolPath read_path_csv(const std::string& file, double default_feed) {
   if (!std::isfinite(default_feed) || default_feed < 0.0)
     throw std::invalid_argument("CSV tool path default feed must be >= 0");
-  std::string text = read_text(file);
+  std::string text = io::read_text_file(file);
   if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // UTF-8 byte order mark
 
   Reader r{file};

@@ -1,5 +1,7 @@
 // The spifit executable: version/help, lankford, material show, run; exit codes and the
 // one-line error contract; the --out/--force rule.
+#include "tests/cli/cli_support.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -14,27 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-Result run(const std::string& args) {
-  const fs::path tmp = fs::temp_directory_path() / ("spifit_cli_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(SPIFIT_EXE) + " " + args + " 2>" + tmp.string();
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream f(tmp);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  r.err = ss.str();
-  fs::remove(tmp);
-  return r;
-}
+using Result = spifit::test::CliResult;
+Result run(const std::string& args) { return spifit::test::run_spifit(args); }
 
 std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
 

@@ -1,5 +1,7 @@
 // spifit run on the FE forming scenes: the bundled §7.1 indent, and input errors (G-code,
 // paths) that exit 2 with one line naming the file, before the output directory is touched.
+#include "tests/cli/cli_support.hpp"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -15,27 +17,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Result {
-  int code = -1;
-  std::string out, err;
-};
-
-Result run(const std::string& args) {
-  const fs::path tmp = fs::temp_directory_path() / ("spifit_forming_cli_err_" + std::to_string(::getpid()));
-  const std::string cmd = std::string(SPIFIT_EXE) + " " + args + " 2>" + tmp.string();
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  std::array<char, 4096> buf{};
-  while (fgets(buf.data(), buf.size(), p)) r.out += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream f(tmp);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  r.err = ss.str();
-  fs::remove(tmp);
-  return r;
-}
+using Result = spifit::test::CliResult;
+Result run(const std::string& args) { return spifit::test::run_spifit(args); }
 
 fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_forming_cli_" + std::to_string(::getpid()) + "_" + name); }
 
