@@ -1,5 +1,7 @@
 #include "forward/contact/shell_contact.hpp"
 
+#include "forward/element/quad_shape.hpp"
+
 #include <cmath>
 
 namespace spifit::contact {
@@ -13,9 +15,6 @@ std::string ContactOptions::validate() const {
 }
 
 namespace {
-constexpr double kNodeXi[4] = {-1.0, 1.0, 1.0, -1.0};
-constexpr double kNodeEta[4] = {-1.0, -1.0, 1.0, 1.0};
-
 // Gauss-Legendre points on [-1, 1] (1..6).
 void gauss(int n, std::vector<double>* x, std::vector<double>* w) {
   const element::ThicknessRule r = element::gauss_legendre_rule(n);
@@ -32,8 +31,7 @@ ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       PointGeometry pg;
-      for (int k = 0; k < 4; ++k)
-        pg.N(k) = 0.25 * (1.0 + kNodeXi[k] * g[static_cast<std::size_t>(i)]) * (1.0 + kNodeEta[k] * g[static_cast<std::size_t>(j)]);
+      pg.N = element::quad_shape(g[static_cast<std::size_t>(i)], g[static_cast<std::size_t>(j)]);
       pg.area = w[static_cast<std::size_t>(i)] * w[static_cast<std::size_t>(j)];
       points_.push_back(pg);
     }
@@ -41,16 +39,11 @@ ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options
   areas_.resize(static_cast<std::size_t>(ne * per_element_));
   for (int e = 0; e < ne; ++e) {
     const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    element::NodeVectors X;
+    for (std::size_t k = 0; k < 4; ++k) X[k] = mesh.nodes[static_cast<std::size_t>(q[k])];
     for (int p = 0; p < per_element_; ++p) {
-      const int i = p % n, j = p / n;
-      const double xi = g[static_cast<std::size_t>(i)], eta = g[static_cast<std::size_t>(j)];
-      Eigen::Vector3d a0 = Eigen::Vector3d::Zero(), a1 = Eigen::Vector3d::Zero();
-      for (int k = 0; k < 4; ++k) {
-        const Eigen::Vector3d& X = mesh.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(k)])];
-        a0 += 0.25 * kNodeXi[k] * (1.0 + kNodeEta[k] * eta) * X;
-        a1 += 0.25 * kNodeEta[k] * (1.0 + kNodeXi[k] * xi) * X;
-      }
-      areas_[static_cast<std::size_t>(e * per_element_ + p)] = points_[static_cast<std::size_t>(p)].area * a0.cross(a1).norm();
+      const double xi = g[static_cast<std::size_t>(p % n)], eta = g[static_cast<std::size_t>(p / n)];
+      areas_[static_cast<std::size_t>(e * per_element_ + p)] = points_[static_cast<std::size_t>(p)].area * element::quad_area_jacobian(X, xi, eta);
     }
   }
   committed_.assign(areas_.size(), PointState{});

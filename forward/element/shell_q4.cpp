@@ -1,5 +1,7 @@
 #include "forward/element/shell_q4.hpp"
 
+#include "forward/element/quad_shape.hpp"
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 
@@ -8,28 +10,6 @@
 
 namespace spifit::element {
 namespace {
-
-constexpr double kNodeXi[4] = {-1.0, 1.0, 1.0, -1.0};
-constexpr double kNodeEta[4] = {-1.0, -1.0, 1.0, 1.0};
-
-Eigen::Vector4d shape(double xi, double eta) {
-  Eigen::Vector4d n;
-  for (int i = 0; i < 4; ++i) n(i) = 0.25 * (1.0 + kNodeXi[i] * xi) * (1.0 + kNodeEta[i] * eta);
-  return n;
-}
-
-Eigen::Matrix<double, 2, 4> shape_derivatives(double xi, double eta) {
-  Eigen::Matrix<double, 2, 4> d;
-  for (int i = 0; i < 4; ++i) {
-    d(0, i) = 0.25 * kNodeXi[i] * (1.0 + kNodeEta[i] * eta);
-    d(1, i) = 0.25 * kNodeEta[i] * (1.0 + kNodeXi[i] * xi);
-  }
-  return d;
-}
-
-Eigen::Vector3d combine(const Eigen::Ref<const Eigen::Vector4d>& w, const NodeVectors& v) {
-  return w(0) * v[0] + w(1) * v[1] + w(2) * v[2] + w(3) * v[3];
-}
 
 Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   Eigen::Matrix3d s;
@@ -71,9 +51,9 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   const double g = 1.0 / std::sqrt(3.0);
   const double gxi[4] = {-g, g, g, -g}, geta[4] = {-g, -g, g, g};
   // Element frame: e1 along the xi direction at the centre, projected on the tangent plane.
-  const Eigen::Vector3d a0_centre = combine(shape_derivatives(0.0, 0.0).row(0).transpose(), X);
+  const Eigen::Vector3d a0_centre = combine(quad_shape_derivatives(0.0, 0.0).row(0).transpose(), X);
   const auto setup = [&](PointGeometry& pg) {
-    const Eigen::Matrix<double, 2, 4> dn = shape_derivatives(pg.xi, pg.eta);
+    const Eigen::Matrix<double, 2, 4> dn = quad_shape_derivatives(pg.xi, pg.eta);
     const Eigen::Vector3d a0 = combine(dn.row(0).transpose(), X), a1 = combine(dn.row(1).transpose(), X);
     const Eigen::Vector3d normal = a0.cross(a1);
     if (!(normal.norm() > 1e-14 * a0.squaredNorm())) throw std::invalid_argument("degenerate shell element (zero area)");
@@ -109,7 +89,7 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   // Directors must agree with the element's orientation (consistently numbered mesh, no kink
   // sharper than 60 degrees between neighbouring elements).
   for (int i = 0; i < 4; ++i) {
-    const Eigen::Matrix<double, 2, 4> dn = shape_derivatives(kNodeXi[i], kNodeEta[i]);
+    const Eigen::Matrix<double, 2, 4> dn = quad_shape_derivatives(kNodeXi[i], kNodeEta[i]);
     const Eigen::Vector3d n = combine(dn.row(0).transpose(), X).cross(combine(dn.row(1).transpose(), X));
     if (!(n.normalized().dot(D[static_cast<std::size_t>(i)]) > 0.5))
       throw std::invalid_argument("node " + std::to_string(i) +
@@ -117,8 +97,8 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   }
   for (int t = 0; t < 4; ++t) {
     TyingPoint& tp = tying_[static_cast<std::size_t>(t)];
-    tp.N = shape(kTieXi[t], kTieEta[t]);
-    tp.dN = shape_derivatives(kTieXi[t], kTieEta[t]).row(kTieDir[t]).transpose();
+    tp.N = quad_shape(kTieXi[t], kTieEta[t]);
+    tp.dN = quad_shape_derivatives(kTieXi[t], kTieEta[t]).row(kTieDir[t]).transpose();
     tp.gamma_ref = combine(tp.dN, X).dot(combine(tp.N, D));
   }
   sections_.assign(4, ShellSection(law, rule, thickness));

@@ -23,6 +23,7 @@
 //    columns are replaced by the small drilling stiffness. Projected this way the rotational
 //    term is -(d.r_d)(I - d d^T): symmetric, so the tangent is symmetric whenever the
 //    material tangent is (elastic, Hill with isotropic hardening) and CHOLMOD applies.
+#include "forward/element/quad_shape.hpp"
 #include "forward/element/shell_section.hpp"
 
 #include <Eigen/Core>
@@ -45,7 +46,6 @@ struct ShellOptions {
 
 using Vec24 = Eigen::Matrix<double, 24, 1>;
 using Mat24 = Eigen::Matrix<double, 24, 24>;
-using NodeVectors = std::array<Eigen::Vector3d, 4>;
 
 // From derivatives with respect to p = (x_I, d_I) (positions and directors, 6 per node) to
 // the DOFs u = (translation, rotation increment): residual and exact tangent on the rotations

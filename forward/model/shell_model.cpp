@@ -94,23 +94,17 @@ void ShellModel::add_nodal_load(int dof_index, double amplitude) {
 
 void ShellModel::add_surface_load(const std::vector<int>& elements, const Eigen::Vector3d& load_per_area) {
   const double g = 1.0 / std::sqrt(3.0);
-  constexpr double xs[4] = {-1.0, 1.0, 1.0, -1.0}, ys[4] = {-1.0, -1.0, 1.0, 1.0};
   for (int e : elements) {
     const auto& q = mesh_->quads.at(static_cast<std::size_t>(e));
+    element::NodeVectors X;
+    for (std::size_t i = 0; i < 4; ++i) X[i] = mesh_->nodes[static_cast<std::size_t>(q[i])];
     for (int p = 0; p < 4; ++p) {
-      const double xi = xs[p] * g, eta = ys[p] * g;
-      Eigen::Vector3d a0 = Eigen::Vector3d::Zero(), a1 = Eigen::Vector3d::Zero();
-      double n[4];
-      for (int i = 0; i < 4; ++i) {
-        const Eigen::Vector3d& X = mesh_->nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])];
-        n[i] = 0.25 * (1.0 + xs[i] * xi) * (1.0 + ys[i] * eta);
-        a0 += 0.25 * xs[i] * (1.0 + ys[i] * eta) * X;
-        a1 += 0.25 * ys[i] * (1.0 + xs[i] * xi) * X;
-      }
-      const double da = a0.cross(a1).norm();
+      const double xi = element::kNodeXi[p] * g, eta = element::kNodeEta[p] * g;
+      const Eigen::Vector4d n = element::quad_shape(xi, eta);
+      const double da = element::quad_area_jacobian(X, xi, eta);
       for (int i = 0; i < 4; ++i)
         for (int c = 0; c < 3; ++c)
-          if (load_per_area(c) != 0.0) loads_.emplace_back(dof(q[static_cast<std::size_t>(i)], c), n[i] * da * load_per_area(c));
+          if (load_per_area(c) != 0.0) loads_.emplace_back(dof(q[static_cast<std::size_t>(i)], c), n(i) * da * load_per_area(c));
     }
   }
 }
@@ -240,8 +234,7 @@ Eigen::VectorXd ShellModel::increment_from_committed() const { return increment_
 std::vector<double> ShellModel::nodal_thickness() const {
   std::vector<double> h(x_.size(), 0.0), w(x_.size(), 0.0);
   for (int e = 0; e < num_elements(); ++e) {
-    double he = 0.0;
-    for (int p = 0; p < element::ShellQ4::kPoints; ++p) he += 0.25 * elements_[static_cast<std::size_t>(e)].section(p).thickness();
+    const double he = element_thickness(e);
     for (int i : mesh_->quads[static_cast<std::size_t>(e)]) {
       h[static_cast<std::size_t>(i)] += he;
       w[static_cast<std::size_t>(i)] += 1.0;
