@@ -63,9 +63,15 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
   Eigen::VectorXd reactions = Eigen::VectorXd::Zero(problem_.num_dofs());
   if (with_tangent) k_->set_zero();
   const int chunk = std::min(options_.element_chunk, std::max(ne, 1));
-  std::vector<Eigen::VectorXd> re(static_cast<std::size_t>(chunk));
-  std::vector<Eigen::MatrixXd> ke(static_cast<std::size_t>(chunk));
-  std::vector<ElementEvaluation> ev(static_cast<std::size_t>(chunk));
+  // Element buffers live as long as the solver: no allocation per iteration once sized.
+  if (re_.size() != static_cast<std::size_t>(chunk)) {
+    re_.resize(static_cast<std::size_t>(chunk));
+    ke_.resize(static_cast<std::size_t>(chunk));
+    ev_.resize(static_cast<std::size_t>(chunk));
+  }
+  auto& re = re_;
+  auto& ke = ke_;
+  auto& ev = ev_;
   for (int first = 0; first < ne; first += chunk) {
     const int count = std::min(chunk, ne - first);
 #pragma omp parallel for schedule(static)

@@ -85,6 +85,9 @@ class NewtonSolver {
   std::unique_ptr<class ReducedAssembler> assembler_;
   std::unique_ptr<SparseMatrix> k_;
   std::unique_ptr<LinearSolver> umfpack_, cholmod_;
+  std::vector<Eigen::VectorXd> re_;  // per-chunk element residuals, tangents, statuses
+  std::vector<Eigen::MatrixXd> ke_;
+  std::vector<ElementEvaluation> ev_;
   LinearSolver& umfpack();
   LinearSolver& cholmod();
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error);
