@@ -153,15 +153,19 @@ FormingScene read_forming_scene(const std::string& path) {
   } else {
     for (const auto& p : s.path) tips.push_back(p.tip);
   }
+  // Path errors are reported on the key that holds the path.
+  const auto path_error = [&](const std::string& message) {
+    if (!s.gcode.empty()) root.table("tool")->fail("gcode", message);
+    if (!points.empty()) points.front().fail("z", message);
+    sc->fail("kind", message + " (default path of this kind)");
+  };
   if (tips.front().z() < -1e-9 && over_sheet(tips.front())) {
     char buf[160];
     std::snprintf(buf, sizeof buf, "the tool starts inside the sheet: its tip is %.4g mm below the top surface", -tips.front().z());
-    if (!s.gcode.empty()) root.fail("tool", buf);
-    points.empty() ? root.fail("scene", buf) : points.front().fail("z", buf);
+    path_error(buf);
   }
   if (std::none_of(tips.begin(), tips.end(), [&](const Eigen::Vector3d& t) { return t.z() < 0.0 && over_sheet(t); }))
-    (s.gcode.empty() ? (points.empty() ? *sc : points.front()) : *root.table("tool"))
-        .fail(s.gcode.empty() ? (points.empty() ? "kind" : "z") : "gcode", "the tool path never goes below the sheet's top surface over the sheet");
+    path_error("the tool path never goes below the sheet's top surface over the sheet");
   return s;
 }
 
