@@ -49,6 +49,7 @@ class ShellSection {
   double thickness() const { return h_; }  // committed, constant-volume
   int layers() const { return static_cast<int>(points_.size()); }
   const material::MaterialState<double, 3>& layer_state(int l) const { return points_[static_cast<std::size_t>(l)].committed(); }
+  const material::MaterialState<double, 3>& layer_trial_state(int l) const { return points_[static_cast<std::size_t>(l)].trial(); }
   const Vec3& layer_log_strain(int l) const { return eps_[static_cast<std::size_t>(l)]; }
   const Vec3& membrane_green_strain() const { return e_committed_; }
 
