@@ -92,11 +92,14 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
     if (mu > 0.0) {
       // Slip of the sheet point relative to the tool over the increment; the committed traction
       // is zero for a point that was not in contact.
-      const Eigen::Vector3d slip = (xp - xp0) - (tool.centre - tool.centre_committed);
+      // A spinning tool's surface point moves by spin x (xp - centre) on top of the translation.
+      const Eigen::Vector3d slip = (xp - xp0) - (tool.centre - tool.centre_committed) - tool.spin.cross(v);
       const Eigen::Vector3d w = committed_[id].traction - kt * slip;
       const Eigen::Vector3d ttr = P * w;
-      // d(P w)/dx = -kt P - (n.w) P / rho - n (P w)^T / rho
-      Eigen::Matrix3d dttr = -kt * P - (n.dot(w) / rho) * P - n * (P * w).transpose() / rho;
+      // d(P w)/dx = -kt P (I - [spin]x) - (n.w) P / rho - n (P w)^T / rho
+      Eigen::Matrix3d spin_cross;
+      spin_cross << 0.0, -tool.spin.z(), tool.spin.y(), tool.spin.z(), 0.0, -tool.spin.x(), -tool.spin.y(), tool.spin.x(), 0.0;
+      Eigen::Matrix3d dttr = -kt * P * (Eigen::Matrix3d::Identity() - spin_cross) - (n.dot(w) / rho) * P - n * (P * w).transpose() / rho;
       const double norm = ttr.norm(), limit = mu * pressure;
       if (norm <= limit) {
         t = ttr;

@@ -27,6 +27,10 @@ struct SphereTool {
   double radius = 5.0;
   Eigen::Vector3d centre = Eigen::Vector3d::Zero();           // at the end of the increment
   Eigen::Vector3d centre_committed = Eigen::Vector3d::Zero(); // at its start (slip reference)
+  // Tool spin over the increment: rotation vector (axis x angle, rad) about the tool centre.
+  // The tool surface at a contact point x moves by spin x (x - centre) (rate form: the
+  // velocity at the end of the increment times its duration), which enters the friction slip.
+  Eigen::Vector3d spin = Eigen::Vector3d::Zero();
 };
 
 // What an element's contact points carry at the trial state.

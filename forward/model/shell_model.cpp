@@ -121,8 +121,10 @@ Eigen::VectorXd ShellModel::internal_forces() {
   return f;
 }
 
-void ShellModel::set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options) {
+void ShellModel::set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options, double spin_per_load_factor) {
   if (!(radius > 0.0)) throw std::invalid_argument("tool radius must be > 0");
+  if (!std::isfinite(spin_per_load_factor)) throw std::invalid_argument("tool spin must be finite");
+  spin_per_load_factor_ = spin_per_load_factor;
   if (const std::string err = options.validate(); !err.empty()) throw std::invalid_argument("contact: " + err);
   contact_ = std::make_unique<contact::ShellContact>(*mesh_, options);
   tool_path_ = std::move(path);
@@ -136,6 +138,7 @@ void ShellModel::begin_increment(double lambda0, double lambda1) {
   if (!contact_) return;
   tool_.centre_committed = tool_path_(lambda0);
   tool_.centre = tool_path_(lambda1);
+  tool_.spin = Eigen::Vector3d(0.0, 0.0, spin_per_load_factor_ * (lambda1 - lambda0));
 }
 
 double ShellModel::element_thickness(int e) const {

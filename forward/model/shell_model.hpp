@@ -46,7 +46,9 @@ class ShellModel final : public solver::NonlinearProblem {
 
   // Contact with a rigid sphere whose centre follows path(lambda) (tool travel as load factor).
   using ToolPathFunction = std::function<Eigen::Vector3d(double)>;
-  void set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options);
+  // spin_per_load_factor: tool rotation about +z [rad] per unit of load factor (rpm x 2 pi / 60
+  // x seconds per unit load factor); positive = counter-clockwise seen from above.
+  void set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options, double spin_per_load_factor = 0.0);
   bool has_tool() const { return contact_ != nullptr; }
   const contact::SphereTool& tool() const { return tool_; }
   // Committed contact: force on the sheet, penetration, pressure (zero without a tool).
@@ -106,6 +108,7 @@ class ShellModel final : public solver::NonlinearProblem {
   std::unique_ptr<contact::ShellContact> contact_;
   ToolPathFunction tool_path_;
   contact::SphereTool tool_;
+  double spin_per_load_factor_ = 0.0;
   double element_thickness(int e) const;
 };
 

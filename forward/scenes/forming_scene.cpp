@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <sstream>
 
 namespace spifit::scene {
@@ -29,6 +30,9 @@ void set_defaults(FormingScene& s) {
     s.radius = 5.0; s.feed = 2.0;
     s.path = {{"A", {0.0, 0.0, 0.0}}, {"B", {0.0, 0.0, -2.0}}};
     s.travel_per_increment = 0.05;
+    // No predictor: from K_p = 1e6 up it led Newton into states it could not leave even with
+    // 1e-5 of the step (docs/contact.md); this small model gains nothing from it anyway.
+    s.extrapolate = false;
   } else {
     // §3.2: 182 x 182 mm, t = 1.2, 50 x 50 regular mesh (3.64 mm), edges clamped, R = 5,
     // A (-50, 0) above the sheet, B at 5 mm depth, C after +100 mm, D at 10 mm, E back -100 mm.
@@ -85,9 +89,11 @@ FormingScene read_forming_scene(const std::string& path) {
     if (s.thickness_points < 1 || s.thickness_points > 11) sh->fail("thickness_points", "unsupported number of thickness points (1 to 11)");
   }
   if (const auto tl = root.table("tool")) {
-    tl->allow_only({"radius", "feed", "gcode"});
+    tl->allow_only({"radius", "feed", "gcode", "spin"});
     positive(*tl, "radius", &s.radius);
     positive(*tl, "feed", &s.feed);
+    s.spin = tl->number("spin", 0.0);
+    if (!(std::abs(s.spin) <= 1e5)) tl->fail("spin", "must be a rotation speed in rev/min with |spin| <= 1e5");
     if (tl->has("gcode")) {
       std::filesystem::path gp(tl->string("gcode"));
       if (gp.is_relative()) gp = std::filesystem::path(path).parent_path() / gp;
@@ -121,7 +127,14 @@ FormingScene read_forming_scene(const std::string& path) {
     }
   }
   if (const auto so = root.table("solver")) {
-    so->allow_only({"travel_per_increment", "max_iterations", "linear_solver"});
+    so->allow_only({"travel_per_increment", "max_iterations", "linear_solver", "extrapolate", "line_search", "force_tolerance",
+                    "displacement_tolerance"});
+    s.extrapolate = so->boolean("extrapolate", s.extrapolate);
+    s.line_search = so->boolean("line_search", s.line_search);
+    for (auto [key, v] : {std::pair{"force_tolerance", &s.force_tolerance}, std::pair{"displacement_tolerance", &s.displacement_tolerance}}) {
+      *v = so->number(key, *v);
+      if (!(*v >= 1e-12 && *v <= 1e-2)) so->fail(key, "must lie in [1e-12, 1e-2]");
+    }
     positive(*so, "travel_per_increment", &s.travel_per_increment);
     s.max_iterations = so->integer("max_iterations", s.max_iterations);
     if (s.max_iterations < 1 || s.max_iterations > 1000) so->fail("max_iterations", "must be in [1, 1000]");
@@ -192,7 +205,9 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   }();
   const double L = path.length();
   if (scene.gcode.empty()) marks = path.waypoint_distances();
-  model.set_tool(scene.radius, [path, L](double lambda) { return path.at_distance(lambda * L); }, scene.contact);
+  // Spin [rad per unit load factor] = omega [rad/s] x travel time L / feed [s].
+  const double spin_per_load_factor = scene.spin * 2.0 * std::numbers::pi / 60.0 * L / scene.feed;
+  model.set_tool(scene.radius, [path, L](double lambda) { return path.at_distance(lambda * L); }, scene.contact, spin_per_load_factor);
 
   solver::DofConstraints c(model.num_dofs());
   for (int n : mesh.node_sets.at("boundary"))
@@ -207,6 +222,10 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   o.initial_increment = o.max_increment = std::min(1.0, scene.travel_per_increment / L);
   o.min_increment = 1e-4 * o.initial_increment;
   o.max_iterations = scene.max_iterations;
+  o.extrapolate = scene.extrapolate;
+  o.line_search = scene.line_search;
+  o.force_tolerance = scene.force_tolerance;
+  o.displacement_tolerance = scene.displacement_tolerance;
   if (scene.linear_solver) o.linear_solver = *scene.linear_solver;
 
   json s;
@@ -217,7 +236,7 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   s["material"] = scene.card.name;
   s["model"] = {{"elements", model.num_elements()}, {"nodes", model.num_nodes()}, {"half", scene.half},
                 {"thickness", scene.thickness}, {"length", scene.length}, {"thickness_points", scene.thickness_points}};
-  s["tool"] = {{"radius", scene.radius}, {"travel", L}, {"feed", scene.feed}, {"gcode", scene.gcode}};
+  s["tool"] = {{"radius", scene.radius}, {"travel", L}, {"feed", scene.feed}, {"spin_rpm", scene.spin}, {"gcode", scene.gcode}};
   s["contact"] = {{"penalty", scene.contact.penalty}, {"friction", scene.contact.friction}, {"points", scene.contact.points}};
   s["warnings"] = model.warnings();
   s["status"] = "running";
@@ -288,7 +307,12 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
     const solver::NewtonSummary r = solver.solve(lambda, target, on_increment);
     total.iterations += r.iterations;
     total.cutbacks += r.cutbacks;
-    total.factorisations += r.factorisations;
+    total.factorisations = r.factorisations;  // the solver counts over its life
+    total.cholmod_factorisations = r.cholmod_factorisations;  // cumulative, as the timers
+    total.umfpack_factorisations = r.umfpack_factorisations;
+    total.element_seconds = r.element_seconds;  // cumulative over the solver's life
+    total.scatter_seconds = r.scatter_seconds;
+    total.linear_seconds = r.linear_seconds;
     if (!r.converged) {
       total.converged = false;
       total.message = r.message;
@@ -307,7 +331,9 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   s["increments"] = increments;
   s["newton_iterations"] = total.iterations;
   s["cutbacks"] = total.cutbacks;
+  s["profile_seconds"] = {{"elements", total.element_seconds}, {"assembly", total.scatter_seconds}, {"linear_solver", total.linear_seconds}};
   s["factorisations"] = total.factorisations;
+  s["factorisations_by_solver"] = {{"cholmod", total.cholmod_factorisations}, {"umfpack", total.umfpack_factorisations}};
   s["travel_reached"] = total.lambda * L;
   s["peak_force"] = {peak.x(), peak.y(), peak.z()};
   s["final_force"] = {mirror * f.x(), scene.half ? 0.0 : f.y(), mirror * f.z()};

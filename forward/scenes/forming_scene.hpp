@@ -35,12 +35,18 @@ struct FormingScene {
   // Tool.
   double radius = 5.0;
   double feed = 2.0;          // mm/s (force.csv time = travel / feed)
+  double spin = 0.0;          // tool rotation [rev/min] about +z (counter-clockwise seen from above); acts through friction
   std::vector<PathPoint> path;
   std::string gcode;          // G-code file of the tool tip (replaces `path` when set)
   contact::ContactOptions contact;
   // Solver: increments of tool travel.
   double travel_per_increment = 0.1;  // mm
   int max_iterations = 25;
+  bool extrapolate = true;            // predictor from the previous increment (NewtonOptions)
+  bool line_search = false;           // energy line search (NewtonOptions)
+  // Relative (NewtonOptions). 1e-5 changed the indent_line peak force by 1e-12 relative and
+  // saved 13 % of the iterations against 1e-7 (docs/contact.md).
+  double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
   std::optional<solver::LinearSolverKind> linear_solver;
   // Output.
   int vtu_every = 0;

@@ -3,12 +3,18 @@
 #include "forward/solver/reduced_assembler.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 namespace spifit::solver {
+namespace {
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+}  // namespace
 
 std::string NewtonOptions::validate() const {
   if (!(min_increment > 0.0 && min_increment <= initial_increment && initial_increment <= max_increment && max_increment <= 1.0)) {
@@ -74,11 +80,14 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
   auto& ev = ev_;
   for (int first = 0; first < ne; first += chunk) {
     const int count = std::min(chunk, ne - first);
+    auto t0 = std::chrono::steady_clock::now();
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < count; ++i) {
       const auto ui = static_cast<std::size_t>(i);
       ev[ui] = problem_.evaluate_element(first + i, &re[ui], with_tangent ? &ke[ui] : nullptr);
     }
+    element_seconds_ += seconds_since(t0);
+    t0 = std::chrono::steady_clock::now();
     // Scatter in element order: the result does not depend on the number of threads.
     for (int i = 0; i < count; ++i) {
       const auto ui = static_cast<std::size_t>(i);
@@ -98,6 +107,7 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
       for (std::size_t a = 0; a < ed.size(); ++a) full(ed[a]) += r(static_cast<Eigen::Index>(a));
       if (with_tangent) assembler_->add(first + i, re[ui], &ke[ui], nullptr, nullptr, k_.get());
     }
+    scatter_seconds_ += seconds_since(t0);
   }
   out.residual = constraints_.reduce(full);
   out.reaction_norm = reactions.norm();
@@ -105,6 +115,12 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
 }
 
 bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error) {
+  const auto t0 = std::chrono::steady_clock::now();
+  struct Clock {
+    std::chrono::steady_clock::time_point t0;
+    double* sink;
+    ~Clock() { *sink += seconds_since(t0); }
+  } clock{t0, &linear_seconds_};
   LinearSolver& first = linear_solver();
   if (first.factorize(*k_) && first.solve(rhs, x)) return true;
   if (&first == cholmod_.get()) {
@@ -129,11 +145,32 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     *failure = a.failure;
     return false;
   }
+  bool first = true;
+  if (options_.extrapolate && last_dl_ > 0.0 && last_increment_.size() == problem_.num_dofs()) {
+    // The predicted iterate replaces the committed one when it is closer to equilibrium.
+    const double scale = (lambda1 - lambda0) / last_dl_;
+    problem_.set_trial(scale * last_increment_ + dg, 1.0);
+    Assembly p = assemble(lambda1, true, nullptr);
+    if (p.failure.ok && p.residual.norm() < a.residual.norm()) {
+      problem_.accept_trial();
+      a = std::move(p);
+      first = false;
+      report->extrapolated = true;
+    } else {
+      problem_.revert();
+      problem_.begin_increment(lambda0, lambda1);
+      a = assemble(lambda1, true, has_dg ? &dg : nullptr);  // the tangent at the committed state again
+      if (!a.failure.ok) {
+        *failure = a.failure;
+        return false;
+      }
+    }
+  }
   // Force scale of the convergence test: external forces and the reactions of the current
   // iterate (the first residual only for the report, where both may still vanish).
-  report->residual_norms.push_back(a.residual.norm() / std::max({f_ext.norm(), a.reaction_norm, a.residual.norm(), 1e-300}));
+  const double r0 = a.residual.norm() / std::max({f_ext.norm(), a.reaction_norm, a.residual.norm(), 1e-300});
+  report->residual_norms.push_back(r0);
   Eigen::VectorXd r = a.residual;
-  bool first = true;
   for (int it = 1; it <= options_.max_iterations; ++it) {
     Eigen::VectorXd du;
     std::string error;
@@ -188,6 +225,14 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     if (rel <= options_.force_tolerance && (step <= options_.displacement_tolerance * std::max(inc, 1e-300) ||
                                             rel <= 1e-3 * options_.force_tolerance))
       return true;
+    if (options_.divergence_after > 0 && it >= options_.divergence_after && rel > r0) {
+      char buf[160];
+      std::snprintf(buf, sizeof buf, "Newton iterations diverging (relative residual %.3g after %d iterations, %.3g at the start)", rel, it, r0);
+      failure->ok = false;
+      failure->reason = buf;
+      failure->suggested_scale = options_.cutback;
+      return false;
+    }
   }
   failure->ok = false;
   char buf[160];
@@ -204,6 +249,7 @@ NewtonSummary NewtonSolver::solve(double lambda_start, double lambda_end, const 
   NewtonSummary summary;
   summary.lambda = lambda_start;
   double lambda = lambda_start, dl = options_.linear ? lambda_end - lambda_start : options_.initial_increment;
+  double ceiling = options_.max_increment;
   while (lambda < lambda_end - 1e-12) {
     double lambda1 = std::min(lambda + dl, lambda_end);
     if (lambda_end - lambda1 < 1e-3 * dl) lambda1 = lambda_end;
@@ -215,6 +261,10 @@ NewtonSummary NewtonSolver::solve(double lambda_start, double lambda_end, const 
     const bool ok = increment(lambda, lambda1, &report, &failure);
     summary.iterations += report.iterations;
     if (ok) {
+      if (options_.extrapolate) {
+        last_increment_ = problem_.increment_from_committed() - constraints_.prescribed_values(lambda1 - lambda);
+        last_dl_ = lambda1 - lambda;
+      }
       problem_.commit(lambda1);
       lambda = lambda1;
       summary.lambda = lambda;
@@ -224,9 +274,12 @@ NewtonSummary NewtonSolver::solve(double lambda_start, double lambda_end, const 
         summary.message = "stopped by the caller at load factor " + std::to_string(lambda);
         break;
       }
-      if (report.iterations <= options_.easy_iterations) dl = std::min(options_.max_increment, dl * options_.growth);
+      // Growth stays below a size that failed recently; that ceiling relaxes slowly.
+      ceiling = std::min(options_.max_increment, ceiling * 1.1);
+      if (report.iterations <= options_.easy_iterations) dl = std::min(ceiling, dl * options_.growth);
       continue;
     }
+    ceiling = std::max(options_.min_increment, 0.75 * (lambda1 - lambda));
     problem_.revert();
     ++summary.cutbacks;
     const double s = std::min(options_.cutback, failure.suggested_scale);
@@ -243,6 +296,9 @@ NewtonSummary NewtonSolver::solve(double lambda_start, double lambda_end, const 
   summary.cholmod_factorisations = cholmod_ ? cholmod_->numeric_factorisations() : 0;
   summary.umfpack_factorisations = umfpack_ ? umfpack_->numeric_factorisations() : 0;
   summary.factorisations = summary.cholmod_factorisations + summary.umfpack_factorisations;
+  summary.element_seconds = element_seconds_;
+  summary.scatter_seconds = scatter_seconds_;
+  summary.linear_seconds = linear_seconds_;
   summary.symbolic_analyses = (cholmod_ ? cholmod_->symbolic_analyses() : 0) + (umfpack_ ? umfpack_->symbolic_analyses() : 0);
   return summary;
 }

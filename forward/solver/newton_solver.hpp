@@ -30,6 +30,13 @@ struct NewtonOptions {
   // element fails are halved whatever this says.
   bool line_search = false;
   int max_line_search = 6;
+  // Predictor: the first iterate of an increment is the previous increment's free
+  // displacement scaled to the new increment size, kept only when its residual is smaller
+  // than that of the committed state (a moving tool drags a similar field along).
+  bool extrapolate = false;
+  // An increment whose residual exceeds its initial one after `divergence_after` iterations
+  // is cut back at once instead of iterating to max_iterations (0: never).
+  int divergence_after = 3;
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
   int element_chunk = 2048;
   // Linear analysis: one increment, one solve from the reference state, no equilibrium
@@ -44,6 +51,7 @@ struct IncrementReport {
   double lambda = 0.0, increment = 0.0;
   int iterations = 0;
   int line_searches = 0;
+  bool extrapolated = false;  // started from the extrapolated predictor
   std::vector<double> residual_norms;  // relative, one per iteration (first: before the first correction)
   std::vector<double> correction_norms;  // |alpha du| of each iteration (reduced unknowns)
 };
@@ -56,6 +64,10 @@ struct NewtonSummary {
   int cholmod_factorisations = 0, umfpack_factorisations = 0;
   std::string message;            // why it stopped (failure: where and why)
   std::vector<IncrementReport> history;
+  // Wall seconds by phase (profiling aid for the benchmarks; not part of any result).
+  double element_seconds = 0.0;   // parallel element evaluation
+  double scatter_seconds = 0.0;   // serial assembly in element order
+  double linear_seconds = 0.0;    // factorisation + solve
 };
 
 class NewtonSolver {
@@ -88,6 +100,10 @@ class NewtonSolver {
   std::vector<Eigen::VectorXd> re_;  // per-chunk element residuals, tangents, statuses
   std::vector<Eigen::MatrixXd> ke_;
   std::vector<ElementEvaluation> ev_;
+  double element_seconds_ = 0.0, scatter_seconds_ = 0.0, linear_seconds_ = 0.0;
+  // Free part of the last converged increment (full DOF vector) and its load-factor size.
+  Eigen::VectorXd last_increment_;
+  double last_dl_ = 0.0;
   LinearSolver& umfpack();
   LinearSolver& cholmod();
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error);

@@ -92,6 +92,29 @@ TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
   EXPECT_NE(error_of(head + "[contact]\npenalty = -1\n").find("penalty"), std::string::npos);
   EXPECT_NE(error_of(head + "[output]\nsections = [\"Z\"]\n").find("no path point named"), std::string::npos);
   EXPECT_NE(error_of(head + "[tool]\ngcode = \"missing.nc\"\n").find("not found"), std::string::npos);
+  const std::string spin = error_of(head + "[tool]\nspin = 1e9\n");
+  EXPECT_NE(spin.find("spin"), std::string::npos) << spin;
+  EXPECT_NE(spin.find("rev/min"), std::string::npos) << spin;
+}
+
+// Tool spin acts through friction only: without friction the indent is bitwise the same;
+// with friction (mu = 0.1) on the symmetric indent the circumferential tractions cancel in the
+// resultant (no side force) and the spin's slip keeps the points sliding, which changes Fz.
+TEST(FormingScene, ToolSpinActsThroughFrictionOnly) {
+  FormingScene base = read_forming_scene(src("experiments/aa3003o/scenes/indent.toml"));
+  base.travel_per_increment = 0.1;
+  FormingScene spun = base;
+  spun.spin = 600.0;  // rev/min: 63 rad/s, 6.3 rad per 0.1 mm increment at 2 mm/s
+  const auto a = run(base, "nospin"), b = run(spun, "spin");
+  EXPECT_EQ(a["final_force"][2].get<double>(), b["final_force"][2].get<double>());
+  base.contact.friction = spun.contact.friction = 0.1;
+  const auto c = run(base, "nospin_mu"), d = run(spun, "spin_mu");
+  const double fz = d["final_force"][2].get<double>();
+  std::printf("indent Fz: %.4f N (mu 0), %.4f N (mu 0.1), %.4f N (mu 0.1, 600 rev/min); side force with spin (%.2e, %.2e) N\n",
+              a["final_force"][2].get<double>(), c["final_force"][2].get<double>(), fz, d["final_force"][0].get<double>(),
+              d["final_force"][1].get<double>());
+  EXPECT_LT(std::hypot(d["final_force"][0].get<double>(), d["final_force"][1].get<double>()), 1e-6 * fz);
+  EXPECT_GT(std::abs(fz - c["final_force"][2].get<double>()), 1e-4 * fz);
 }
 
 }  // namespace
