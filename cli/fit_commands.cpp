@@ -126,31 +126,42 @@ void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   });
 }
 
+namespace {
+
+reports::SweepTable sweep_table(const inverse::SweepSpec& spec, const inverse::SweepResult& r) {
+  reports::SweepTable table;
+  for (const auto& in : spec.inputs) table.inputs.push_back(in.name);
+  table.metrics = spec.metrics;
+  for (const auto& p : r.points) {
+    table.input_values.push_back(p.inputs);
+    table.metric_values.push_back(p.metrics);
+    table.wall_seconds.push_back(p.wall_seconds);
+    table.ok.push_back(p.ok);
+  }
+  return table;
+}
+
+}  // namespace
+
 void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string file, out; bool force = false; };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("sweep", "Run a scene over a grid of inputs: DIR/sweep.csv, DIR/sensitivities.csv");
+  auto* cmd = app.add_subcommand("sweep", "Run a scene over a grid of inputs: DIR/sweep.csv, DIR/sensitivities.csv (forming scenes: DIR/points/NNN/)");
   cmd->add_option("SWEEP", o->file, "sweep file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
   cmd->callback([o, &g, &exit_code] {
     const auto spec = inverse::read_sweep_file(o->file);
-    const auto dir = io::OutputDirectory::prepare(o->out, o->force, {o->file, spec.scene.file, spec.scene.card.file});
+    const auto dir = io::OutputDirectory::prepare(o->out, o->force, inverse::sweep_input_files(spec));
     dir.write_file("summary.json", nlohmann::json{{"status", "running"}, {"kind", "sweep"}}.dump(2) + "\n");
-    const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const auto r = inverse::run_sweep(spec, threads);
+    inverse::SweepRunOptions ro;
+    ro.threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    ro.out = &dir;
+    ro.progress = !g.quiet;
+    const auto r = inverse::run_sweep(spec, ro);
     dir.write_file("sweep.csv", inverse::sweep_csv(spec, r));
     if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));
-    reports::SweepTable table;
-    for (const auto& in : spec.inputs) table.inputs.push_back(in.name);
-    table.metrics = spec.metrics;
-    for (const auto& p : r.points) {
-      table.input_values.push_back(p.inputs);
-      table.metric_values.push_back(p.metrics);
-      table.wall_seconds.push_back(p.wall_seconds);
-      table.ok.push_back(p.ok);
-    }
-    for (const auto& w : reports::render_sweep_plots(dir.path(), table)) std::cerr << "spifit: warning: " << w << "\n";
+    for (const auto& w : reports::render_sweep_plots(dir.path(), sweep_table(spec, r))) std::cerr << "spifit: warning: " << w << "\n";
     int failed = 0;
     for (const auto& p : r.points) failed += p.ok ? 0 : 1;
     dir.write_file("summary.json", nlohmann::json{{"status", "ok"}, {"kind", "sweep"}, {"sweep", spec.name}, {"points", r.points.size()},

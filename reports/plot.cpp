@@ -48,9 +48,13 @@ std::string first_lines(const fs::path& p, int max_lines) {
   return out;
 }
 
-bool has_finite_point(const Series& s, bool log_y) {
+bool drawable(const PlotSpec& spec, double x, double y) {
+  return std::isfinite(x) && std::isfinite(y) && (!spec.log_y || y > 0) && (!spec.log_x || x > 0);
+}
+
+bool has_finite_point(const Series& s, const PlotSpec& spec) {
   for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-    if (std::isfinite(s.x[i]) && std::isfinite(s.y[i]) && (!log_y || s.y[i] > 0)) return true;
+    if (drawable(spec, s.x[i], s.y[i])) return true;
   }
   return false;
 }
@@ -107,12 +111,12 @@ std::string gnuplot_data(const PlotSpec& spec) {
   std::string out;
   bool first = true;
   for (const auto& s : spec.series) {
-    if (!has_finite_point(s, spec.log_y)) continue;
+    if (!has_finite_point(s, spec)) continue;
     if (!first) out += "\n\n";
     first = false;
     out += "# " + safe_file_stem(s.title) + "\n";
     for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
-      if (!std::isfinite(s.x[i]) || !std::isfinite(s.y[i]) || (spec.log_y && !(s.y[i] > 0))) continue;
+      if (!drawable(spec, s.x[i], s.y[i])) continue;
       out += number(s.x[i]) + " " + number(s.y[i]) + "\n";
     }
   }
@@ -147,6 +151,7 @@ std::string gnuplot_script(const PlotSpec& spec, PlotFormat format, const std::s
   }
   g << "set border lc rgb '#444444'\n";
   if (spec.log_y) g << "set logscale y\nset format y '%.0e'\n";
+  if (spec.log_x) g << "set logscale x\nset format x '%.0e'\n";
   if (spec.has_yrange && std::isfinite(spec.ymin) && std::isfinite(spec.ymax) && spec.ymax > spec.ymin) {
     g << "set yrange [" << number(spec.ymin) << ":" << number(spec.ymax) << "]\n";
   }
@@ -166,7 +171,7 @@ std::string gnuplot_script(const PlotSpec& spec, PlotFormat format, const std::s
   int block = 0;
   for (std::size_t k = 0; k < spec.series.size(); ++k) {
     const auto& s = spec.series[k];
-    if (!has_finite_point(s, spec.log_y)) continue;
+    if (!has_finite_point(s, spec)) continue;
     const std::string color = s.color.empty() ? default_color(s.style, k) : s.color;
     std::string style;
     switch (s.style) {
@@ -235,7 +240,7 @@ PlotResult render_plot(const fs::path& gnuplot, const fs::path& plots_dir, const
   if (ec) return {false, {}, "cannot create " + (plots_dir / "src").string() + ": " + ec.message()};
   fs::remove(plots_dir / image, ec);
   bool any = false;
-  for (const auto& s : spec.series) any = any || has_finite_point(s, spec.log_y);
+  for (const auto& s : spec.series) any = any || has_finite_point(s, spec);
   if (!any) return {false, {}, "plot " + stem + ": nothing to plot (no finite values)"};
   try {
     io::write_file_atomic(plots_dir / "src" / (stem + ".dat"), gnuplot_data(spec));

@@ -38,6 +38,7 @@ struct PlotSpec {
   std::string stem;                      // file names: STEM.svg, src/STEM.gp, src/STEM.dat (sanitised)
   std::string title, xlabel, ylabel;
   bool log_y = false;
+  bool log_x = false;                    // logarithmic x axis (points with x <= 0 are left out)
   bool key = true;                       // legend (top left)
   bool integer_x = false;                // x tics at integers only (iterations)
   std::vector<Series> series;

@@ -9,6 +9,17 @@
 
 namespace spifit::reports {
 
+bool sweep_log_x(const std::vector<double>& v) {
+  if (v.empty()) return false;
+  double lo = v.front(), hi = v.front();
+  for (double x : v) {
+    if (!(x > 0.0) || !std::isfinite(x)) return false;
+    lo = std::min(lo, x);
+    hi = std::max(hi, x);
+  }
+  return hi > 20.0 * lo;
+}
+
 std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, const SweepTable& t) {
   std::vector<std::string> warnings;
   const auto gnuplot = find_executable("gnuplot");
@@ -43,6 +54,9 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
     }
     return out;
   };
+  std::vector<double> first;
+  for (const auto& v : t.input_values) first.push_back(v[0]);
+  const bool log_x = sweep_log_x(first);
   const auto plots = dir / "plots";
   for (std::size_t m = 0; m < t.metrics.size(); ++m) {
     PlotSpec p;
@@ -51,6 +65,7 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
     p.xlabel = t.inputs[0];
     p.ylabel = t.metrics[m];
     p.key = t.inputs.size() > 1;
+    p.log_x = log_x;
     p.series = series_for([&](std::size_t i) { return t.ok[i] ? t.metric_values[i][m] : NAN; });
     const auto r = render_plot(gnuplot, plots, p);
     if (!r.ok) warnings.push_back("plot " + p.stem + ": " + r.message);
@@ -61,6 +76,7 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
   w.xlabel = t.inputs[0];
   w.ylabel = "wall seconds";
   w.key = t.inputs.size() > 1;
+  w.log_x = log_x;
   w.series = series_for([&](std::size_t i) { return t.wall_seconds[i]; });
   const auto r = render_plot(gnuplot, plots, w);
   if (!r.ok) warnings.push_back("plot " + w.stem + ": " + r.message);

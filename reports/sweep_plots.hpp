@@ -1,7 +1,8 @@
 #pragma once
 // Plots of a sweep (DIR/plots/sweep_*.svg): each metric against the first input, one series
 // per value of the second input when there are two or more inputs (further inputs at their
-// first value), and the run time per point.
+// first value), and the run time per point. The x axis is logarithmic when the first input's
+// values are all > 0 and span more than a factor 20 (e.g. a contact penalty 1e1..1e7).
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@ struct SweepTable {
   std::vector<double> wall_seconds;
   std::vector<bool> ok;
 };
+
+// True when the first input's values call for a logarithmic x axis (all > 0, max/min > 20).
+bool sweep_log_x(const std::vector<double>& first_input_values);
 
 // Returns warnings (gnuplot missing or failing); never throws for plotting problems.
 std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, const SweepTable& table);

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace fs = std::filesystem;
 using namespace spifit::reports;
@@ -31,6 +33,36 @@ TEST(SweepPlots, OneSvgPerMetric) {
   for (const char* f : {"sweep_r_value.svg", "sweep_final_stress.svg", "sweep_wall_seconds.svg"}) {
     ASSERT_TRUE(fs::exists(dir / "plots" / f)) << f;
     EXPECT_GT(fs::file_size(dir / "plots" / f), 1000u) << f;
+  }
+  fs::remove_all(dir);
+}
+
+// Forming sweeps: a penalty 1e1..1e7 gets a log x axis; a friction 0..0.15 (0 included) does not.
+TEST(SweepPlots, LogXForWidePositiveFirstInput) {
+  EXPECT_TRUE(sweep_log_x({10.0, 1e3, 1e5, 1e7}));
+  EXPECT_FALSE(sweep_log_x({0.0, 0.05, 0.1, 0.15}));
+  EXPECT_FALSE(sweep_log_x({2.5, 3.0, 4.5}));
+  EXPECT_FALSE(sweep_log_x({}));
+  if (find_executable("gnuplot").empty()) GTEST_SKIP() << "gnuplot not on PATH";
+  const fs::path dir = fs::temp_directory_path() / ("spifit_sweep_plots_log_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  SweepTable t;
+  t.inputs = {"contact.penalty"};
+  t.metrics = {"peak_fz", "newton_iterations"};
+  for (double kp : {10.0, 1e3, 1e5, 1e7}) {
+    t.input_values.push_back({kp});
+    t.metric_values.push_back({294.0 * kp / (kp + 100.0), 20.0 + std::log10(kp)});
+    t.wall_seconds.push_back(1.0);
+    t.ok.push_back(true);
+  }
+  const auto warnings = render_sweep_plots(dir, t);
+  EXPECT_TRUE(warnings.empty()) << warnings.front();
+  for (const char* stem : {"sweep_peak_fz", "sweep_newton_iterations", "sweep_wall_seconds"}) {
+    ASSERT_TRUE(fs::exists(dir / "plots" / (std::string(stem) + ".svg"))) << stem;
+    std::ifstream gp(dir / "plots" / "src" / (std::string(stem) + ".gp"));
+    const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
+    EXPECT_NE(script.find("set logscale x"), std::string::npos) << stem;
   }
   fs::remove_all(dir);
 }

@@ -1,0 +1,249 @@
+// Sweeps of the FE forming scenes: metrics equal those of direct runs, outputs per point in
+// DIR/points/NNN, window metrics from force.csv, sensitivities, and input errors that name the
+// file and the key before anything runs.
+#include "forward/io/input_error.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/scenes/forming_scene.hpp"
+#include "inverse/forming_sweep.hpp"
+#include "inverse/sweep.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+using namespace spifit;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+
+// A temporary directory removed at the end of the test.
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() / ("spifit_forming_sweep_" + std::to_string(::getpid()) + "_" + name)) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+};
+
+// The §7.1 indent made tiny: 4 x 4 elements, 0.5 mm of travel in 10 increments.
+fs::path write_tiny_indent(const fs::path& dir) {
+  const fs::path f = dir / "tiny_indent.toml";
+  std::ofstream(f) << "[scene]\nkind = \"indent\"\nmaterial = \"" << src("materials/aa3003o_c3c4.toml") << "\"\n"
+                   << "[sheet]\nlength = 10.0\nthickness = 0.3\nelements = 4\n"
+                   << "[tool]\nradius = 5.0\nfeed = 2.0\n"
+                   << "[[path]]\nname = \"A\"\nx = 0.0\ny = 0.0\nz = 0.0\n"
+                   << "[[path]]\nname = \"B\"\nx = 0.0\ny = 0.0\nz = -0.5\n"
+                   << "[contact]\npenalty = 1000.0\nfriction = 0.0\npoints = 2\n"
+                   << "[solver]\ntravel_per_increment = 0.05\n";
+  return f;
+}
+
+fs::path write_sweep(const fs::path& dir, const std::string& body) {
+  const fs::path f = dir / "sweep.toml";
+  std::ofstream(f) << body;
+  return f;
+}
+
+std::string sweep_head(const fs::path& scene, const std::string& metrics) {
+  return "[sweep]\nscene = \"" + scene.string() + "\"\nmetrics = [" + metrics + "]\n";
+}
+
+std::size_t index_of(const std::vector<std::string>& v, const std::string& name) {
+  return static_cast<std::size_t>(std::find(v.begin(), v.end(), name) - v.begin());
+}
+
+void expect_rel(double a, double b, double tol) { EXPECT_NEAR(a, b, tol * std::max(1.0, std::abs(b))) << a << " vs " << b; }
+
+// force.csv rows: Fx, Fy, Fz and travel (= time x feed), parsed independently of the library.
+struct ForceRow { double travel, fx, fy, fz; };
+std::vector<ForceRow> read_force_csv(const fs::path& f, double feed) {
+  std::ifstream in(f);
+  std::vector<ForceRow> rows;
+  bool header = false;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (!header) { header = true; continue; }
+    std::vector<double> v;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');) v.push_back(std::stod(c));
+    rows.push_back({v[0] * feed, v[4], v[5], v[6]});
+  }
+  return rows;
+}
+
+// The message of the InputError thrown by read_sweep_file (empty when none is thrown).
+std::string read_error(const fs::path& f) {
+  try {
+    inverse::read_sweep_file(f.string());
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(FormingSweep, PenaltyPointsEqualDirectRunsAndWindowMetrics) {
+  TempDir tmp("penalty");
+  const fs::path scene = write_tiny_indent(tmp.path);
+  const std::vector<std::string> names{"peak_fz", "final_fz", "peak_fx", "final_fx", "max_penetration", "newton_iterations",
+                                       "increments", "mean_fx", "mean_fy", "mean_fz", "ripple_fz"};
+  std::string list;
+  for (const auto& n : names) list += (list.empty() ? "\"" : ", \"") + n + "\"";
+  const fs::path f = write_sweep(tmp.path, sweep_head(scene, list) + "window = [0.1, 0.4]\n[inputs.\"contact.penalty\"]\nvalues = [100.0, 1000.0]\n");
+  const auto spec = inverse::read_sweep_file(f.string());
+  ASSERT_TRUE(spec.forming.has_value());
+  EXPECT_FALSE(spec.sensitivities);  // default for forming sweeps
+  const auto out = io::OutputDirectory::prepare((tmp.path / "out").string(), false);
+  const auto r = inverse::run_sweep(spec, {1, &out, false});
+  ASSERT_EQ(r.points.size(), 2u);
+  EXPECT_TRUE(r.sensitivities.empty());
+
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& p = r.points[i];
+    ASSERT_TRUE(p.ok) << p.message;
+    EXPECT_TRUE(fs::exists(tmp.path / "out" / "points" / ("00" + std::to_string(i)) / "force.csv"));
+    // The same scene run directly.
+    auto sc = scene::read_forming_scene(scene.string());
+    sc.contact.penalty = p.inputs[0];
+    const auto direct = io::OutputDirectory::prepare((tmp.path / ("direct_" + std::to_string(i))).string(), false);
+    const auto rep = scene::run_forming_scene(sc, direct);
+    ASSERT_TRUE(rep.ok);
+    const auto& s = rep.summary;
+    const auto m = [&](const std::string& n) { return p.metrics[index_of(names, n)]; };
+    expect_rel(m("peak_fz"), s["peak_force"][2].get<double>(), 1e-12);
+    expect_rel(m("peak_fx"), s["peak_force"][0].get<double>(), 1e-12);
+    expect_rel(m("final_fz"), s["final_force"][2].get<double>(), 1e-12);
+    expect_rel(m("final_fx"), s["final_force"][0].get<double>(), 1e-12);
+    expect_rel(m("max_penetration"), s["max_penetration"].get<double>(), 1e-12);
+    EXPECT_EQ(m("newton_iterations"), s["newton_iterations"].get<double>());
+    EXPECT_EQ(m("increments"), s["increments"].get<double>());
+    // Window metrics: the rows of force.csv with travel in [0.1, 0.4] mm.
+    const auto rows = read_force_csv(direct.path() / "force.csv", sc.feed);
+    double sx = 0, sy = 0, sz = 0, lo = 1e300, hi = -1e300;
+    int n = 0;
+    for (const auto& row : rows) {
+      if (row.travel < 0.1 || row.travel > 0.4) continue;
+      sx += row.fx, sy += row.fy, sz += row.fz, ++n;
+      lo = std::min(lo, row.fz), hi = std::max(hi, row.fz);
+    }
+    ASSERT_GE(n, 5);
+    expect_rel(m("mean_fx"), sx / n, 1e-12);
+    expect_rel(m("mean_fy"), sy / n, 1e-12);
+    expect_rel(m("mean_fz"), sz / n, 1e-12);
+    expect_rel(m("ripple_fz"), (hi - lo) / (sz / n), 1e-12);
+    EXPECT_GT(m("ripple_fz"), 0.0);  // Fz rises over the indent
+  }
+  // A stiffer penalty: less penetration, a larger force.
+  EXPECT_GT(r.points[1].metrics[0], r.points[0].metrics[0]);
+  EXPECT_LT(r.points[1].metrics[index_of(names, "max_penetration")], r.points[0].metrics[index_of(names, "max_penetration")]);
+  // sweep.csv: inputs, metrics, wall_seconds, ok.
+  const std::string csv = inverse::sweep_csv(spec, r);
+  EXPECT_EQ(csv.substr(0, csv.find('\n')).rfind("contact.penalty,peak_fz,", 0), 0u) << csv;
+  EXPECT_NE(csv.substr(0, csv.find('\n')).find(",wall_seconds,ok"), std::string::npos);
+
+  // A window the tool never reaches: NaN for the window metrics, the others unaffected.
+  inverse::FormingSweepSetup far = *spec.forming;
+  far.window = std::array<double, 2>{10.0, 20.0};
+  nlohmann::json summary;
+  std::ifstream(tmp.path / "out" / "points" / "000" / "summary.json") >> summary;
+  const auto v = inverse::forming_metrics(summary, (tmp.path / "out" / "points" / "000" / "force.csv").string(), far, names);
+  EXPECT_TRUE(std::isnan(v[index_of(names, "mean_fz")]));
+  EXPECT_TRUE(std::isnan(v[index_of(names, "ripple_fz")]));
+  EXPECT_EQ(v[0], r.points[0].metrics[0]);
+}
+
+// Sensitivities at the scene's own values: d ln(peak Fz) / d ln(K_p) in (0, 1); friction's base
+// is 0 (no logarithm) and an integer input has no relative step: NaN without runs.
+TEST(FormingSweep, SensitivitiesAtTheScenesValues) {
+  TempDir tmp("sens");
+  const fs::path scene = write_tiny_indent(tmp.path);
+  const fs::path f = write_sweep(tmp.path, sweep_head(scene, "\"peak_fz\"") +
+                                               "sensitivities = true\n[inputs.\"contact.penalty\"]\nvalues = [1000.0]\n"
+                                               "[inputs.\"contact.friction\"]\nvalues = [0.0]\n[inputs.\"contact.points\"]\nvalues = [2]\n");
+  const auto spec = inverse::read_sweep_file(f.string());
+  const auto out = io::OutputDirectory::prepare((tmp.path / "out").string(), false);
+  const auto r = inverse::run_sweep(spec, {1, &out, false});
+  ASSERT_EQ(r.points.size(), 1u);
+  ASSERT_EQ(r.sensitivities.size(), 3u);  // inputs in key order: friction, penalty, points
+  const auto sens = [&](const std::string& input) {
+    for (const auto& s : r.sensitivities)
+      if (s.input == input) return s;
+    ADD_FAILURE() << "no sensitivity for " << input;
+    return inverse::Sensitivity{};
+  };
+  const auto kp = sens("contact.penalty");
+  EXPECT_EQ(kp.base_input, 1000.0);
+  EXPECT_EQ(kp.base_metric, r.points[0].metrics[0]);  // the base is the grid point here
+  EXPECT_GT(kp.value, 0.0);
+  EXPECT_LT(kp.value, 1.0);
+  EXPECT_TRUE(std::isnan(sens("contact.friction").value));  // friction 0
+  EXPECT_TRUE(std::isnan(sens("contact.points").value));    // integer input
+  EXPECT_TRUE(fs::exists(tmp.path / "out" / "sensitivities" / "base" / "force.csv"));
+  EXPECT_TRUE(fs::exists(tmp.path / "out" / "sensitivities" / "contact.penalty_up" / "summary.json"));
+  EXPECT_FALSE(fs::exists(tmp.path / "out" / "sensitivities" / "contact.friction_up"));
+}
+
+TEST(FormingSweep, InputErrorsNameFileAndKey) {
+  TempDir tmp("errors");
+  const fs::path scene = write_tiny_indent(tmp.path);
+  const auto expect_error = [&](const std::string& body, const std::vector<std::string>& parts) {
+    const fs::path f = write_sweep(tmp.path, body);
+    const std::string e = read_error(f);
+    ASSERT_FALSE(e.empty()) << body;
+    EXPECT_NE(e.find(f.string()), std::string::npos) << e;
+    for (const auto& p : parts) EXPECT_NE(e.find(p), std::string::npos) << "missing \"" << p << "\" in: " << e;
+  };
+  // Unknown scene key (the message lists the known ones).
+  expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"contact.penalt\"]\nvalues = [1.0]\n",
+               {"inputs.contact.penalt", "contact.friction"});
+  // Integer key with a fraction.
+  expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"contact.points\"]\nvalues = [2, 2.5]\n",
+               {"inputs.contact.points.values", "2.5", "integer"});
+  expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"sheet.elements\"]\nfrom = 4\nto = 7\nsteps = 3\n",
+               {"inputs.sheet.elements", "5.5", "integer"});
+  // Values the scene reader would refuse fail at read time.
+  expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"contact.friction\"]\nvalues = [0.1, 3.0]\n",
+               {"inputs.contact.friction.values", "3", "friction must lie in [0, 2]"});
+  expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"tool.radius\"]\nvalues = [0.0]\n", {"inputs.tool.radius.values", "> 0"});
+  expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"swift.n\"]\nvalues = [1.5]\n", {"inputs.swift.n.values", "1.5"});
+  // Forming metric on a material-point scene, and the other way round.
+  const fs::path tensile(src("experiments/aa3003o/scenes/tensile_45.toml"));
+  expect_error(sweep_head(tensile, "\"peak_fz\"") + "[inputs.\"hill.N\"]\nvalues = [3.0]\n", {"sweep.metrics", "peak_fz"});
+  expect_error(sweep_head(scene, "\"r_value\"") + "[inputs.\"contact.penalty\"]\nvalues = [1.0]\n", {"sweep.metrics", "r_value"});
+  expect_error(sweep_head(tensile, "\"r_value\"") + "[inputs.\"contact.penalty\"]\nvalues = [1.0]\n", {"inputs.contact.penalty"});
+  // Window metric without a window; a window on a material-point scene; a reversed window.
+  expect_error(sweep_head(scene, "\"peak_fz\", \"mean_fz\"") + "[inputs.\"contact.penalty\"]\nvalues = [1.0]\n",
+               {"sweep.metrics", "mean_fz", "window"});
+  expect_error(sweep_head(tensile, "\"r_value\"") + "window = [0.0, 1.0]\n[inputs.\"hill.N\"]\nvalues = [3.0]\n", {"sweep.window"});
+  expect_error(sweep_head(scene, "\"mean_fz\"") + "window = [2.0, 1.0]\n[inputs.\"contact.penalty\"]\nvalues = [1.0]\n", {"sweep.window"});
+  // Unknown metric: the message lists the forming metrics.
+  expect_error(sweep_head(scene, "\"peak_fy\"") + "[inputs.\"contact.penalty\"]\nvalues = [1.0]\n", {"sweep.metrics", "ripple_fz"});
+}
+
+// The bundled forming sweep files read (the runs are on demand: README, docs/cli.md).
+TEST(FormingSweep, BundledSweepFilesRead) {
+  const auto p = inverse::read_sweep_file(src("experiments/aa3003o/sweep_indent_penalty.toml"));
+  ASSERT_EQ(p.inputs.size(), 1u);
+  EXPECT_EQ(p.inputs[0].values.size(), 7u);
+  EXPECT_EQ(p.inputs[0].values.front(), 10.0);
+  EXPECT_EQ(p.inputs[0].values.back(), 1e7);
+  EXPECT_EQ(p.inputs[0].values, (std::vector<double>{1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7}));  // decades exact
+  const auto f = inverse::read_sweep_file(src("experiments/aa3003o/sweep_indent_line_friction.toml"));
+  EXPECT_EQ(f.inputs[0].values, (std::vector<double>{0.0, 0.05, 0.1, 0.15}));
+  const auto l = inverse::read_sweep_file(src("experiments/aa3003o/sweep_line_friction.toml"));
+  ASSERT_TRUE(l.forming && l.forming->window);
+  EXPECT_EQ((*l.forming->window)[0], 25.0);
+  EXPECT_EQ((*l.forming->window)[1], 85.0);
+}
