@@ -2,11 +2,13 @@
 // Exit codes: 0 ok, 1 failure (numerical), 2 usage or input error (one line on stderr).
 #include "cli/commands.hpp"
 #include "forward/io/input_error.hpp"
+#include "forward/runtime/omp_wait_policy.hpp"
 
 #include <iostream>
 #include <omp.h>
 
 int main(int argc, char** argv) {
+  spifit::runtime::ensure_passive_omp_wait(argv);
   CLI::App app{"spifit " SPIFIT_VERSION " - material parameter identification for Single Point Incremental Forming"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("spifit ") + SPIFIT_VERSION);

@@ -1,0 +1,94 @@
+// Wall time of the bundled FE forming scenes (issue 5 speed goals on 2 cores: indent < 1 s,
+// indent_line < 2 s, line half model < 10 s, full model < 30 s). Each benchmark runs the scene
+// file as `spifit run` would (outputs to a temporary directory, removed afterwards) and reports
+// the median wall time of its repetitions, the Newton iterations and increments, where the time
+// went (elements, assembly, linear solver), and an error against a stated reference:
+//   indent       peak Fz vs the impenetrable limit 293.78 N (K_p = 1e7, docs/contact.md);
+//   indent_line  peak Fz vs the same scene at 0.25 mm of travel per increment (637.72 N);
+//   line_*       none (reference_error printed as 0; half vs full: docs/contact.md).
+// The line scenes are long (minutes): select them with --benchmark_filter.
+#include "forward/io/output_directory.hpp"
+#include "forward/runtime/omp_wait_policy.hpp"
+#include "forward/scenes/forming_scene.hpp"
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace spifit;
+
+namespace {
+
+struct Case {
+  const char* name;
+  const char* file;     // relative to the source tree
+  double reference_fz;  // 0: no reference
+  int repetitions;
+};
+
+const Case kCases[] = {
+    {"indent", "experiments/aa3003o/scenes/indent.toml", 293.78, 5},
+    {"indent_line", "experiments/aa3003o/scenes/indent_line.toml", 637.72, 3},
+    {"line_half", "experiments/aa3003o/scenes/line_half.toml", 0.0, 1},
+    {"line_full", "experiments/aa3003o/scenes/line_full.toml", 0.0, 1},
+};
+
+void forming_scene(benchmark::State& state, const Case& c) {
+  const scene::FormingScene s = scene::read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/" + c.file);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("spifit_bench_" + std::string(c.name) + "_" + std::to_string(::getpid()));
+  std::vector<double> walls;
+  nlohmann::json last;
+  for (auto _ : state) {
+    const auto out = io::OutputDirectory::prepare(dir.string(), true);
+    const scene::FormingReport r = scene::run_forming_scene(s, out);
+    if (!r.ok) {
+      state.SkipWithError(("run failed: " + r.summary.value("message", std::string("?"))).c_str());
+      break;
+    }
+    walls.push_back(r.summary["wall_seconds"].get<double>());
+    last = r.summary;
+  }
+  std::filesystem::remove_all(dir);
+  if (walls.empty()) return;
+  std::sort(walls.begin(), walls.end());
+  const std::size_t k = walls.size();
+  const double median = k % 2 ? walls[k / 2] : 0.5 * (walls[k / 2 - 1] + walls[k / 2]);
+  const double fz = last["peak_force"][2].get<double>();
+  state.counters["median_s"] = median;
+  state.counters["min_s"] = walls.front();
+  state.counters["elements"] = last["model"]["elements"].get<double>();
+  state.counters["increments"] = last["increments"].get<double>();
+  state.counters["newton_its"] = last["newton_iterations"].get<double>();
+  state.counters["peak_fz"] = fz;
+  state.counters["ref_error"] = c.reference_fz > 0.0 ? fz / c.reference_fz - 1.0 : 0.0;
+  state.counters["elements_s"] = last["profile_seconds"]["elements"].get<double>();
+  state.counters["linear_s"] = last["profile_seconds"]["linear_solver"].get<double>();
+  state.counters["threads"] = omp_get_max_threads();
+  std::printf("# %-12s median %.3f s over %zu runs, %d increments, %d Newton iterations, peak Fz %.2f N%s\n", c.name, median, k,
+              last["increments"].get<int>(), last["newton_iterations"].get<int>(), fz,
+              c.reference_fz > 0.0 ? (" (" + std::to_string(100.0 * (fz / c.reference_fz - 1.0)) + " % vs reference)").c_str() : "");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  runtime::ensure_passive_omp_wait(argv);  // as spifit itself
+  for (const Case& c : kCases) {
+    benchmark::RegisterBenchmark((std::string("forming/") + c.name).c_str(), forming_scene, c)
+        ->Iterations(c.repetitions)
+        ->Unit(benchmark::kSecond)
+        ->UseRealTime();
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
