@@ -1,7 +1,11 @@
 #include "forward/contact/shell_contact.hpp"
 
+#include "forward/element/log_strain.hpp"
 #include "forward/element/quad_shape.hpp"
 
+#include <ceres/jet.h>
+
+#include <array>
 #include <cmath>
 
 namespace spifit::contact {
@@ -11,10 +15,50 @@ std::string ContactOptions::validate() const {
   if (!(friction >= 0.0 && friction <= 2.0)) return "friction must lie in [0, 2]";
   if (!(tangential_penalty >= 0.0 && std::isfinite(tangential_penalty))) return "tangential_penalty must be >= 0";
   if (points < 1 || points > 6) return "points must be 1 to 6 per direction";
+  if (surface != Surface::flat && surface != Surface::phong) return "surface must be \"flat\" or \"phong\"";
   return {};
 }
 
 namespace {
+
+constexpr double kPhongAlpha = 0.5;  // bilinear quads: reproduces a sphere to second order (test PhongSurfaceFollowsTheDirectors)
+
+// Tool-side surface point of an element at shape values N from its 24 p-variables (node I:
+// position x_I = p[6I..6I+2], director d_I = p[6I+3..6I+5]); any scalar type (Jets give the
+// derivatives). Phong: x = x_lin - alpha sum_I N_I ((x_lin - s_I) . d_I) d_I with
+// s_I = x_I + offset d_I, the projection of x_lin on node I's tangent plane blended in.
+template <typename T>
+Eigen::Matrix<T, 3, 1> surface_of(const T* p, const Eigen::Vector4d& N, double offset, bool phong) {
+  using V = Eigen::Matrix<T, 3, 1>;
+  using element::lift;
+  const T zero = lift<T>(0.0), h = lift<T>(offset);
+  V s[4], d[4];
+  V lin(zero, zero, zero);
+  for (int I = 0; I < 4; ++I) {
+    d[I] = V(p[6 * I + 3], p[6 * I + 4], p[6 * I + 5]);
+    s[I] = V(p[6 * I], p[6 * I + 1], p[6 * I + 2]) + d[I] * h;
+    lin += s[I] * lift<T>(N(I));
+  }
+  if (!phong) return lin;
+  V out = lin;
+  for (int I = 0; I < 4; ++I) {
+    const V a = lin - s[I];
+    const T height = a(0) * d[I](0) + a(1) * d[I](1) + a(2) * d[I](2);  // (Eigen's dot needs Scalar(0))
+    out -= d[I] * (lift<T>(kPhongAlpha * N(I)) * height);
+  }
+  return out;
+}
+
+std::array<double, 24> pack(const element::NodeVectors& x, const element::NodeVectors& d) {
+  std::array<double, 24> p{};
+  for (std::size_t I = 0; I < 4; ++I)
+    for (std::size_t k = 0; k < 3; ++k) {
+      p[6 * I + k] = x[I](static_cast<Eigen::Index>(k));
+      p[6 * I + 3 + k] = d[I](static_cast<Eigen::Index>(k));
+    }
+  return p;
+}
+
 // Gauss-Legendre points on [-1, 1] (1..6).
 void gauss(int n, std::vector<double>* x, std::vector<double>* w) {
   const element::ThicknessRule r = element::gauss_legendre_rule(n);
@@ -22,6 +66,12 @@ void gauss(int n, std::vector<double>* x, std::vector<double>* w) {
   *w = r.weight;
 }
 }  // namespace
+
+Eigen::Vector3d ShellContact::surface_point(const ContactOptions& o, const Eigen::Vector4d& N, const element::NodeVectors& x,
+                                            const element::NodeVectors& d, double offset) {
+  const auto p = pack(x, d);
+  return surface_of(p.data(), N, offset, o.surface == ContactOptions::Surface::phong);
+}
 
 ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options) : options_(options), mesh_(&mesh) {
   std::vector<double> g, w;
@@ -65,17 +115,16 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
   const double kp_n = options_.penalty;
   const double kt = options_.tangential_penalty > 0.0 ? options_.tangential_penalty : options_.penalty;
   const double mu = options_.friction;
+  const bool phong = options_.surface == ContactOptions::Surface::phong;
+  const auto pv = pack(x, d), pv0 = pack(x0, d0);
   bool any = false;
   for (int p = 0; p < per_element_; ++p) {
     const PointGeometry& pg = points_[static_cast<std::size_t>(p)];
     const std::size_t id = base + static_cast<std::size_t>(p);
     PointState& st = trial_[id];
     st = PointState{};
-    Eigen::Vector3d xp = Eigen::Vector3d::Zero(), xp0 = Eigen::Vector3d::Zero();
-    for (std::size_t k = 0; k < 4; ++k) {
-      xp += pg.N(static_cast<Eigen::Index>(k)) * (x[k] + offset * d[k]);
-      xp0 += pg.N(static_cast<Eigen::Index>(k)) * (x0[k] + offset * d0[k]);
-    }
+    const Eigen::Vector3d xp = surface_of(pv.data(), pg.N, offset, phong);
+    const Eigen::Vector3d xp0 = surface_of(pv0.data(), pg.N, offset, phong);
     const Eigen::Vector3d v = xp - tool.centre;
     const double rho = v.norm();
     const double gap = rho - tool.radius;
@@ -122,9 +171,33 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
       summary->max_pressure = std::max(summary->max_pressure, pressure);
       ++summary->active_points;
     }
-    // r = f_int - f_ext: the contact force is external. p = (x_I, d_I): dx/dx_I = N_I, dx/dd_I = offset N_I.
+    // r = f_int - f_ext: the contact force is external.
     const Eigen::Vector3d f = -q * da;
     const Eigen::Matrix3d kx = -dq * da;
+    if (phong) {
+      // r_p += J^T f, k_p += J^T kx J + sum_k f_k d2x_k/dp2 (nested Jets: J and the curvature
+      // of the curved surface with respect to the nodal variables).
+      using Inner = ceres::Jet<double, 24>;
+      using Outer = ceres::Jet<Inner, 24>;
+      std::array<Outer, 24> pj;
+      for (int i = 0; i < 24; ++i) {
+        Inner a(pv[static_cast<std::size_t>(i)], i);
+        pj[static_cast<std::size_t>(i)] = Outer(a, i);
+      }
+      const Eigen::Matrix<Outer, 3, 1> xj = surface_of(pj.data(), pg.N, offset, true);
+      Eigen::Matrix<double, 3, 24> J;
+      for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 24; ++i) J(k, i) = xj(k).v(i).a;
+      rp->noalias() += J.transpose() * f;
+      if (kp) {
+        kp->noalias() += J.transpose() * kx * J;
+        for (int k = 0; k < 3; ++k)
+          for (int i = 0; i < 24; ++i)
+            for (int j = 0; j < 24; ++j) (*kp)(i, j) += f(k) * xj(k).v(i).v(j);
+      }
+      continue;
+    }
+    // Flat facets: p = (x_I, d_I): dx/dx_I = N_I, dx/dd_I = offset N_I.
     for (int I = 0; I < 4; ++I) {
       const double nI = pg.N(I);
       rp->segment<3>(6 * I) += nI * f;

@@ -20,6 +20,12 @@ struct ContactOptions {
   double friction = 0.0;             // Coulomb coefficient mu
   double tangential_penalty = 0.0;   // K_t [N/mm^3]; 0: equal to K_p
   int points = 2;                    // contact points per direction and element (1..6)
+  // Tool-side surface seen by the tool: "flat" = bilinear facets x + h/2 d; "phong" = the
+  // facets curved with the nodal directors (Phong tessellation, alpha = 1/2): each point is
+  // pulled towards the tangent planes of the element's nodes, which removes most of the
+  // facet kinks the tool meets when it slides over element edges.
+  enum class Surface { flat, phong };
+  Surface surface = Surface::flat;
   std::string validate() const;      // empty when valid
 };
 
@@ -55,6 +61,10 @@ class ShellContact {
                ContactSummary* summary);
   void commit();
   void revert();
+  // Position of contact point p of an element (natural-coordinate shape values N) on the
+  // tool-side surface of the given options: exposed for tests.
+  static Eigen::Vector3d surface_point(const ContactOptions& o, const Eigen::Vector4d& N, const element::NodeVectors& x,
+                                       const element::NodeVectors& d, double offset);
 
   // Sum over the committed contact points (element order: deterministic).
   ContactSummary committed_summary() const;

@@ -116,7 +116,13 @@ FormingScene read_forming_scene(const std::string& path) {
     if (!root.table("output") || !root.table("output")->has("sections")) s.sections.clear();
   }
   if (const auto ct = root.table("contact")) {
-    ct->allow_only({"penalty", "friction", "tangential_penalty", "points"});
+    ct->allow_only({"penalty", "friction", "tangential_penalty", "points", "surface"});
+    if (ct->has("surface")) {
+      const std::string surface = ct->string("surface");
+      if (surface == "flat") s.contact.surface = contact::ContactOptions::Surface::flat;
+      else if (surface == "phong") s.contact.surface = contact::ContactOptions::Surface::phong;
+      else ct->fail("surface", "expected \"flat\" or \"phong\"");
+    }
     s.contact.penalty = ct->number("penalty", s.contact.penalty);
     s.contact.friction = ct->number("friction", s.contact.friction);
     s.contact.tangential_penalty = ct->number("tangential_penalty", s.contact.tangential_penalty);
@@ -237,7 +243,10 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   s["model"] = {{"elements", model.num_elements()}, {"nodes", model.num_nodes()}, {"half", scene.half},
                 {"thickness", scene.thickness}, {"length", scene.length}, {"thickness_points", scene.thickness_points}};
   s["tool"] = {{"radius", scene.radius}, {"travel", L}, {"feed", scene.feed}, {"spin_rpm", scene.spin}, {"gcode", scene.gcode}};
-  s["contact"] = {{"penalty", scene.contact.penalty}, {"friction", scene.contact.friction}, {"points", scene.contact.points}};
+  s["contact"] = {{"penalty", scene.contact.penalty},
+                  {"friction", scene.contact.friction},
+                  {"points", scene.contact.points},
+                  {"surface", scene.contact.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"}};
   s["warnings"] = model.warnings();
   s["status"] = "running";
   out.write_file("summary.json", s.dump(2) + "\n");

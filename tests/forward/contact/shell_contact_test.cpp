@@ -1,4 +1,5 @@
 #include "forward/contact/shell_contact.hpp"
+#include "forward/element/quad_shape.hpp"
 #include "forward/mesh/benchmark_meshes.hpp"
 #include "forward/mesh/square_sheet.hpp"
 #include "forward/model/shell_model.hpp"
@@ -6,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 
@@ -51,9 +53,12 @@ double fd_error(ShellContact& c, const NodeVectors& x, const NodeVectors& d, con
 }
 
 TEST(ShellContact, TangentMatchesFiniteDifferencesFrictionlessStickAndSlip) {
-  for (double mu : {0.0, 0.3, 0.02}) {  // frictionless, sticking, sliding
+  for (int variant = 0; variant < 6; ++variant) {
+    const double mu = std::array<double, 3>{0.0, 0.3, 0.02}[static_cast<std::size_t>(variant % 3)];  // frictionless, sticking, sliding
+    const bool phong = variant >= 3;
     OneElement s;
     ContactOptions o;
+    o.surface = phong ? ContactOptions::Surface::phong : ContactOptions::Surface::flat;
     o.penalty = 1000.0;
     o.friction = mu;
     o.points = 3;
@@ -71,7 +76,7 @@ TEST(ShellContact, TangentMatchesFiniteDifferencesFrictionlessStickAndSlip) {
     Vec24 r2 = Vec24::Zero();
     c.element(0, s.x, s.d, s.x, s.d, 0.25, tool, &r2, nullptr, &sum);
     const double err = fd_error(c, s.x, s.d, tool);
-    std::printf("mu %.2f: %d active points, tangential/normal %.4f, tangent error %.2e\n", mu, sum.active_points,
+    std::printf("%s mu %.2f: %d active points, tangential/normal %.4f, tangent error %.2e\n", phong ? "phong" : "flat", mu, sum.active_points,
                 std::hypot(sum.force_on_sheet.x(), sum.force_on_sheet.y()) / sum.force_on_sheet.z(), err);
     EXPECT_LT(err, 1e-6);
   }
@@ -119,6 +124,38 @@ TEST(ShellContact, SpinningToolDragsTheSheetAlongItsSurfaceVelocity) {
   ShellContact c(m, o);
   tool.spin = Eigen::Vector3d(0.0, 0.0, 1e-6);
   EXPECT_LT(fd_error(c, x, d, tool), 1e-6);
+}
+
+// The Phong surface: on a flat element with normal directors it is the flat facet; on four
+// nodes of a sphere (radius 20, 6 degrees apart) with radial directors its points lie much
+// closer to the sphere than the bilinear facet's (the facet sags by ~h^2 / (8 rho)).
+TEST(ShellContact, PhongSurfaceFollowsTheDirectors) {
+  ContactOptions flat, phong;
+  phong.surface = ContactOptions::Surface::phong;
+  NodeVectors x, d;
+  const double xs[4] = {0, 1, 1, 0}, ys[4] = {0, 0, 1, 1};
+  for (std::size_t I = 0; I < 4; ++I) {
+    x[I] = Eigen::Vector3d(xs[I], ys[I], 0.0);
+    d[I] = Eigen::Vector3d::UnitZ();
+  }
+  const Eigen::Vector4d N = element::quad_shape(0.3, -0.2);
+  EXPECT_LT((ShellContact::surface_point(phong, N, x, d, 0.1) - ShellContact::surface_point(flat, N, x, d, 0.1)).norm(), 1e-15);
+  const double rho = 20.0, a = 3.0 * M_PI / 180.0;
+  for (std::size_t I = 0; I < 4; ++I) {
+    const double th = (xs[I] - 0.5) * 2.0 * a, ph = (ys[I] - 0.5) * 2.0 * a;
+    d[I] = Eigen::Vector3d(std::sin(th), std::sin(ph), 1.0).normalized();
+    x[I] = rho * d[I];
+  }
+  double flat_gap = 0.0, phong_gap = 0.0;
+  for (double xi : {-0.5, 0.0, 0.5})
+    for (double eta : {-0.5, 0.0, 0.5}) {
+      const Eigen::Vector4d n = element::quad_shape(xi, eta);
+      flat_gap = std::max(flat_gap, std::abs(ShellContact::surface_point(flat, n, x, d, 0.0).norm() - rho));
+      phong_gap = std::max(phong_gap, std::abs(ShellContact::surface_point(phong, n, x, d, 0.0).norm() - rho));
+    }
+  std::printf("distance from the sphere: flat facet %.3e mm, Phong %.3e mm\n", flat_gap, phong_gap);
+  EXPECT_GT(flat_gap, 0.05);
+  EXPECT_LT(phong_gap, 0.01 * flat_gap);
 }
 
 TEST(ShellContact, PenetrationOutsideTheToolGivesNothing) {
