@@ -49,6 +49,37 @@ void set_defaults(FormingScene& s) {
   }
 }
 
+// The tool-tip path of a G-code program. The position before the first move is unknown to
+// the program, so an opening rapid (G00) only places the tool: the path starts at its end
+// point instead of at the reader's default start (the origin).
+toolpath::ToolPath gcode_tip_path(const std::string& file) {
+  toolpath::ToolPath p = toolpath::read_gcode(file);
+  const auto& w = p.waypoints();
+  if (w.size() > 2 && w[1].feed == 0.0) return toolpath::ToolPath(std::vector<toolpath::Waypoint>(w.begin() + 1, w.end()), p.rapid_feed());
+  return p;
+}
+
+// Load factors where a G-code path turns by more than 15 degrees (and its end): the solver
+// stops there as it does at the named points of a built-in path, so that both give the same
+// increments (arc chords turn by far less and are not stops).
+std::vector<std::pair<double, std::string>> corner_stops(const toolpath::ToolPath& path) {
+  const auto& w = path.waypoints();
+  const std::vector<double> dist = path.waypoint_distances();
+  const double L = path.length();
+  std::vector<std::pair<double, std::string>> stops;
+  Eigen::Vector3d previous = Eigen::Vector3d::Zero();
+  for (std::size_t i = 1; i < w.size(); ++i) {
+    const Eigen::Vector3d seg = w[i].position - w[i - 1].position;
+    if (seg.norm() < 1e-12) continue;
+    const Eigen::Vector3d dir = seg.normalized();
+    if (previous.squaredNorm() > 0.0 && previous.dot(dir) < std::cos(15.0 * std::numbers::pi / 180.0) && dist[i - 1] > 0.0)
+      stops.emplace_back(dist[i - 1] / L, "line " + std::to_string(w[i - 1].source_line));
+    previous = dir;
+  }
+  stops.emplace_back(1.0, "end");
+  return stops;
+}
+
 }  // namespace
 
 bool is_forming_kind(const std::string& kind) { return kind == "indent" || kind == "indent_line" || kind == "line"; }
@@ -167,7 +198,7 @@ FormingScene read_forming_scene(const std::string& path) {
   auto over_sheet = [&](const Eigen::Vector3d& tip) { return std::abs(tip.x()) < half_length && std::abs(tip.y()) < half_length; };
   std::vector<Eigen::Vector3d> tips;
   if (!s.gcode.empty()) {
-    const toolpath::ToolPath gp = toolpath::read_gcode(s.gcode);
+    const toolpath::ToolPath gp = gcode_tip_path(s.gcode);
     for (const auto& w : gp.waypoints()) tips.push_back(w.position);
   } else {
     for (const auto& p : s.path) tips.push_back(p.tip);
@@ -204,7 +235,7 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   const Eigen::Vector3d lift(0.0, 0.0, 0.5 * scene.thickness + scene.radius);
   std::vector<double> marks;  // path distance of each named point
   toolpath::ToolPath path = [&] {
-    if (!scene.gcode.empty()) return toolpath::read_gcode(scene.gcode).translated(lift);
+    if (!scene.gcode.empty()) return gcode_tip_path(scene.gcode).translated(lift);
     std::vector<Eigen::Vector3d> pts;
     for (const auto& p : scene.path) pts.push_back(p.tip + lift);
     return toolpath::ToolPath::from_points(pts, scene.feed);
@@ -309,7 +340,7 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   if (scene.gcode.empty())
     for (std::size_t i = 1; i < scene.path.size(); ++i) stops.emplace_back(marks[i] / L, scene.path[i].name);
   else
-    stops.emplace_back(1.0, "end");
+    stops = corner_stops(path);
   double lambda = 0.0;
   for (const auto& [target, name] : stops) {
     if (target <= lambda + 1e-12) continue;

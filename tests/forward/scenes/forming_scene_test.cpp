@@ -70,6 +70,32 @@ TEST(FormingScene, GcodePathGivesTheSameIndentAsTheBuiltInPath) {
   fs::remove(nc);
 }
 
+// A line-test path with corners (A -> B down, B -> C along x) as G-code: the opening rapid only
+// places the tool, and the solver stops at the G-code corners as at the named points, so both
+// runs take the same increments and give the same forces (a small half sheet for speed).
+TEST(FormingScene, GcodeLinePathGivesTheSameForcesAsTheBuiltInPath) {
+  FormingScene base = read_forming_scene(src("experiments/aa3003o/scenes/line_half.toml"));
+  base.length = 40.0;
+  base.elements = 10;
+  base.path = {{"A", {-10.0, 0.0, 0.0}}, {"B", {-10.0, 0.0, -2.0}}, {"C", {-4.0, 0.0, -2.0}}};
+  base.sections.clear();
+  base.travel_per_increment = 0.75;  // increments that do not fall on B by themselves
+  const fs::path nc = fs::temp_directory_path() / ("spifit_line_" + std::to_string(::getpid()) + ".nc");
+  std::ofstream(nc) << "G21 G90\nG00 X-10 Y0 Z0 (A)\nG01 Z-2 F600 (B)\nG01 X-4 (C)\nM30\n";
+  FormingScene g = base;
+  g.gcode = nc.string();
+  g.path.clear();
+  const auto a = run(base, "line_builtin"), b = run(g, "line_gcode");
+  std::printf("built-in: Fz %.6f N in %d increments; G-code: Fz %.6f N in %d increments\n", a["final_force"][2].get<double>(),
+              a["increments"].get<int>(), b["final_force"][2].get<double>(), b["increments"].get<int>());
+  EXPECT_EQ(a["increments"], b["increments"]);
+  for (int k : {0, 2}) {
+    EXPECT_NEAR(a["final_force"][k].get<double>(), b["final_force"][k].get<double>(), 1e-9 * std::abs(a["final_force"][2].get<double>()));
+    EXPECT_NEAR(a["peak_force"][k].get<double>(), b["peak_force"][k].get<double>(), 1e-9 * std::abs(a["peak_force"][2].get<double>()));
+  }
+  fs::remove(nc);
+}
+
 TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
   auto error_of = [](const std::string& text) {
     const fs::path f = fs::temp_directory_path() / ("spifit_forming_" + std::to_string(::getpid()) + ".toml");
