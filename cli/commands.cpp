@@ -3,6 +3,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/scenes/material_point_scene.hpp"
+#include "forward/scenes/cone_scene.hpp"
 #include "forward/scenes/forming_scene.hpp"
 #include "forward/scenes/shell_benchmark_scene.hpp"
 #include "reports/card_export.hpp"
@@ -99,7 +100,7 @@ void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code)
 void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string scene, out; bool force = false; };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json (+ DIR/curve.csv for material points; increments.csv and vtu/ for shell benchmarks)");
+  auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json (+ DIR/curve.csv for material points; increments.csv and vtu/ for shell benchmarks; force.csv and vtu/ for forming and cone scenes)");
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
   cmd->add_flag("--force", o->force, "replace an existing output directory");
@@ -123,6 +124,29 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
                     fs.name.c_str(), kind.c_str(), pk[0].get<double>(), pk[1].get<double>(), pk[2].get<double>(),
                     s["max_penetration"].get<double>(), s["model"]["elements"].get<int>(), s["increments"].get<int>(),
                     s["newton_iterations"].get<int>(), s["wall_seconds"].get<double>());
+        for (const auto& w : s["warnings"]) std::printf("  warning: %s\n", w.get<std::string>().c_str());
+      }
+      exit_code = 0;
+      return;
+    }
+    if (scene::is_cone_kind(kind)) {
+      const auto cs = scene::read_cone_scene(o->scene);  // input errors before touching --out
+      const auto dir = io::OutputDirectory::prepare(o->out, o->force, {cs.file, cs.card.file});
+      const auto rep = scene::run_cone_scene(cs, dir, g.verbose);
+      const auto& s = rep.summary;
+      if (!rep.ok) {
+        std::cerr << "spifit: " << cs.name << " failed: " << s.value("message", std::string("?")) << "\n";
+        exit_code = 1;
+        return;
+      }
+      if (!g.quiet) {
+        const auto& pk = s["peak_force"];
+        const auto& fp = s["final_polar_force"];
+        std::printf("%-16s %-12s peak force (%.2f, %.2f, %.2f) N, final (Fr, Ftheta, Fz) (%.2f, %.2f, %.2f) N, %d/%d contours  (%d elements, %d increments, %d iterations, %.2f s)\n",
+                    cs.name.c_str(), kind.c_str(), pk[0].get<double>(), pk[1].get<double>(), pk[2].get<double>(), fp[0].get<double>(),
+                    fp[1].get<double>(), fp[2].get<double>(), s["contours_completed"].get<int>(), s["contours_total"].get<int>(),
+                    s["model"]["elements"].get<int>(), s["increments"].get<int>(), s["newton_iterations"].get<int>(),
+                    s["wall_seconds"].get<double>());
         for (const auto& w : s["warnings"]) std::printf("  warning: %s\n", w.get<std::string>().c_str());
       }
       exit_code = 0;

@@ -7,6 +7,8 @@
 
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace spifit::contact {
 
@@ -73,7 +75,9 @@ Eigen::Vector3d ShellContact::surface_point(const ContactOptions& o, const Eigen
   return surface_of(p.data(), N, offset, o.surface == ContactOptions::Surface::phong);
 }
 
-ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options) : options_(options), mesh_(&mesh) {
+ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options, int tools)
+    : options_(options), mesh_(&mesh), tools_(tools) {
+  if (tools < 1) throw std::invalid_argument("contact: the number of tools must be >= 1");
   std::vector<double> g, w;
   gauss(options.points, &g, &w);
   const int n = options.points;
@@ -96,20 +100,21 @@ ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options
       areas_[static_cast<std::size_t>(e * per_element_ + p)] = points_[static_cast<std::size_t>(p)].area * element::quad_area_jacobian(X, xi, eta);
     }
   }
-  committed_.assign(areas_.size(), PointState{});
+  committed_.assign(areas_.size() * static_cast<std::size_t>(tools), PointState{});
   trial_ = committed_;
 }
 
 bool ShellContact::element(int e, const element::NodeVectors& x, const element::NodeVectors& d, const element::NodeVectors& x0,
                            const element::NodeVectors& d0, double offset, const SphereTool& tool, element::Vec24* rp,
-                           element::Mat24* kp, ContactSummary* summary) {
+                           element::Mat24* kp, ContactSummary* summary, int tool_index) {
   // Quick rejection: the element's bounding sphere (tool-side surface) misses the tool.
   Eigen::Vector3d centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
   double radius = 0.0;
   for (const auto& xi : x) radius = std::max(radius, (xi - centre).norm());
-  const std::size_t base = static_cast<std::size_t>(e * per_element_);
+  const std::size_t base = static_cast<std::size_t>(e * per_element_);                    // the element's points (areas_)
+  const std::size_t state = base + static_cast<std::size_t>(tool_index) * areas_.size();  // their states with this tool
   if ((centre - tool.centre).norm() > tool.radius + radius + 2.0 * offset) {
-    for (int p = 0; p < per_element_; ++p) trial_[base + static_cast<std::size_t>(p)] = PointState{};
+    for (int p = 0; p < per_element_; ++p) trial_[state + static_cast<std::size_t>(p)] = PointState{};
     return false;
   }
   const double kp_n = options_.penalty;
@@ -120,8 +125,8 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
   bool any = false;
   for (int p = 0; p < per_element_; ++p) {
     const PointGeometry& pg = points_[static_cast<std::size_t>(p)];
-    const std::size_t id = base + static_cast<std::size_t>(p);
-    PointState& st = trial_[id];
+    const std::size_t id = base + static_cast<std::size_t>(p), sid = state + static_cast<std::size_t>(p);
+    PointState& st = trial_[sid];
     st = PointState{};
     const Eigen::Vector3d xp = surface_of(pv.data(), pg.N, offset, phong);
     const Eigen::Vector3d xp0 = surface_of(pv0.data(), pg.N, offset, phong);
@@ -143,7 +148,7 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
       // is zero for a point that was not in contact.
       // A spinning tool's surface point moves by spin x (xp - centre) on top of the translation.
       const Eigen::Vector3d slip = (xp - xp0) - (tool.centre - tool.centre_committed) - tool.spin.cross(v);
-      const Eigen::Vector3d w = committed_[id].traction - kt * slip;
+      const Eigen::Vector3d w = committed_[sid].traction - kt * slip;
       const Eigen::Vector3d ttr = P * w;
       // d(P w)/dx = -kt P (I - [spin]x) - (n.w) P / rho - n (P w)^T / rho
       Eigen::Matrix3d spin_cross;
@@ -218,9 +223,12 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
 void ShellContact::commit() { committed_ = trial_; }
 void ShellContact::revert() { trial_ = committed_; }
 
-ContactSummary ShellContact::committed_summary() const {
+ContactSummary ShellContact::committed_summary(int tool_index) const {
+  if (tool_index < 0 || tool_index >= tools_) throw std::out_of_range("contact: no tool " + std::to_string(tool_index));
   ContactSummary s;
-  for (const auto& p : committed_) {
+  const auto first = committed_.begin() + static_cast<std::ptrdiff_t>(static_cast<std::size_t>(tool_index) * areas_.size());
+  for (auto it = first; it != first + static_cast<std::ptrdiff_t>(areas_.size()); ++it) {
+    const PointState& p = *it;
     if (!p.active) continue;
     s.force_on_sheet += p.force;
     s.max_penetration = std::max(s.max_penetration, p.penetration);
@@ -232,8 +240,10 @@ ContactSummary ShellContact::committed_summary() const {
 
 std::vector<double> ShellContact::element_pressure() const {
   std::vector<double> out(static_cast<std::size_t>(mesh_->num_elements()), 0.0);
-  for (std::size_t i = 0; i < committed_.size(); ++i)
-    out[i / static_cast<std::size_t>(per_element_)] = std::max(out[i / static_cast<std::size_t>(per_element_)], committed_[i].pressure);
+  for (std::size_t i = 0; i < committed_.size(); ++i) {
+    const std::size_t e = (i % areas_.size()) / static_cast<std::size_t>(per_element_);
+    out[e] = std::max(out[e], committed_[i].pressure);
+  }
   return out;
 }
 

@@ -49,26 +49,31 @@ struct ContactSummary {
 
 class ShellContact {
  public:
-  // Reference geometry of the contact points of every element of the mesh.
-  ShellContact(const mesh::Mesh& mesh, const ContactOptions& options);
+  // Reference geometry of the contact points of every element of the mesh. `tools` > 1 keeps a
+  // separate set of contact point states (pressure, friction history) for each of that many
+  // tools, e.g. the real tool and its rotated copies of a pie model ("virtual tools",
+  // ShellModel::set_tool_copies).
+  ShellContact(const mesh::Mesh& mesh, const ContactOptions& options, int tools = 1);
 
-  // Adds the contact of element e (current nodes x, directors d; x0, d0 at the start of the
-  // increment, for the slip; tool-side offset `offset` = h/2) to rp (forces on p) and kp (their
-  // derivative). Returns false when the element is too far from the tool to touch it (nothing
-  // added). Thread-safe for distinct e.
+  // Adds the contact of element e with tool number `tool_index` (current nodes x, directors d;
+  // x0, d0 at the start of the increment, for the slip; tool-side offset `offset` = h/2) to rp
+  // (forces on p) and kp (their derivative). Returns false when the element is too far from the
+  // tool to touch it (nothing added). tool_index in [0, tools()). Thread-safe for distinct e.
   bool element(int e, const element::NodeVectors& x, const element::NodeVectors& d, const element::NodeVectors& x0,
                const element::NodeVectors& d0, double offset, const SphereTool& tool, element::Vec24* rp, element::Mat24* kp,
-               ContactSummary* summary);
+               ContactSummary* summary, int tool_index = 0);
   void commit();
   void revert();
+  int tools() const { return tools_; }
   // Position of contact point p of an element (natural-coordinate shape values N) on the
   // tool-side surface of the given options: exposed for tests.
   static Eigen::Vector3d surface_point(const ContactOptions& o, const Eigen::Vector4d& N, const element::NodeVectors& x,
                                        const element::NodeVectors& d, double offset);
 
-  // Sum over the committed contact points (element order: deterministic).
-  ContactSummary committed_summary() const;
-  // Largest committed pressure over each element's points (VTU cell data).
+  // Sum over the committed contact points of one tool (element order: deterministic), in the
+  // sheet's frame.
+  ContactSummary committed_summary(int tool_index = 0) const;
+  // Largest committed pressure over each element's points and all tools (VTU cell data).
   std::vector<double> element_pressure() const;
   const ContactOptions& options() const { return options_; }
 
@@ -87,8 +92,9 @@ class ShellContact {
   const mesh::Mesh* mesh_;
   std::vector<PointGeometry> points_;  // one set per element (same for all, in natural coordinates) x area
   std::vector<double> areas_;          // per element x point
-  std::vector<PointState> committed_, trial_;
+  std::vector<PointState> committed_, trial_;  // [tool][element][point]
   int per_element_ = 0;
+  int tools_ = 1;
 };
 
 }  // namespace spifit::contact

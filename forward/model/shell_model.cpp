@@ -2,9 +2,12 @@
 
 #include "forward/element/director.hpp"
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 namespace spifit::model {
@@ -126,19 +129,75 @@ void ShellModel::set_tool(double radius, ToolPathFunction path, const contact::C
   if (!std::isfinite(spin_per_load_factor)) throw std::invalid_argument("tool spin must be finite");
   spin_per_load_factor_ = spin_per_load_factor;
   if (const std::string err = options.validate(); !err.empty()) throw std::invalid_argument("contact: " + err);
-  contact_ = std::make_unique<contact::ShellContact>(*mesh_, options);
+  contact_ = std::make_unique<contact::ShellContact>(*mesh_, options, 1 + static_cast<int>(copies_deg_.size()));
   tool_path_ = std::move(path);
-  tool_.radius = radius;
-  tool_.centre = tool_.centre_committed = tool_path_(lambda_);
+  tools_.assign(1 + copies_deg_.size(), contact::SphereTool{});
+  for (auto& t : tools_) t.radius = radius;
+  const Eigen::Vector3d c = tool_path_(lambda_);
+  place_tools(c, c, Eigen::Vector3d::Zero());
 }
 
-contact::ContactSummary ShellModel::contact_summary() const { return contact_ ? contact_->committed_summary() : contact::ContactSummary{}; }
+void ShellModel::set_tool_copies(const std::vector<double>& angles_deg) {
+  if (!contact_) throw std::logic_error("set_tool_copies: no tool (call set_tool first)");
+  for (double a : angles_deg)
+    if (!std::isfinite(a) || std::abs(std::remainder(a, 360.0)) < 1e-9)
+      throw std::invalid_argument("tool copy angle " + std::to_string(a) + " deg: must be finite and not a multiple of 360");
+  copies_deg_ = angles_deg;
+  copy_rotations_.assign(1, Eigen::Matrix3d::Identity());
+  for (double a : angles_deg)
+    copy_rotations_.push_back(Eigen::AngleAxisd(a * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix());
+  contact_ = std::make_unique<contact::ShellContact>(*mesh_, contact_->options(), 1 + static_cast<int>(angles_deg.size()));
+  const contact::SphereTool real = tools_.front();
+  tools_.assign(1 + angles_deg.size(), real);
+  place_tools(real.centre_committed, real.centre, real.spin);
+}
+
+void ShellModel::place_tools(const Eigen::Vector3d& centre_committed, const Eigen::Vector3d& centre, const Eigen::Vector3d& spin) {
+  for (std::size_t i = 0; i < tools_.size(); ++i) {
+    const Eigen::Matrix3d& R = copy_rotations_[i];
+    tools_[i].centre_committed = R * centre_committed;
+    tools_[i].centre = R * centre;
+    tools_[i].spin = R * spin;  // a spin about z is unchanged; any axis turns with the copy
+  }
+}
+
+contact::ContactSummary ShellModel::contact_summary_of_tool(int i) const {
+  if (!contact_) return {};
+  return contact_->committed_summary(i);
+}
+
+// Force of a pie model on the real tool (virtual tools, thesis Fig. 8.4). With cyclic ties the
+// pie P stands for every pie of the sheet: the state of the pie rotated by phi about z is the
+// state of P rotated by phi. Copy c of the tool sits at R(phi_c) c_0 (c_0: the real tool's
+// centre). Its contact with a point x of P is the image, through that symmetry, of the real
+// tool's contact with the point y = R(-phi_c) x of the pie rotated by -phi_c: the geometry of
+// (x, copy) is the geometry of (y, real tool) rotated by phi_c. So if the copy pushes x with the
+// force f, the real tool pushes y with R(-phi_c) f, and the force of the real tool on the sheet
+// is
+//   F = F_0 + sum_c R(-phi_c) F_c = sum_c R_c^T F_c,
+// with F_c the force of tool c on the points of P. A footprint that straddles the edge
+// theta = 0 is split between the real tool (its part on P) and the copy at +gamma (the part on
+// the pie below, seen on P near theta = gamma); the sum is the whole footprint. The force of a
+// pie model is therefore the whole tool force, NOT 1 / (number of pies) of it: it must not be
+// scaled by 360 / gamma. (Strictly, the pie model is the sheet formed by 360 / gamma tools at
+// once, one per pie; it stands for a single tool as far as the tools do not influence each
+// other through the sheet, the assumption of the thesis's pie models.)
+contact::ContactSummary ShellModel::contact_summary() const {
+  contact::ContactSummary out;
+  if (!contact_) return out;
+  for (int i = 0; i < contact_->tools(); ++i) {
+    const contact::ContactSummary s = contact_->committed_summary(i);
+    out.force_on_sheet += copy_rotations_[static_cast<std::size_t>(i)].transpose() * s.force_on_sheet;
+    out.max_penetration = std::max(out.max_penetration, s.max_penetration);
+    out.max_pressure = std::max(out.max_pressure, s.max_pressure);
+    out.active_points += s.active_points;
+  }
+  return out;
+}
 
 void ShellModel::begin_increment(double lambda0, double lambda1) {
   if (!contact_) return;
-  tool_.centre_committed = tool_path_(lambda0);
-  tool_.centre = tool_path_(lambda1);
-  tool_.spin = Eigen::Vector3d(0.0, 0.0, spin_per_load_factor_ * (lambda1 - lambda0));
+  place_tools(tool_path_(lambda0), tool_path_(lambda1), Eigen::Vector3d(0.0, 0.0, spin_per_load_factor_ * (lambda1 - lambda0)));
 }
 
 double ShellModel::element_thickness(int e) const {
@@ -175,7 +234,11 @@ solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* r
       x0[i] = x_[static_cast<std::size_t>(q[i])];
       d0[i] = d_[static_cast<std::size_t>(q[i])];
     }
-    if (contact_->element(e, x, d, x0, d0, 0.5 * element_thickness(e), tool_, &rc, ke ? &kc : nullptr, nullptr)) {
+    bool touched = false;
+    const double offset = 0.5 * element_thickness(e);
+    for (std::size_t i = 0; i < tools_.size(); ++i)
+      touched |= contact_->element(e, x, d, x0, d0, offset, tools_[i], &rc, ke ? &kc : nullptr, nullptr, static_cast<int>(i));
+    if (touched) {
       element::Vec24 ru;
       element::Mat24 ku;
       element::director_to_dofs(d, rc, ke ? &kc : nullptr, &ru, ke ? &ku : nullptr);
@@ -216,7 +279,7 @@ void ShellModel::commit(double lambda) {
   for (auto& el : elements_) el.commit();
   if (contact_) {
     contact_->commit();
-    tool_.centre_committed = tool_.centre;
+    for (auto& t : tools_) t.centre_committed = t.centre;
   }
   increment_.setZero();
   increment_trial_.setZero();

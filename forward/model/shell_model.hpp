@@ -49,11 +49,25 @@ class ShellModel final : public solver::NonlinearProblem {
   // spin_per_load_factor: tool rotation about +z [rad] per unit of load factor (rpm x 2 pi / 60
   // x seconds per unit load factor); positive = counter-clockwise seen from above.
   void set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options, double spin_per_load_factor = 0.0);
+  // Virtual tools of a pie model with cyclic ties (thesis Fig. 8.4): the contact also sees
+  // copies of the tool rotated about z by these angles [deg], typically {+gamma, -gamma}, so
+  // that a footprint crossing one pie edge acts on the other. Each copy keeps its own contact
+  // point states (friction history). Call after set_tool and before the first increment (the
+  // contact states are reset); an empty list removes the copies. Angles must be finite and
+  // not multiples of 360.
+  void set_tool_copies(const std::vector<double>& angles_deg);
+  const std::vector<double>& tool_copies_deg() const { return copies_deg_; }
   bool has_tool() const { return contact_ != nullptr; }
-  const contact::SphereTool& tool() const { return tool_; }
-  // Committed contact: force on the sheet, penetration, pressure (zero without a tool).
+  const contact::SphereTool& tool() const { return tools_.front(); }  // the real tool
+  // Committed contact (zero without a tool): penetration and pressure are the largest over the
+  // real tool and its copies; force_on_sheet is the force the REAL tool exerts on the (cyclic)
+  // sheet: the real tool's own contact plus each copy's contact rotated back by the copy's
+  // angle (see shell_model.cpp). Without copies: the plain sum over the contact points.
   contact::ContactSummary contact_summary() const;
-  // Force exerted BY the sheet ON the tool (SPEC §1), committed state.
+  // Committed contact of tool i alone (0: the real tool; i >= 1: copy i - 1 of
+  // tool_copies_deg()), in the sheet's frame (not rotated back).
+  contact::ContactSummary contact_summary_of_tool(int i) const;
+  // Force exerted BY the sheet ON the (real) tool (SPEC §1), committed state.
   Eigen::Vector3d tool_force() const { return -contact_summary().force_on_sheet; }
 
   // NonlinearProblem
@@ -107,8 +121,12 @@ class ShellModel final : public solver::NonlinearProblem {
   double max_t_over_l_ = 0.0;
   std::unique_ptr<contact::ShellContact> contact_;
   ToolPathFunction tool_path_;
-  contact::SphereTool tool_;
+  std::vector<contact::SphereTool> tools_{1};   // [0] the real tool, then its rotated copies
+  std::vector<double> copies_deg_;
+  std::vector<Eigen::Matrix3d> copy_rotations_{Eigen::Matrix3d::Identity()};  // one per tool: [0] = identity
   double spin_per_load_factor_ = 0.0;
+  // Moves the real tool and its copies (rotated centres and spin).
+  void place_tools(const Eigen::Vector3d& centre_committed, const Eigen::Vector3d& centre, const Eigen::Vector3d& spin);
   double element_thickness(int e) const;
 };
 

@@ -6,6 +6,7 @@
 #include "forward/io/vtu_writer.hpp"
 #include "forward/mesh/square_sheet.hpp"
 #include "forward/model/shell_model.hpp"
+#include "forward/scenes/scene_tables.hpp"
 #include "forward/toolpath/gcode.hpp"
 #include "forward/toolpath/tool_path.hpp"
 
@@ -148,39 +149,11 @@ FormingScene read_forming_scene(const std::string& path) {
   }
   if (const auto ct = root.table("contact")) {
     ct->allow_only({"penalty", "friction", "tangential_penalty", "points", "surface"});
-    if (ct->has("surface")) {
-      const std::string surface = ct->string("surface");
-      if (surface == "flat") s.contact.surface = contact::ContactOptions::Surface::flat;
-      else if (surface == "phong") s.contact.surface = contact::ContactOptions::Surface::phong;
-      else ct->fail("surface", "expected \"flat\" or \"phong\"");
-    }
-    s.contact.penalty = ct->number("penalty", s.contact.penalty);
-    s.contact.friction = ct->number("friction", s.contact.friction);
-    s.contact.tangential_penalty = ct->number("tangential_penalty", s.contact.tangential_penalty);
-    s.contact.points = ct->integer("points", s.contact.points);
-    if (const std::string err = s.contact.validate(); !err.empty()) {
-      const std::string key = err.substr(0, err.find(' '));
-      ct->fail(ct->has(key) ? key : "penalty", err);
-    }
+    read_contact_table(*ct, &s.contact);
   }
   if (const auto so = root.table("solver")) {
-    so->allow_only({"travel_per_increment", "max_iterations", "linear_solver", "extrapolate", "line_search", "force_tolerance",
-                    "displacement_tolerance"});
-    s.extrapolate = so->boolean("extrapolate", s.extrapolate);
-    s.line_search = so->boolean("line_search", s.line_search);
-    for (auto [key, v] : {std::pair{"force_tolerance", &s.force_tolerance}, std::pair{"displacement_tolerance", &s.displacement_tolerance}}) {
-      *v = so->number(key, *v);
-      if (!(*v >= 1e-12 && *v <= 1e-2)) so->fail(key, "must lie in [1e-12, 1e-2]");
-    }
-    positive(*so, "travel_per_increment", &s.travel_per_increment);
-    s.max_iterations = so->integer("max_iterations", s.max_iterations);
-    if (s.max_iterations < 1 || s.max_iterations > 1000) so->fail("max_iterations", "must be in [1, 1000]");
-    if (so->has("linear_solver")) {
-      solver::LinearSolverKind k{};
-      if (!solver::linear_solver_from_string(so->string("linear_solver"), &k))
-        so->fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
-      s.linear_solver = k;
-    }
+    read_solver_table(*so, {s.travel_per_increment, s.max_iterations, s.linear_solver, s.extrapolate, s.line_search,
+                            s.force_tolerance, s.displacement_tolerance});
   }
   if (const auto o = root.table("output")) {
     o->allow_only({"vtu_every", "sections"});
@@ -255,15 +228,7 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
         if (!c.prescribed(model::ShellModel::dof(n, k))) c.prescribe(model::ShellModel::dof(n, k));
   c.finalize();
 
-  solver::NewtonOptions o;
-  o.initial_increment = o.max_increment = std::min(1.0, scene.travel_per_increment / L);
-  o.min_increment = 1e-4 * o.initial_increment;
-  o.max_iterations = scene.max_iterations;
-  o.extrapolate = scene.extrapolate;
-  o.line_search = scene.line_search;
-  o.force_tolerance = scene.force_tolerance;
-  o.displacement_tolerance = scene.displacement_tolerance;
-  if (scene.linear_solver) o.linear_solver = *scene.linear_solver;
+  const solver::NewtonOptions o = tool_newton_options(scene, L);
 
   json s;
   s["scene"] = scene.name;
@@ -379,13 +344,7 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   s["final_force"] = {mirror * f.x(), scene.half ? 0.0 : f.y(), mirror * f.z()};
   s["max_penetration"] = max_pen;
   s["units"] = {{"force", "N, by the sheet on the tool"}, {"length", "mm"}, {"time", "s (travel / feed)"}};
-  if (!total.converged) {
-    s["status"] = "failed";
-    s["message"] = "at tool travel " + std::to_string(total.lambda * L) + " mm: " + total.message;
-    rep.ok = false;
-  } else {
-    s["status"] = "ok";
-  }
+  rep.ok = set_run_status(s, total.converged, total.lambda * L, total.message);
   out.write_file("summary.json", s.dump(2) + "\n");
   rep.summary = s;
   return rep;

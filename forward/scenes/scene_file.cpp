@@ -27,8 +27,8 @@ bool material_point_kind_from_string(const std::string& s, MaterialPointKind* k)
 }
 
 std::string known_scene_kinds() {
-  return "tensile, shear, bauschinger, plane_strain, biaxial, shell_benchmark, indent, indent_line, line (FE scenes "
-         "cone and toolpath are not available in this version)";
+  return "tensile, shear, bauschinger, plane_strain, biaxial, shell_benchmark, indent, indent_line, line, cone (FE scene "
+         "toolpath is not available in this version)";
 }
 
 std::string scene_kind(const std::string& path) {

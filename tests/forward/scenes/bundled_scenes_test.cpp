@@ -1,6 +1,7 @@
 // Every bundled scene file loads and runs, and its summary matches the stored golden values
 // (tests/golden/bundled_scene_summaries.json, a regression guard; correctness is checked
 // against closed forms and fine-step references elsewhere). Same input -> identical output.
+#include "forward/scenes/cone_scene.hpp"
 #include "forward/scenes/forming_scene.hpp"
 #include "forward/scenes/material_point_scene.hpp"
 
@@ -22,8 +23,10 @@ TEST(BundledScenes, RunAndMatchGoldenSummaries) {
   const auto golden = nlohmann::json::parse(gf)["scenes"];
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(scenes_dir())) {
-    // Material-point scenes only (the FE forming scenes have their own tests).
-    if (e.path().extension() == ".toml" && !scene::is_forming_kind(scene::scene_kind(e.path().string()))) files.push_back(e.path());
+    // Material-point scenes only (the FE forming and cone scenes have their own tests).
+    if (e.path().extension() != ".toml") continue;
+    const std::string kind = scene::scene_kind(e.path().string());
+    if (!scene::is_forming_kind(kind) && !scene::is_cone_kind(kind)) files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 13u);

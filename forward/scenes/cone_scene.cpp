@@ -1,0 +1,252 @@
+// Reading a cone scene file (schema: docs/file-formats.md "Cone scene", docs/cone-scene.md).
+// The run is in cone_scene_run.cpp.
+#include "forward/scenes/cone_scene.hpp"
+#include "forward/scenes/scene_tables.hpp"
+
+#include "forward/io/input_error.hpp"
+#include "forward/io/toml_reader.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+
+namespace spifit::scene {
+namespace {
+
+using io::TomlTable;
+
+// Table and key of each ConePathOptions field, for the errors of check_cone_path_options.
+struct OptionKey {
+  const char* option;
+  const char* key;  // dotted scene key
+};
+constexpr OptionKey kOptionKeys[] = {
+    {"wall_angle_deg", "cone.wall_angle"},   {"stepdown", "cone.stepdown"},
+    {"contours", "cone.contours"},           {"top_radius", "cone.top_radius"},
+    {"thickness", "sheet.thickness"},        {"tool_radius", "tool.radius"},
+    {"pie_angle_deg", "cone.pie_angle"},     {"stepdown_angle_deg", "cone.stepdown_angle"},
+    {"ramp_angle_deg", "cone.ramp_angle"},   {"feed", "tool.feed"},
+    {"lift", "cone.lift"},                   {"chord_tolerance", "cone.chord_tolerance"},
+    {"approach_clearance", "cone.approach_clearance"},
+};
+
+// check_cone_path_options's message "cone path: OPTION = VALUE must ..." as an InputError on
+// the scene key of OPTION.
+[[noreturn]] void path_error(const std::string& file, const std::string& prefix, const std::invalid_argument& e) {
+  std::string msg = e.what();
+  const std::string head = "cone path: ";
+  if (msg.rfind(head, 0) == 0) msg = msg.substr(head.size());
+  const std::string option = msg.substr(0, msg.find(' '));
+  for (const auto& k : kOptionKeys)
+    if (option == k.option) {
+      const std::size_t eq = msg.find(" = ");
+      const std::size_t end = msg.find(' ', eq + 3);
+      const std::string value = eq == std::string::npos ? "" : msg.substr(eq + 3, end - eq - 3);
+      throw io::InputError(file, k.key, value, prefix + msg);
+    }
+  throw io::InputError(file, "cone", "", prefix + msg);
+}
+
+void positive(const TomlTable& t, const char* key, double* v) {
+  if (!t.has(key)) return;
+  *v = t.number(key);
+  if (!(*v > 0.0 && std::isfinite(*v))) t.fail(key, "must be > 0");
+}
+
+// Preset stages (SPEC §3.3) with the preset's default pie angle.
+std::vector<toolpath::ConePathOptions> preset_stages(const std::string& preset, double* default_pie) {
+  std::vector<toolpath::ConePathOptions> stages;
+  if (preset == "cone50") stages = {toolpath::cone50()};
+  else if (preset == "cone70") stages = {toolpath::cone70()};
+  else if (preset == "vwall") stages = toolpath::vwall_stages();
+  else stages = {toolpath::ConePathOptions{}};  // explicit geometry: the fields stay 0 until given
+  *default_pie = stages.front().pie_angle_deg;  // cone50 90, cone70 45, vwall and explicit 360
+  return stages;
+}
+
+void read_cone_table(const TomlTable& root, ConeScene& s) {
+  const auto ct = root.table("cone");
+  double default_pie = 360.0;
+  if (ct) {
+    ct->allow_only({"preset", "contours", "stages", "pie_angle", "wall_angle", "stepdown", "top_radius", "stepdown_angle",
+                    "ramp_angle", "lift", "chord_tolerance", "approach_clearance", "counter_clockwise"});
+    s.preset = ct->string("preset", "");
+    if (!s.preset.empty() && s.preset != "cone50" && s.preset != "cone70" && s.preset != "vwall")
+      ct->fail("preset", "unknown preset (known: cone50, cone70, vwall; or leave it out and give the geometry)");
+  }
+  s.stages = preset_stages(s.preset, &default_pie);
+  s.pie_angle = default_pie;
+  if (!ct) return;
+  if (ct->has("pie_angle")) {
+    s.pie_angle = ct->number("pie_angle");
+    if (!(s.pie_angle > 0.0 && s.pie_angle <= 360.0)) ct->fail("pie_angle", "must lie in (0, 360] deg");
+    const double pies = 360.0 / s.pie_angle;
+    if (std::abs(pies - std::round(pies)) > 1e-9 * pies)
+      ct->fail("pie_angle", "360 / pie_angle must be an integer (the pie stands for every pie of the sheet)");
+  }
+  if (ct->has("stages")) {
+    if (s.preset != "vwall") ct->fail("stages", "only the vwall preset has stages");
+    const int n = ct->integer("stages", 5);
+    if (n < 1 || n > 5) ct->fail("stages", "vwall has 1 to 5 stages");
+    s.stages.resize(static_cast<std::size_t>(n));
+  }
+  for (const char* key : {"wall_angle", "stepdown_angle"})
+    if (s.preset == "vwall" && ct->has(key)) ct->fail(key, "vwall sets it per stage (thesis §8.1.1)");
+  for (auto& o : s.stages) {
+    o.contours = ct->integer("contours", o.contours);
+    o.wall_angle_deg = ct->number("wall_angle", o.wall_angle_deg);
+    o.stepdown = ct->number("stepdown", o.stepdown);
+    o.top_radius = ct->number("top_radius", o.top_radius);
+    o.stepdown_angle_deg = ct->number("stepdown_angle", o.stepdown_angle_deg);
+    o.ramp_angle_deg = ct->number("ramp_angle", o.ramp_angle_deg);
+    o.lift = ct->number("lift", o.lift);
+    o.chord_tolerance = ct->number("chord_tolerance", o.chord_tolerance);
+    o.approach_clearance = ct->number("approach_clearance", o.approach_clearance);
+    o.counter_clockwise = ct->boolean("counter_clockwise", o.counter_clockwise);
+  }
+}
+
+void read_sheet_table(const TomlTable& root, ConeScene& s) {
+  s.thickness = s.stages.front().thickness;  // the preset's (0 without a preset: required)
+  double top = 0.0;
+  for (const auto& o : s.stages) top = std::max(top, o.top_radius);
+  s.clamp_radius = top + 1.5;  // SPEC §3.3 assumption
+  const auto sh = root.table("sheet");
+  if (sh) {
+    sh->allow_only({"thickness", "clamp_radius", "clamp_rotations", "elements_per_45deg", "core_radius", "radial_elements",
+                    "radial_grading", "band_inner", "band_outer", "band_factor", "thickness_points"});
+    positive(*sh, "thickness", &s.thickness);
+    positive(*sh, "clamp_radius", &s.clamp_radius);
+    if (sh->has("clamp_radius") && !(s.clamp_radius > top))
+      sh->fail("clamp_radius", "must be larger than the cone's top radius " + io::format_number(top) + " mm");
+    s.clamp_rotations = sh->boolean("clamp_rotations", s.clamp_rotations);
+    auto& m = s.mesh;
+    m.elements_per_45deg = sh->integer("elements_per_45deg", m.elements_per_45deg);
+    if (m.elements_per_45deg < 2 || m.elements_per_45deg > 2000) sh->fail("elements_per_45deg", "must be an integer in [2, 2000]");
+    m.core_radius = sh->number("core_radius", m.core_radius);
+    if (!(m.core_radius >= 0.0 && m.core_radius < s.clamp_radius)) sh->fail("core_radius", "must lie in [0, clamp_radius) (0: automatic)");
+    m.radial_elements = sh->integer("radial_elements", m.radial_elements);
+    if (m.radial_elements < 0 || m.radial_elements > 100000) sh->fail("radial_elements", "must be >= 0 (0: automatic)");
+    positive(*sh, "radial_grading", &m.radial_grading);
+    positive(*sh, "band_factor", &m.band_factor);
+    m.band_inner = sh->number("band_inner", m.band_inner);
+    m.band_outer = sh->number("band_outer", m.band_outer);
+    if (!(m.band_inner >= 0.0)) sh->fail("band_inner", "must be >= 0");
+    if (!(m.band_outer >= 0.0)) sh->fail("band_outer", "must be >= 0 (band_outer > band_inner activates the band)");
+    s.thickness_points = sh->integer("thickness_points", s.thickness_points);
+    if (s.thickness_points < 1 || s.thickness_points > 11) sh->fail("thickness_points", "unsupported number of thickness points (1 to 11)");
+  }
+}
+
+void read_tool_and_contact(const TomlTable& root, ConeScene& s) {
+  s.tool_radius = s.stages.front().tool_radius > 0.0 ? s.stages.front().tool_radius : 5.0;
+  if (const auto tl = root.table("tool")) {
+    tl->allow_only({"radius", "feed", "spin"});
+    positive(*tl, "radius", &s.tool_radius);
+    positive(*tl, "feed", &s.feed);
+    s.spin = tl->number("spin", 0.0);
+    if (!(std::abs(s.spin) <= 1e5)) tl->fail("spin", "must be a rotation speed in rev/min with |spin| <= 1e5");
+  }
+  if (const auto ct = root.table("contact")) {
+    ct->allow_only({"penalty", "friction", "tangential_penalty", "points", "surface", "virtual_tools"});
+    read_contact_table(*ct, &s.contact);
+    s.virtual_tools = ct->boolean("virtual_tools", s.virtual_tools);
+  }
+}
+
+void read_solver_and_output(const TomlTable& root, ConeScene& s) {
+  if (const auto so = root.table("solver")) {
+    read_solver_table(*so, {s.travel_per_increment, s.max_iterations, s.linear_solver, s.extrapolate, s.line_search,
+                            s.force_tolerance, s.displacement_tolerance});
+  }
+  if (const auto o = root.table("output")) {
+    o->allow_only({"vtu_every"});
+    s.vtu_every = o->integer("vtu_every", 0);
+    if (s.vtu_every < 0) o->fail("vtu_every", "must be >= 0");
+  }
+}
+
+// The sheet, tool and pie of the scene go into every stage's path options; each stage is
+// checked (errors on the scene key of the offending option).
+void finish_stages(ConeScene& s) {
+  for (std::size_t i = 0; i < s.stages.size(); ++i) {
+    auto& o = s.stages[i];
+    o.thickness = s.thickness;
+    o.tool_radius = s.tool_radius;
+    o.feed = s.feed;
+    o.pie_angle_deg = s.pie_angle;
+    try {
+      toolpath::check_cone_path_options(o);
+    } catch (const std::invalid_argument& e) {
+      path_error(s.file, s.stages.size() > 1 ? "stage " + std::to_string(i + 1) + ": " : "", e);
+    }
+    if (!(s.clamp_radius > o.top_radius))
+      throw io::InputError(s.file, "sheet.clamp_radius", io::format_number(s.clamp_radius),
+                           "must be larger than the cone's top radius " + io::format_number(o.top_radius) + " mm");
+  }
+}
+
+// The mesh must exist and its elements must not be too short for the thickness (ShellModel's
+// limit t/l <= 3): checked here so that the error comes before any output.
+void check_mesh(ConeScene& s) {
+  mesh::Mesh m;
+  try {
+    m = cone_scene_mesh(s);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(s.file, "sheet", "", std::string("cannot mesh the sheet: ") + e.what());
+  }
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const auto& q : m.quads)
+    for (std::size_t i = 0; i < 4; ++i)
+      shortest = std::min(shortest, (m.nodes[static_cast<std::size_t>(q[(i + 1) % 4])] - m.nodes[static_cast<std::size_t>(q[i])]).norm());
+  if (s.thickness / shortest > 3.0)
+    throw io::InputError(s.file, "sheet.elements_per_45deg", std::to_string(s.mesh.elements_per_45deg),
+                         "the shortest element edge " + io::format_number(shortest) + " mm is below a third of the thickness");
+}
+
+}  // namespace
+
+bool is_cone_kind(const std::string& kind) { return kind == "cone"; }
+
+ConeScene read_cone_scene(const std::string& path) {
+  const auto root = TomlTable::parse_file(path);
+  root.allow_only({"scene", "cone", "sheet", "tool", "contact", "solver", "output"});
+  const auto sc = root.table("scene");
+  if (!sc) root.fail("scene", "required table [scene] is missing");
+  sc->allow_only({"kind", "name", "description", "material"});
+  ConeScene s;
+  s.file = path;
+  if (!is_cone_kind(sc->string("kind"))) sc->fail("kind", "expected cone");
+  s.name = sc->string("name", std::filesystem::path(path).stem().string());
+  s.description = sc->string("description", "");
+  std::filesystem::path mp(sc->string("material", "../../../materials/aa3003o_c3c4.toml"));
+  if (mp.is_relative()) mp = std::filesystem::path(path).parent_path() / mp;
+  if (!std::filesystem::exists(mp)) sc->fail("material", "material card not found at " + mp.lexically_normal().string());
+  s.card = material::load_material_card(mp.lexically_normal().string());
+
+  read_cone_table(root, s);
+  read_sheet_table(root, s);
+  read_tool_and_contact(root, s);
+  read_solver_and_output(root, s);
+  finish_stages(s);
+  check_mesh(s);
+  return s;
+}
+
+mesh::Mesh cone_scene_mesh(const ConeScene& scene) {
+  mesh::DiscOptions o = scene.mesh;
+  o.radius = scene.clamp_radius;
+  o.angle_deg = scene.pie_angle;
+  return mesh::disc_mesh(o);
+}
+
+toolpath::ConePath cone_scene_path(const ConeScene& scene) {
+  if (scene.stages.size() == 1) return toolpath::annotated_cone_path(scene.stages.front());
+  double safe_z = 0.0;  // every stage starts and ends at its approach height
+  for (const auto& o : scene.stages) safe_z = std::max(safe_z, toolpath::cone_approach_centre_z(o));
+  return toolpath::annotated_multistage_cone_path(scene.stages, safe_z);
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,74 @@
+#pragma once
+// The `cone` scene (SPEC §3.3, §4; thesis §4.1.2, §8, §9; docs/cone-scene.md): a circular
+// sheet or a pie of angle gamma clamped at the clamp radius, formed by the contour tool path
+// of a cone (forward/toolpath/cone_path.hpp: presets cone50, cone70, vwall). Pies carry the
+// cyclic ties of their edges (model/cyclic_symmetry.hpp) and the virtual tools (the tool's
+// copies rotated by +-gamma, ShellModel::set_tool_copies). Outputs: summary.json, force.csv
+// (Cartesian and polar force components, contour index), vtu/.
+#include "forward/contact/shell_contact.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/material/material_card.hpp"
+#include "forward/mesh/disc_mesh.hpp"
+#include "forward/scenes/cone_observables.hpp"
+#include "forward/solver/newton_solver.hpp"
+#include "forward/toolpath/cone_path.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace spifit::scene {
+
+struct ConeScene {
+  std::string name, description, file;
+  material::MaterialCard card;
+  std::string preset;  // cone50, cone70, vwall; empty: geometry given in [cone]
+  // One cone (cone50, cone70, explicit geometry) or the vwall stages, with the sheet thickness,
+  // tool radius, feed and pie angle of the scene already in them.
+  std::vector<toolpath::ConePathOptions> stages;
+  double pie_angle = 360.0;        // gamma [deg]; 360 / gamma an integer
+  // Sheet: the mesh is a disc or pie of radius clamp_radius (its rim is the clamp).
+  double thickness = 1.2;
+  double clamp_radius = 91.5;      // default: top radius + 1.5 mm (SPEC §3.3 assumption)
+  bool clamp_rotations = false;    // thesis: translations only
+  mesh::DiscOptions mesh;          // radius and angle follow clamp_radius and pie_angle
+  int thickness_points = 5;
+  // Tool.
+  double tool_radius = 5.0;
+  double feed = 2000.0 / 60.0;     // mm/s
+  double spin = 0.0;               // rev/min about +z (counter-clockwise seen from above)
+  contact::ContactOptions contact;
+  bool virtual_tools = true;       // pies: copies of the tool at +-gamma (thesis Fig. 8.4)
+  // Solver: increments of tool travel.
+  double travel_per_increment = 1.0;  // mm
+  int max_iterations = 25;
+  bool extrapolate = true;
+  bool line_search = false;
+  double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
+  std::optional<solver::LinearSolverKind> linear_solver;
+  // Output.
+  int vtu_every = 0;
+};
+
+bool is_cone_kind(const std::string& kind);
+// Throws io::InputError naming file, key and value (unknown preset, pie angle not dividing
+// 360, clamp radius not beyond the top radius, invalid path geometry, ...).
+ConeScene read_cone_scene(const std::string& path);
+
+// The tool path of the scene (tool CENTRE waypoints with their move kind and contour).
+toolpath::ConePath cone_scene_path(const ConeScene& scene);
+// The mesh of the scene: disc or pie of radius clamp_radius.
+mesh::Mesh cone_scene_mesh(const ConeScene& scene);
+
+struct ConeReport {
+  bool ok = true;
+  nlohmann::json summary;
+};
+
+// Writes DIR/summary.json, DIR/force.csv and DIR/vtu/. Numerical failure: status "failed" with
+// where and why; partial outputs kept. progress: one line per completed contour on stderr.
+ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out, bool progress = false);
+
+}  // namespace spifit::scene

@@ -1,0 +1,262 @@
+// Running a cone scene: mesh, clamp, cyclic ties and virtual tools, the contour path as the
+// load, outputs (docs/cone-scene.md).
+#include "forward/io/csv_writer.hpp"
+#include "forward/io/vtu_writer.hpp"
+#include "forward/model/cyclic_symmetry.hpp"
+#include "forward/model/shell_model.hpp"
+#include "forward/scenes/cone_scene.hpp"
+#include "forward/scenes/scene_tables.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <numbers>
+#include <sstream>
+
+namespace spifit::scene {
+namespace {
+
+using json = nlohmann::json;
+using Clock = std::chrono::steady_clock;
+
+bool is_pie(const ConeScene& s) { return s.pie_angle < 360.0; }
+
+// Rim (= clamp radius) fixed in translation (and rotation on request); pie edges tied
+// cyclically: the DOFs of edge_theta1 are those of edge_theta0 rotated by gamma, and the axis
+// node moves along z only (tie_cyclic_edges). The rim node of edge_theta1 is a tied node: it
+// is not clamped itself but follows its clamped partner on edge_theta0 (R 0 = 0).
+solver::DofConstraints cone_constraints(const ConeScene& s, const mesh::Mesh& m, int num_dofs) {
+  solver::DofConstraints c(num_dofs);
+  std::vector<char> slave(static_cast<std::size_t>(m.num_nodes()), 0);
+  if (is_pie(s)) {
+    model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", s.pie_angle, &c);
+    for (int n : m.node_sets.at("edge_theta1")) slave[static_cast<std::size_t>(n)] = 1;
+    for (int n : m.node_sets.at("axis")) slave[static_cast<std::size_t>(n)] = 0;
+  }
+  const int clamped = s.clamp_rotations ? 6 : 3;
+  for (int n : m.node_sets.at("rim")) {
+    if (slave[static_cast<std::size_t>(n)]) continue;
+    for (int k = 0; k < clamped; ++k) c.prescribe(model::ShellModel::dof(n, k));
+  }
+  c.finalize();
+  return c;
+}
+
+// Virtual tools of a pie (thesis Fig. 8.4): copies at +gamma and -gamma (one copy for 180).
+std::vector<double> tool_copies(const ConeScene& s) {
+  if (!is_pie(s) || !s.virtual_tools) return {};
+  if (s.pie_angle == 180.0) return {180.0};
+  return {s.pie_angle, -s.pie_angle};
+}
+
+std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& track, const model::ShellModel& model) {
+  std::vector<std::string> w = model.warnings();
+  if (!is_pie(s)) return w;
+  if (!s.virtual_tools) w.emplace_back("virtual tools off: a tool footprint crossing a pie edge does not act on the other edge");
+  // The copies at +-gamma see the neighbouring pies only: a footprint reaching further (near the
+  // axis of a narrow pie) would be missed.
+  const double r = track.min_axis_distance();
+  const double reach = r * std::sin(std::min(s.pie_angle, 90.0) * std::numbers::pi / 180.0);
+  if (s.virtual_tools && s.tool_radius >= reach) {
+    char buf[240];
+    std::snprintf(buf, sizeof buf, "the tool centre comes within %.3g mm of the axis, where its footprint may reach pies beyond the "
+                  "neighbours (the virtual tools are at +-%.4g deg only)", r, s.pie_angle);
+    w.emplace_back(buf);
+  }
+  return w;
+}
+
+json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
+
+json summary_head(const ConeScene& s, const model::ShellModel& model, const ConeTrack& track, const std::vector<std::string>& warnings) {
+  const auto& p = track.path().path;
+  json j;
+  j["scene"] = s.name;
+  j["scene_file"] = s.file;
+  j["kind"] = "cone";
+  j["description"] = s.description;
+  j["material"] = s.card.name;
+  j["preset"] = s.preset;
+  j["model"] = {{"elements", model.num_elements()},       {"nodes", model.num_nodes()},
+                {"pie_angle", s.pie_angle},               {"clamp_radius", s.clamp_radius},
+                {"clamp_rotations", s.clamp_rotations},   {"thickness", s.thickness},
+                {"thickness_points", s.thickness_points}, {"elements_per_45deg", s.mesh.elements_per_45deg},
+                {"virtual_tools_deg", model.tool_copies_deg()}};
+  json stages = json::array();
+  for (const auto& o : s.stages)
+    stages.push_back({{"wall_angle", o.wall_angle_deg}, {"stepdown", o.stepdown}, {"contours", o.contours}, {"top_radius", o.top_radius}});
+  j["path"] = {{"stages", stages}, {"length", p.length()}, {"duration", p.duration()}, {"waypoints", p.waypoints().size()},
+               {"contours", track.contours().size()}};
+  j["tool"] = {{"radius", s.tool_radius}, {"feed", s.feed}, {"spin_rpm", s.spin}};
+  j["contact"] = {{"penalty", s.contact.penalty},
+                  {"friction", s.contact.friction},
+                  {"points", s.contact.points},
+                  {"surface", s.contact.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"}};
+  j["warnings"] = warnings;
+  j["status"] = "running";
+  return j;
+}
+
+// force.csv and contours.csv: rows kept in memory, files rewritten at most once per second of
+// wall time, at every completed contour and at the end (a full cone has thousands of rows).
+class ForceLog {
+ public:
+  ForceLog(const ConeScene& s, const ConeTrack& track, const io::OutputDirectory& out)
+      : scene_(s), track_(track), out_(out),
+        csv_({"time [s]", "tool_x [mm]", "tool_y [mm]", "tool_z [mm]", "theta [deg]", "Fx [N]", "Fy [N]", "Fz [N]", "Fr [N]",
+              "Ftheta [N]", "stage", "contour", "move", "max_penetration [mm]", "iterations"}) {}
+
+  void add(double s, double time, const Eigen::Vector3d& centre, const Eigen::Vector3d& f, double penetration, int iterations) {
+    const Eigen::Vector3d fp = polar_components(f, centre);
+    const toolpath::ConeSegment& seg = track_.segment_at(s);
+    const double theta = std::atan2(centre.y(), centre.x()) * 180.0 / std::numbers::pi;
+    csv_.add_row({time, centre.x(), centre.y(), centre.z(), theta, f.x(), f.y(), f.z(), fp.x(), fp.y(), static_cast<double>(seg.stage),
+                  static_cast<double>(seg.contour), static_cast<double>(static_cast<int>(seg.move)), penetration,
+                  static_cast<double>(iterations)});
+    samples_.push_back({s, f, fp});
+    for (int i = 0; i < 3; ++i) {
+      if (std::abs(f(i)) > std::abs(peak_(i))) peak_(i) = f(i);
+      if (std::abs(fp(i)) > std::abs(peak_polar_(i))) peak_polar_(i) = fp(i);
+    }
+  }
+  void write(int contours_completed, bool now) {
+    if (!now && Clock::now() - last_ < std::chrono::seconds(1)) return;
+    last_ = Clock::now();
+    out_.write_file("force.csv", "# spifit cone scene " + scene_.name +
+                                     ": force BY the sheet ON the (real) tool, Cartesian and polar at the tool's polar angle theta; "
+                                     "tool = centre; move: 0 start, 1 approach, 2 contour, 3 ramp, 4 lift, 5 move, 6 plunge, "
+                                     "7 retract, 8 stage_change\n" + csv_.str());
+    io::CsvTable means({"stage", "contour", "samples", "Fx [N]", "Fy [N]", "Fz [N]", "Fr [N]", "Ftheta [N]"});
+    for (const auto& m : contour_means(track_, samples_, contours_completed))
+      means.add_row({static_cast<double>(m.span.stage), static_cast<double>(m.span.contour), static_cast<double>(m.samples), m.force.x(),
+                     m.force.y(), m.force.z(), m.polar.x(), m.polar.y()});
+    out_.write_file("contours.csv", "# spifit cone scene " + scene_.name +
+                                        ": mean force over the central third of each completed contour (by travel; thesis §8.3)\n" +
+                                        means.str());
+  }
+  ContourMean contour_mean(int k) const { return contour_means(track_, samples_, k + 1).back(); }
+  const Eigen::Vector3d& peak() const { return peak_; }
+  const Eigen::Vector3d& peak_polar() const { return peak_polar_; }
+
+ private:
+  const ConeScene& scene_;
+  const ConeTrack& track_;
+  const io::OutputDirectory& out_;
+  io::CsvTable csv_;
+  std::vector<ForceSample> samples_;
+  Eigen::Vector3d peak_ = Eigen::Vector3d::Zero(), peak_polar_ = Eigen::Vector3d::Zero();
+  Clock::time_point last_{};
+};
+
+// Mid-surface shape and thickness along the radial section line (SPEC §4), in the current state.
+void write_section(const io::OutputDirectory& out, const ConeScene& s, const model::ShellModel& model, const std::vector<int>& line,
+                   const ContourSpan& span) {
+  const std::vector<double> h = model.nodal_thickness();
+  io::CsvTable sec({"r0 [mm]", "r [mm]", "theta [deg]", "z [mm]", "thickness [mm]"});
+  for (int n : line) {
+    const Eigen::Vector3d& p = model.position(n);
+    sec.add_row({model.mesh().nodes[static_cast<std::size_t>(n)].head<2>().norm(), p.head<2>().norm(),
+                 std::atan2(p.y(), p.x()) * 180.0 / std::numbers::pi, p.z(), h[static_cast<std::size_t>(n)]});
+  }
+  char name[64];
+  std::snprintf(name, sizeof name, "sections/section_s%d_c%03d.csv", span.stage, span.contour);
+  char head[200];
+  std::snprintf(head, sizeof head, "# spifit cone scene %s: mid-surface section at theta0 = %.6g deg after stage %d, contour %d\n",
+                s.name.c_str(), section_angle_deg(s.pie_angle), span.stage, span.contour);
+  out.write_file(name, head + sec.str());
+}
+
+void finish_summary(json& j, const solver::NewtonSummary& r, int increments, const ConeTrack& track, double length,
+                    const model::ShellModel& model, const ForceLog& log) {
+  const Eigen::Vector3d f = model.tool_force();
+  j["increments"] = increments;
+  j["newton_iterations"] = r.iterations;
+  j["cutbacks"] = r.cutbacks;
+  j["factorisations"] = r.factorisations;
+  j["factorisations_by_solver"] = {{"cholmod", r.cholmod_factorisations}, {"umfpack", r.umfpack_factorisations}};
+  j["profile_seconds"] = {{"elements", r.element_seconds}, {"assembly", r.scatter_seconds}, {"linear_solver", r.linear_seconds}};
+  j["travel_reached"] = r.lambda * length;
+  j["contours_total"] = track.contours().size();
+  j["contours_completed"] = track.completed(r.lambda * length);
+  j["peak_force"] = vec(log.peak());
+  j["peak_polar_force"] = vec(log.peak_polar());
+  j["final_force"] = vec(f);
+  j["final_polar_force"] = vec(polar_components(f, model.tool().centre));
+  j["units"] = {{"force", "N, by the sheet on the real tool (pies: not scaled by 360 / pie_angle)"},
+                {"polar_force", "(r, theta, z) at the tool centre's polar angle"},
+                {"length", "mm"},
+                {"time", "s (travel / feed)"}};
+}
+
+}  // namespace
+
+ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out, bool progress) {
+  const auto t0 = Clock::now();
+  const mesh::Mesh mesh = cone_scene_mesh(scene);
+  model::ShellModelOptions mo;
+  mo.shell.thickness_points = scene.thickness_points;
+  model::ShellModel model(mesh, scene.thickness, scene.card.params, mo);
+  const ConeTrack track(cone_scene_path(scene));
+  const toolpath::ToolPath& path = track.path().path;
+  const double length = path.length(), duration = path.duration();
+  // Spin [rad per unit load factor] = omega [rad/s] x duration [s].
+  const double spin = scene.spin * 2.0 * std::numbers::pi / 60.0 * duration;
+  model.set_tool(scene.tool_radius, [&path, length](double lambda) { return path.at_distance(lambda * length); }, scene.contact, spin);
+  model.set_tool_copies(tool_copies(scene));
+  const solver::DofConstraints c = cone_constraints(scene, mesh, model.num_dofs());
+
+  json s = summary_head(scene, model, track, scene_warnings(scene, track, model));
+  out.write_file("summary.json", s.dump(2) + "\n");
+  std::filesystem::create_directories(out.path() / "vtu");
+  io::PvdCollection pvd(out.path() / "vtu", "sheet");
+  pvd.write_step(0.0, mesh, model.vtu_frame());
+
+  ForceLog log(scene, track, out);
+  const std::vector<int> section = radial_line_nodes(mesh, section_angle_deg(scene.pie_angle));
+  std::filesystem::create_directories(out.path() / "sections");
+  double max_pen = 0.0;
+  int increments = 0, done = 0;
+  std::vector<double> contour_wall;  // wall seconds at the end of each completed contour
+  auto on_increment = [&](const solver::IncrementReport& ir) {
+    ++increments;
+    const double travel = ir.lambda * length, time = ir.lambda * duration;
+    const Eigen::Vector3d f = model.tool_force();
+    const double pen = model.contact_summary().max_penetration;
+    max_pen = std::max(max_pen, pen);
+    log.add(travel, time, model.tool().centre, f, pen, ir.iterations);
+    const int now_done = track.completed(travel);
+    const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
+    const bool contour_ended = done < now_done;
+    for (; done < now_done; ++done) {
+      contour_wall.push_back(wall);
+      const ContourSpan& span = track.contours()[static_cast<std::size_t>(done)];
+      write_section(out, scene, model, section, span);
+      if (progress) {
+        const Eigen::Vector3d mean = log.contour_mean(done).polar;
+        std::fprintf(stderr, "  contour %d/%zu (stage %d, contour %d) done, wall %.1f s: central-third mean (Fr, Ftheta, Fz) = (%.1f, %.1f, %.1f) N\n",
+                     done + 1, track.contours().size(), span.stage, span.contour, wall, mean.x(), mean.y(), mean.z());
+      }
+    }
+    log.write(done, contour_ended);
+    if (scene.vtu_every > 0 && increments % scene.vtu_every == 0) pvd.write_step(time, mesh, model.vtu_frame());
+    return true;
+  };
+
+  solver::NewtonSolver solver(model, c, tool_newton_options(scene, length));
+  const solver::NewtonSummary r = solver.solve(0.0, 1.0, on_increment);
+  if (increments > 0 && (scene.vtu_every == 0 || increments % scene.vtu_every != 0)) pvd.write_step(r.lambda * duration, mesh, model.vtu_frame());
+  log.write(done, true);
+  finish_summary(s, r, increments, track, length, model, log);
+  s["max_penetration"] = max_pen;
+  s["contour_wall_seconds"] = contour_wall;
+  s["wall_seconds"] = std::chrono::duration<double>(Clock::now() - t0).count();
+  ConeReport rep;
+  rep.ok = set_run_status(s, r.converged, r.lambda * length, r.message);
+  out.write_file("summary.json", s.dump(2) + "\n");
+  rep.summary = s;
+  return rep;
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,58 @@
+#include "forward/scenes/scene_tables.hpp"
+
+#include <cmath>
+#include <utility>
+
+namespace spifit::scene {
+
+void read_contact_table(const io::TomlTable& ct, contact::ContactOptions* c) {
+  if (ct.has("surface")) {
+    const std::string surface = ct.string("surface");
+    if (surface == "flat") c->surface = contact::ContactOptions::Surface::flat;
+    else if (surface == "phong") c->surface = contact::ContactOptions::Surface::phong;
+    else ct.fail("surface", "expected \"flat\" or \"phong\"");
+  }
+  c->penalty = ct.number("penalty", c->penalty);
+  c->friction = ct.number("friction", c->friction);
+  c->tangential_penalty = ct.number("tangential_penalty", c->tangential_penalty);
+  c->points = ct.integer("points", c->points);
+  if (const std::string err = c->validate(); !err.empty()) {
+    const std::string key = err.substr(0, err.find(' '));
+    ct.fail(ct.has(key) ? key : "penalty", err);
+  }
+}
+
+void read_solver_table(const io::TomlTable& so, const SolverFields& f) {
+  so.allow_only({"travel_per_increment", "max_iterations", "linear_solver", "extrapolate", "line_search", "force_tolerance",
+                 "displacement_tolerance"});
+  if (so.has("travel_per_increment")) {
+    f.travel_per_increment = so.number("travel_per_increment");
+    if (!(f.travel_per_increment > 0.0 && std::isfinite(f.travel_per_increment))) so.fail("travel_per_increment", "must be > 0");
+  }
+  f.max_iterations = so.integer("max_iterations", f.max_iterations);
+  if (f.max_iterations < 1 || f.max_iterations > 1000) so.fail("max_iterations", "must be in [1, 1000]");
+  if (so.has("linear_solver")) {
+    solver::LinearSolverKind k{};
+    if (!solver::linear_solver_from_string(so.string("linear_solver"), &k))
+      so.fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
+    f.linear_solver = k;
+  }
+  f.extrapolate = so.boolean("extrapolate", f.extrapolate);
+  f.line_search = so.boolean("line_search", f.line_search);
+  for (auto [key, v] : {std::pair{"force_tolerance", &f.force_tolerance}, std::pair{"displacement_tolerance", &f.displacement_tolerance}}) {
+    *v = so.number(key, *v);
+    if (!(*v >= 1e-12 && *v <= 1e-2)) so.fail(key, "must lie in [1e-12, 1e-2]");
+  }
+}
+
+bool set_run_status(nlohmann::json& s, bool converged, double travel_reached, const std::string& message) {
+  if (converged) {
+    s["status"] = "ok";
+    return true;
+  }
+  s["status"] = "failed";
+  s["message"] = "at tool travel " + std::to_string(travel_reached) + " mm: " + message;
+  return false;
+}
+
+}  // namespace spifit::scene

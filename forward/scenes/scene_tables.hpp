@@ -1,0 +1,56 @@
+#pragma once
+// TOML tables shared by the tool scenes (forming_scene, cone_scene): [contact] and [solver],
+// and the closing status of a run's summary. The callers keep their own allow_only lists (a
+// scene may add keys) and their own fields; these functions read, check and fail with the
+// file, key and value (io::InputError).
+#include "forward/contact/shell_contact.hpp"
+#include "forward/io/toml_reader.hpp"
+#include "forward/solver/linear_solver.hpp"
+#include "forward/solver/newton_solver.hpp"
+
+#include <algorithm>
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace spifit::scene {
+
+// penalty, friction, tangential_penalty, points, surface ("flat" | "phong"); validated.
+void read_contact_table(const io::TomlTable& ct, contact::ContactOptions* contact);
+
+// The [solver] keys, bound to the scene's own fields.
+struct SolverFields {
+  double& travel_per_increment;
+  int& max_iterations;
+  std::optional<solver::LinearSolverKind>& linear_solver;
+  bool& extrapolate;
+  bool& line_search;
+  double& force_tolerance;
+  double& displacement_tolerance;
+};
+// travel_per_increment, max_iterations, linear_solver, extrapolate, line_search,
+// force_tolerance, displacement_tolerance (and no other key).
+void read_solver_table(const io::TomlTable& so, const SolverFields& f);
+
+// Newton options of a tool scene (any type with the SolverFields members) whose path is
+// `length` mm long: the load factor is the travelled fraction of the path.
+template <typename Scene>
+solver::NewtonOptions tool_newton_options(const Scene& s, double length) {
+  solver::NewtonOptions o;
+  o.initial_increment = o.max_increment = std::min(1.0, s.travel_per_increment / length);
+  o.min_increment = 1e-4 * o.initial_increment;
+  o.max_iterations = s.max_iterations;
+  o.extrapolate = s.extrapolate;
+  o.line_search = s.line_search;
+  o.force_tolerance = s.force_tolerance;
+  o.displacement_tolerance = s.displacement_tolerance;
+  if (s.linear_solver) o.linear_solver = *s.linear_solver;
+  return o;
+}
+
+// status "ok", or "failed" with "at tool travel X mm: why"; returns whether it converged.
+bool set_run_status(nlohmann::json& summary, bool converged, double travel_reached, const std::string& message);
+
+}  // namespace spifit::scene

@@ -1,0 +1,163 @@
+// The cone scene (issue 6): a tiny one-contour cone on a 90 deg pie runs, pushes the tool up,
+// and writes polar force components consistent with the Cartesian ones; the reader names file
+// and key of bad inputs.
+#include "forward/io/input_error.hpp"
+#include "forward/scenes/cone_scene.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace spifit::scene {
+namespace {
+
+fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_cone_" + std::to_string(::getpid()) + "_" + name); }
+
+std::string material_line() { return "material = \"" + std::string(SPIFIT_SOURCE_DIR) + "/materials/aa3003o_c3c4.toml\"\n"; }
+
+fs::path write_scene(const std::string& name, const std::string& body) {
+  const fs::path f = temp(name + ".toml");
+  std::ofstream(f) << "[scene]\nkind = \"cone\"\n" << material_line() << body;
+  return f;
+}
+
+// One contour of a small 45 deg cone (top radius 20 mm, 0.5 mm stepdown) on a coarse 90 deg pie.
+const char* kTiny =
+    "[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = 1\ntop_radius = 20.0\npie_angle = 90.0\n"
+    "[sheet]\nthickness = 1.0\nelements_per_45deg = 8\nthickness_points = 3\n"
+    "[solver]\ntravel_per_increment = 0.5\n";
+
+std::vector<std::vector<double>> read_rows(const fs::path& csv) {
+  std::ifstream in(csv);
+  std::vector<std::vector<double>> rows;
+  bool header = true;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    if (header) {
+      header = false;
+      continue;
+    }
+    std::vector<double> row;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
+  const fs::path file = write_scene("tiny", kTiny);
+  const ConeScene scene = read_cone_scene(file.string());
+  EXPECT_EQ(scene.stages.size(), 1u);
+  EXPECT_DOUBLE_EQ(scene.clamp_radius, 21.5);  // top radius + 1.5 mm
+  const fs::path dir = temp("tiny_out");
+  fs::remove_all(dir);
+  const auto out = io::OutputDirectory::prepare(dir.string(), true);
+  const ConeReport r = run_cone_scene(scene, out);
+  ASSERT_TRUE(r.ok) << r.summary.dump();
+  const auto& s = r.summary;
+  std::printf("tiny cone: %d elements, %d increments, %d iterations, %.2f s; peak force (%.2f, %.2f, %.2f) N, peak polar (%.2f, %.2f, %.2f) N\n",
+              s["model"]["elements"].get<int>(), s["increments"].get<int>(), s["newton_iterations"].get<int>(),
+              s["wall_seconds"].get<double>(), s["peak_force"][0].get<double>(), s["peak_force"][1].get<double>(),
+              s["peak_force"][2].get<double>(), s["peak_polar_force"][0].get<double>(), s["peak_polar_force"][1].get<double>(),
+              s["peak_polar_force"][2].get<double>());
+  EXPECT_EQ(s["status"], "ok");
+  EXPECT_EQ(s["contours_completed"].get<int>(), 1);
+  EXPECT_EQ(s["model"]["virtual_tools_deg"].size(), 2u);
+  EXPECT_GT(s["peak_force"][2].get<double>(), 0.0);  // the sheet pushes the tool up
+  const auto rows = read_rows(dir / "force.csv");
+  ASSERT_EQ(static_cast<int>(rows.size()), s["increments"].get<int>());
+  int on_contour = 0, pushed = 0;
+  for (const auto& row : rows) {
+    ASSERT_EQ(row.size(), 15u);
+    const double x = row[1], y = row[2], theta = std::atan2(y, x);
+    const double fx = row[5], fy = row[6], fz = row[7], fr = row[8], ft = row[9];
+    const double scale = std::max(1.0, std::hypot(fx, fy));
+    EXPECT_NEAR(row[4], theta * 180.0 / M_PI, 1e-9);
+    EXPECT_NEAR(fr, fx * std::cos(theta) + fy * std::sin(theta), 1e-9 * scale);
+    EXPECT_NEAR(ft, -fx * std::sin(theta) + fy * std::cos(theta), 1e-9 * scale);
+    if (row[12] == 2.0) {  // on the contour
+      ++on_contour;
+      EXPECT_EQ(row[11], 1.0);
+      EXPECT_GE(fz, 0.0);
+      pushed += fz > 0.0 ? 1 : 0;
+    }
+  }
+  // The last few degrees of the contour may lose contact: there the tool meets the sheet its
+  // neighbour (the pie's cyclic image) formed at the start of the contour.
+  EXPECT_GT(on_contour, 5);
+  EXPECT_GT(pushed, 0.8 * on_contour);
+  const auto means = read_rows(dir / "contours.csv");
+  ASSERT_EQ(means.size(), 1u);
+  EXPECT_GT(means[0][5], 0.0);  // mean Fz over the central third
+  const auto section = read_rows(dir / "sections" / "section_s1_c001.csv");
+  EXPECT_GT(section.size(), 5u);
+  EXPECT_EQ(section.front()[0], 0.0);  // from the axis
+  EXPECT_DOUBLE_EQ(section.back()[0], 21.5);  // to the clamp
+  EXPECT_TRUE(fs::exists(dir / "vtu" / "sheet.pvd"));
+  fs::remove_all(dir);
+  fs::remove(file);
+}
+
+TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
+  const fs::path f = write_scene("preset", "[cone]\npreset = \"cone70\"\ncontours = 3\n[sheet]\nelements_per_45deg = 16\n");
+  const ConeScene s = read_cone_scene(f.string());
+  ASSERT_EQ(s.stages.size(), 1u);
+  EXPECT_EQ(s.stages[0].contours, 3);
+  EXPECT_DOUBLE_EQ(s.stages[0].wall_angle_deg, 70.0);
+  EXPECT_DOUBLE_EQ(s.pie_angle, 45.0);
+  EXPECT_DOUBLE_EQ(s.thickness, 1.2);
+  EXPECT_DOUBLE_EQ(s.clamp_radius, 91.5);
+  EXPECT_EQ(cone_scene_mesh(s).node_sets.count("edge_theta1"), 1u);
+  const fs::path v = write_scene("vwall", "[cone]\npreset = \"vwall\"\nstages = 2\npie_angle = 90.0\n[sheet]\nelements_per_45deg = 8\n");
+  const ConeScene w = read_cone_scene(v.string());
+  ASSERT_EQ(w.stages.size(), 2u);
+  EXPECT_DOUBLE_EQ(w.stages[1].wall_angle_deg, 60.0);
+  EXPECT_DOUBLE_EQ(w.clamp_radius, 65.5);  // the vwall backing plate hole (thesis §8.1)
+  EXPECT_EQ(cone_scene_path(w).segments.back().stage, 2);
+  fs::remove(f);
+  fs::remove(v);
+}
+
+TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
+  struct Case {
+    std::string body, key, value, fragment;
+  };
+  const std::vector<Case> cases = {
+      {"[cone]\npreset = \"cone60\"\n", "cone.preset", "\"cone60\"", "unknown preset"},
+      {"[cone]\npreset = \"cone70\"\npie_angle = 0.0\n", "cone.pie_angle", "0", "(0, 360]"},
+      {"[cone]\npreset = \"cone70\"\npie_angle = 50.0\n", "cone.pie_angle", "50", "integer"},
+      {"[cone]\npreset = \"cone70\"\n[sheet]\nclamp_radius = 85.0\n", "sheet.clamp_radius", "85", "top radius 90"},
+      {"[cone]\npreset = \"cone70\"\ncontours = 0\n", "cone.contours", "0", ">= 1"},
+      {"[cone]\npreset = \"vwall\"\nwall_angle = 60.0\n", "cone.wall_angle", "60", "per stage"},
+      {"[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = 2\ntop_radius = 20.0\n", "sheet.thickness", "0", "thickness"},
+      {"[cone]\npreset = \"cone70\"\n[sheet]\nelements_per_45deg = 1\n", "sheet.elements_per_45deg", "1", "[2, 2000]"},
+      {"[cone]\npreset = \"cone70\"\n[contact]\nvirtual_tool = false\n", "contact.virtual_tool", "", "unknown key"},
+  };
+  for (const auto& c : cases) {
+    const fs::path f = write_scene("bad", c.body);
+    try {
+      read_cone_scene(f.string());
+      ADD_FAILURE() << "no error for " << c.body;
+    } catch (const io::InputError& e) {
+      std::printf("%s\n", e.what());
+      EXPECT_EQ(e.file(), f.string());
+      EXPECT_EQ(e.key(), c.key) << e.what();
+      if (!c.value.empty()) {
+        EXPECT_EQ(e.value(), c.value) << e.what();
+      }
+      EXPECT_NE(std::string(e.what()).find(c.fragment), std::string::npos) << e.what();
+    }
+    fs::remove(f);
+  }
+}
+
+}  // namespace
+}  // namespace spifit::scene
