@@ -221,10 +221,7 @@ ConeScene read_cone_scene(const std::string& path) {
   if (!is_cone_kind(sc->string("kind"))) sc->fail("kind", "expected cone");
   s.name = sc->string("name", std::filesystem::path(path).stem().string());
   s.description = sc->string("description", "");
-  std::filesystem::path mp(sc->string("material", "../../../materials/aa3003o_c3c4.toml"));
-  if (mp.is_relative()) mp = std::filesystem::path(path).parent_path() / mp;
-  if (!std::filesystem::exists(mp)) sc->fail("material", "material card not found at " + mp.lexically_normal().string());
-  s.card = material::load_material_card(mp.lexically_normal().string());
+  s.card = read_scene_material(*sc, path);
 
   read_cone_table(root, s);
   read_sheet_table(root, s);

@@ -1,9 +1,17 @@
 #include "forward/scenes/scene_tables.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <utility>
 
 namespace spifit::scene {
+
+material::MaterialCard read_scene_material(const io::TomlTable& sc, const std::string& scene_path) {
+  std::filesystem::path mp(sc.string("material", "../../../materials/aa3003o_c3c4.toml"));
+  if (mp.is_relative()) mp = std::filesystem::path(scene_path).parent_path() / mp;
+  if (!std::filesystem::exists(mp)) sc.fail("material", "material card not found at " + mp.lexically_normal().string());
+  return material::load_material_card(mp.lexically_normal().string());
+}
 
 void read_contact_table(const io::TomlTable& ct, contact::ContactOptions* c) {
   if (ct.has("surface")) {

@@ -5,6 +5,7 @@
 // file, key and value (io::InputError).
 #include "forward/contact/shell_contact.hpp"
 #include "forward/io/toml_reader.hpp"
+#include "forward/material/material_card.hpp"
 #include "forward/solver/linear_solver.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -16,6 +17,10 @@
 #include <string>
 
 namespace spifit::scene {
+
+// [scene] material: the card file relative to the scene file (default C.3 + C.4 of the
+// bundled tree); a missing file fails on the key.
+material::MaterialCard read_scene_material(const io::TomlTable& sc, const std::string& scene_path);
 
 // penalty, friction, tangential_penalty, points, surface ("flat" | "phong"); validated.
 void read_contact_table(const io::TomlTable& ct, contact::ContactOptions* contact);
