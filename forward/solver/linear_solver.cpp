@@ -3,6 +3,8 @@
 #include <cholmod.h>
 #include <umfpack.h>
 
+#include "forward/runtime/serial_openmp_scope.hpp"
+
 namespace spifit::solver {
 
 namespace {
@@ -102,7 +104,11 @@ class Cholmod final : public LinearSolver {
       nnz_ = p.nonzeros();
       ++symbolic_;
     }
-    const int ok = cholmod_l_factorize(&A, factor_, &common_);
+    int ok = 0;
+    {
+      const runtime::SerialOpenMpScope serial;  // CHOLMOD's own 4-thread regions cost more than they gain
+      ok = cholmod_l_factorize(&A, factor_, &common_);
+    }
     ++numeric_;
     n_ = p.rows;
     if (!ok || common_.status == CHOLMOD_NOT_POSDEF) return fail("matrix not positive definite (CHOLMOD); use UMFPACK for this tangent");
@@ -120,7 +126,11 @@ class Cholmod final : public LinearSolver {
     B.z = nullptr;
     B.xtype = CHOLMOD_REAL;
     B.dtype = CHOLMOD_DOUBLE;
-    cholmod_dense* X = cholmod_l_solve(CHOLMOD_A, factor_, &B, &common_);
+    cholmod_dense* X = nullptr;
+    {
+      const runtime::SerialOpenMpScope serial;
+      X = cholmod_l_solve(CHOLMOD_A, factor_, &B, &common_);
+    }
     if (!X) return fail("CHOLMOD solve failed");
     x->resize(n_);
     const double* xv = static_cast<const double*>(X->x);
