@@ -10,30 +10,25 @@ namespace spifit::mesh {
 namespace {
 
 // Radial positions s in [0, 1] of the ring's node layers: geometric grading, or (when a band is
-// given) a density band with more elements per mm in it, by inverting the cumulative density.
+// given) a density band with band_factor times more elements per mm in it. The density is
+// piecewise constant in r = r0 + (r1 - r0) s, so its integral is piecewise linear and is inverted
+// exactly: layer k sits where the integral reaches k / n of its total.
 std::vector<double> ring_layers(int n, double r0, double r1, const DiscOptions& o) {
   const auto g = graded_points(0.0, 1.0, n, o.radial_grading);
   if (!(o.band_outer > o.band_inner) || o.band_factor == 1.0) return g;
-  // Density rho(s) = 1 + (f - 1) [r(s) in band]; place nodes at equal increments of its integral.
-  const int fine = 4000;
-  std::vector<double> s(fine + 1), cum(fine + 1, 0.0);
-  for (int i = 0; i <= fine; ++i) s[i] = static_cast<double>(i) / fine;
-  for (int i = 1; i <= fine; ++i) {
-    const double mid = 0.5 * (s[i - 1] + s[i]);
-    const double r = r0 + (r1 - r0) * mid;
-    const double rho = (r >= o.band_inner && r <= o.band_outer) ? o.band_factor : 1.0;
-    cum[i] = cum[i - 1] + rho * (s[i] - s[i - 1]);
-  }
-  std::vector<double> out(n + 1);
-  for (int k = 0; k <= n; ++k) {
-    const double target = cum[fine] * k / n;
-    const auto it = std::lower_bound(cum.begin(), cum.end(), target);
-    const int i = std::clamp(static_cast<int>(it - cum.begin()), 1, fine);
-    const double t = (target - cum[i - 1]) / std::max(cum[i] - cum[i - 1], 1e-300);
-    out[k] = s[i - 1] + t * (s[i] - s[i - 1]);
-  }
-  out[0] = 0.0;
-  out[n] = 1.0;
+  const double a = std::clamp(o.band_inner, r0, r1), b = std::clamp(o.band_outer, r0, r1), f = o.band_factor;
+  // Integral of the density from r0 to r, and its inverse.
+  const double total = (r1 - r0) + (f - 1.0) * (b - a);
+  const double at_a = a - r0, at_b = at_a + f * (b - a);
+  auto radius_at = [&](double c) {
+    if (c <= at_a) return r0 + c;
+    if (c <= at_b) return a + (c - at_a) / f;
+    return b + (c - at_b);
+  };
+  std::vector<double> out(static_cast<std::size_t>(n) + 1);
+  for (int k = 0; k <= n; ++k) out[static_cast<std::size_t>(k)] = (radius_at(total * k / n) - r0) / (r1 - r0);
+  out.front() = 0.0;
+  out.back() = 1.0;
   return out;
 }
 
@@ -45,7 +40,8 @@ Mesh disc_mesh(const DiscOptions& o) {
   if (o.elements_per_45deg < 2) throw std::invalid_argument("elements_per_45deg must be >= 2");
   if (!(o.radial_grading > 0 && o.band_factor > 0)) throw std::invalid_argument("grading and band factor must be > 0");
   const double pi = std::numbers::pi;
-  const int sectors = static_cast<int>(std::ceil(o.angle_deg / 90.0 - 1e-9));
+  if (!(o.max_sector_deg == 45.0 || o.max_sector_deg == 90.0)) throw std::invalid_argument("max_sector_deg must be 45 or 90");
+  const int sectors = static_cast<int>(std::ceil(o.angle_deg / o.max_sector_deg - 1e-9));
   const double beta = o.angle_deg / sectors * pi / 180.0;  // sub-sector angle
   // Even number of rim elements per sub-sector: n per kite side.
   const int n = std::max(1, static_cast<int>(std::lround(o.elements_per_45deg * (beta * 180.0 / pi) / 45.0 / 2.0)));
@@ -53,8 +49,32 @@ Mesh disc_mesh(const DiscOptions& o) {
   // Core radius: the kite's sides have n elements of about the rim element size (default).
   const double rc = o.core_radius > 0 ? o.core_radius : std::min(0.6 * o.radius, n * rim_h * 1.2);
   if (!(rc < o.radius)) throw std::invalid_argument("core radius must be smaller than the radius");
-  const int m = o.radial_elements > 0 ? o.radial_elements : std::max(1, static_cast<int>(std::lround((o.radius - rc) / rim_h)));
-  const auto layers = ring_layers(m, rc, o.radius, o);
+  // Ring layers: (transition part) fractions from the kite's sides to the circle ring_start,
+  // then (circular part) true radii. Without ring_start the whole ring is one transition to the
+  // rim (the kite's sides blend into the rim arc).
+  const bool circular = o.ring_start > 0.0;
+  if (circular && !(o.ring_start > rc / std::cos(0.5 * beta) && o.ring_start < o.radius))
+    throw std::invalid_argument("ring_start must lie beyond the core (" + std::to_string(rc / std::cos(0.5 * beta)) + " mm) and inside the radius");
+  if (o.rim_ring_width < 0.0 || (o.rim_ring_width > 0.0 && !circular) ||
+      (circular && !(o.rim_ring_width < o.radius - o.ring_start)))
+    throw std::invalid_argument("rim_ring_width needs ring_start and must be smaller than radius - ring_start");
+  const double r_inner = circular ? o.ring_start : o.radius;
+  const double r_spaced = o.radius - o.rim_ring_width;  // end of the spaced circular layers
+  const int m_default = std::max(1, static_cast<int>(std::lround((o.radius - rc) / rim_h)));
+  const int m = o.radial_elements > 0 ? o.radial_elements : m_default;
+  const int mt = !circular ? m
+                 : o.transition_elements > 0
+                     ? o.transition_elements
+                     : std::max(1, static_cast<int>(std::lround((o.ring_start - rc) / (o.ring_start * beta / (2 * n)))));
+  std::vector<double> transition = circular ? graded_points(0.0, 1.0, mt, 1.0) : ring_layers(m, rc, o.radius, o);
+  std::vector<double> radii;  // circular layers beyond the transition's last (ring_start)
+  if (circular) {
+    for (double s : ring_layers(m, o.ring_start, r_spaced, o)) radii.push_back(o.ring_start + s * (r_spaced - o.ring_start));
+    radii.erase(radii.begin());
+    if (o.rim_ring_width > 0.0) radii.push_back(o.radius);
+    radii.back() = o.radius;
+  }
+  const int layers_total = mt + static_cast<int>(radii.size());
 
   Mesh mesh;
   auto add = [&](const Eigen::Vector2d& p) {
@@ -85,18 +105,20 @@ Mesh disc_mesh(const DiscOptions& o) {
       for (int i = 0; i < n; ++i) mesh.quads.push_back({cid(i, j), cid(i + 1, j), cid(i + 1, j + 1), cid(i, j + 1)});
     }
     // Ring: inner polyline A -> M -> B (2n segments), outer arc; layers s in [0, 1].
-    std::vector<Eigen::Vector2d> inner(2 * n + 1), outer(2 * n + 1);
-    for (int k = 0; k <= 2 * n; ++k) {
-      inner[k] = k <= n ? edge(A, M, static_cast<double>(k) / n) : edge(M, B, static_cast<double>(k - n) / n);
-      const double th = t0 + beta * k / (2 * n);
-      outer[k] = o.radius * Eigen::Vector2d(std::cos(th), std::sin(th));
-    }
-    std::vector<int> ring((m + 1) * (2 * n + 1));
-    for (int j = 0; j <= m; ++j) {
-      for (int k = 0; k <= 2 * n; ++k) ring[j * (2 * n + 1) + k] = add(inner[k] + layers[j] * (outer[k] - inner[k]));
+    std::vector<Eigen::Vector2d> inner(2 * n + 1);
+    for (int k = 0; k <= 2 * n; ++k) inner[k] = k <= n ? edge(A, M, static_cast<double>(k) / n) : edge(M, B, static_cast<double>(k - n) / n);
+    std::vector<int> ring((layers_total + 1) * (2 * n + 1));
+    for (int j = 0; j <= layers_total; ++j) {
+      for (int k = 0; k <= 2 * n; ++k) {
+        const double th = t0 + beta * k / (2 * n);
+        const Eigen::Vector2d dir(std::cos(th), std::sin(th));
+        const Eigen::Vector2d p = j <= mt ? Eigen::Vector2d(inner[k] + transition[static_cast<std::size_t>(j)] * (r_inner * dir - inner[k]))
+                                          : Eigen::Vector2d(radii[static_cast<std::size_t>(j - mt - 1)] * dir);
+        ring[j * (2 * n + 1) + k] = add(p);
+      }
     }
     auto rid = [&](int k, int j) { return ring[j * (2 * n + 1) + k]; };
-    for (int j = 0; j < m; ++j) {
+    for (int j = 0; j < layers_total; ++j) {
       for (int k = 0; k < 2 * n; ++k) mesh.quads.push_back({rid(k, j), rid(k, j + 1), rid(k + 1, j + 1), rid(k + 1, j)});
     }
   }

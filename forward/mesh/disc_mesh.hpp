@@ -6,6 +6,13 @@
 // outer sides to the rim, so no element is degenerate at the axis. The ring's radial spacing
 // is uniform, geometric (radial_grading), or denser in a band (band_factor times as many
 // elements per mm between band_inner and band_outer; the band replaces the grading).
+//
+// Circular rings (the vwall meshes of thesis Table 8.1: regular between r = 33 and 64 mm, denser
+// between 45 and 55 mm, one ring of elements between 64 and 65.5 mm): with ring_start > 0 the
+// ring is split into a transition from the kite's sides to the circle r = ring_start
+// (transition_elements layers) and a circular part from ring_start to the rim whose node
+// layers are circles, spaced as above (grading or band) on their true radii; rim_ring_width > 0
+// makes the last of them one ring of elements of that radial width at the rim.
 #include "forward/mesh/mesh.hpp"
 
 namespace spifit::mesh {
@@ -19,6 +26,11 @@ struct DiscOptions {
   double radial_grading = 1.0;        // outer / inner ring element size (geometric)
   double band_inner = 0.0, band_outer = 0.0;  // mm; band_outer > band_inner activates the band
   double band_factor = 1.0;           // element density multiplier in the band
+  double max_sector_deg = 90.0;       // largest O-grid sub-sector (45 or 90); 45 keeps the core
+                                      // density of a 90 or 360 deg mesh equal to that of a 45 deg pie
+  double ring_start = 0.0;            // mm; > 0: circular layers from here to the rim
+  int transition_elements = 0;        // layers from the kite to ring_start; 0: about square
+  double rim_ring_width = 0.0;        // mm; > 0: the outermost ring has this radial width
 };
 
 // Node sets: "axis" (the centre node), "rim" (r = radius), "edge_theta0" and "edge_theta1" (the

@@ -116,7 +116,8 @@ void read_sheet_table(const TomlTable& root, ConeScene& s) {
   const auto sh = root.table("sheet");
   if (sh) {
     sh->allow_only({"thickness", "clamp_radius", "clamp_rotations", "elements_per_45deg", "core_radius", "radial_elements",
-                    "radial_grading", "band_inner", "band_outer", "band_factor", "thickness_points"});
+                    "radial_grading", "band_inner", "band_outer", "band_factor", "max_sector_deg", "ring_start",
+                    "transition_elements", "rim_ring_width", "thickness_points"});
     positive(*sh, "thickness", &s.thickness);
     positive(*sh, "clamp_radius", &s.clamp_radius);
     if (sh->has("clamp_radius") && !(s.clamp_radius > top))
@@ -135,6 +136,14 @@ void read_sheet_table(const TomlTable& root, ConeScene& s) {
     m.band_outer = sh->number("band_outer", m.band_outer);
     if (!(m.band_inner >= 0.0)) sh->fail("band_inner", "must be >= 0");
     if (!(m.band_outer >= 0.0)) sh->fail("band_outer", "must be >= 0 (band_outer > band_inner activates the band)");
+    m.max_sector_deg = sh->number("max_sector_deg", m.max_sector_deg);
+    if (!(m.max_sector_deg == 45.0 || m.max_sector_deg == 90.0)) sh->fail("max_sector_deg", "must be 45 or 90 (largest O-grid sub-sector)");
+    m.ring_start = sh->number("ring_start", m.ring_start);
+    if (!(m.ring_start >= 0.0 && m.ring_start < s.clamp_radius)) sh->fail("ring_start", "must lie in [0, clamp_radius) (0: no circular layers)");
+    m.transition_elements = sh->integer("transition_elements", m.transition_elements);
+    if (m.transition_elements < 0 || m.transition_elements > 100000) sh->fail("transition_elements", "must be >= 0 (0: automatic)");
+    m.rim_ring_width = sh->number("rim_ring_width", m.rim_ring_width);
+    if (!(m.rim_ring_width >= 0.0)) sh->fail("rim_ring_width", "must be >= 0 (0: none)");
     s.thickness_points = sh->integer("thickness_points", s.thickness_points);
     if (s.thickness_points < 1 || s.thickness_points > 11) sh->fail("thickness_points", "unsupported number of thickness points (1 to 11)");
   }

@@ -6,7 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 using namespace spifit::mesh;
@@ -144,4 +146,80 @@ TEST(Mesh, CheckFindsBadElements) {
   m = square_sheet({1.0, 1.0, 1, 1, false, 1.0, 1.0});
   m.quads[0][2] = m.quads[0][1];  // repeated node
   EXPECT_NE(check_mesh(m).find("degenerate"), std::string::npos);
+}
+
+// The vwall meshes of thesis Table 8.1 (§8.1): 48 elements per 45 deg beyond r = 33 mm, circular
+// node layers regular between 33 and 64 mm and twice as dense between 45 and 55 mm, one ring of
+// elements between 64 and 65.5 mm (the backing-plate hole, footnote 2 of §8.1).
+DiscOptions vwall_like(double angle) {
+  DiscOptions o;
+  o.radius = 65.5;
+  o.angle_deg = angle;
+  o.elements_per_45deg = 48;
+  o.max_sector_deg = 45.0;
+  o.core_radius = 25.0;
+  o.ring_start = 33.0;
+  o.radial_elements = 27;
+  o.band_inner = 45.0;
+  o.band_outer = 55.0;
+  o.band_factor = 2.0;
+  o.rim_ring_width = 1.5;
+  return o;
+}
+
+TEST(Disc, CircularRingsWithBandAndRimRing) {
+  const Mesh m = disc_mesh(vwall_like(45.0));
+  EXPECT_EQ(check_mesh(m), "");
+  // Radii of the nodes on the pie edge theta = 0 beyond ring_start: the circular layers.
+  std::vector<double> r;
+  for (int i : m.node_sets.at("edge_theta0"))
+    if (m.nodes[i].x() >= 33.0 - 1e-9) r.push_back(m.nodes[i].x());
+  std::sort(r.begin(), r.end());
+  ASSERT_EQ(r.size(), 27u + 2u);  // 27 spaced elements + the rim ring: 29 layers
+  EXPECT_NEAR(r.front(), 33.0, 1e-9);
+  EXPECT_NEAR(r[r.size() - 2], 64.0, 1e-9);
+  EXPECT_NEAR(r.back(), 65.5, 1e-9);
+  // Every node at a layer radius lies on that circle (layers are circles, not blends).
+  for (const auto& p : m.nodes) {
+    const double rho = p.head<2>().norm();
+    if (rho < 33.0 - 1e-9) continue;
+    const double nearest = *std::min_element(r.begin(), r.end(), [&](double a, double b) { return std::abs(a - rho) < std::abs(b - rho); });
+    EXPECT_NEAR(rho, nearest, 1e-9);
+  }
+  // Spacing: uniform outside the band, half of it inside (band factor 2): 21 mm outside and
+  // 10 mm x 2 inside over 27 elements gives 41/27 = 1.5185 mm and 0.7593 mm.
+  const double h = 41.0 / 27.0;
+  EXPECT_NEAR(r[1] - r[0], h, 1e-6);
+  EXPECT_NEAR(r[26] - r[25], h, 1e-6);
+  int in_band = 0;
+  for (std::size_t i = 1; i + 1 < r.size(); ++i)
+    if (r[i - 1] >= 45.0 + 1e-6 && r[i] <= 55.0 - 1e-6) {
+      EXPECT_NEAR(r[i] - r[i - 1], 0.5 * h, 1e-3);
+      ++in_band;
+    }
+  EXPECT_GE(in_band, 11);
+  // 48 elements per 45 deg in the circumferential direction beyond r = 33 mm.
+  const int rim_elements = static_cast<int>(m.node_sets.at("rim").size()) - 1;
+  EXPECT_EQ(rim_elements, 48);
+}
+
+// With 45-degree sub-sectors a 90-degree pie and a full disc are 2 and 8 copies of the 45-degree
+// pie (same element sizes everywhere), as the thesis's meshes nearly are (Table 8.1: 2320, 4506,
+// 17376 elements; 2244, 4450, 17571 nodes).
+TEST(Disc, FortyFiveDegreeSubSectorsScaleWithTheAngle) {
+  const Mesh m45 = disc_mesh(vwall_like(45.0)), m90 = disc_mesh(vwall_like(90.0)), m360 = disc_mesh(vwall_like(360.0));
+  for (const Mesh* m : {&m45, &m90, &m360}) EXPECT_EQ(check_mesh(*m), "");
+  EXPECT_EQ(m90.num_elements(), 2 * m45.num_elements());
+  EXPECT_EQ(m360.num_elements(), 8 * m45.num_elements());
+  const int shared_edge = static_cast<int>(m45.node_sets.at("edge_theta0").size());
+  EXPECT_EQ(static_cast<int>(m90.nodes.size()), 2 * static_cast<int>(m45.nodes.size()) - shared_edge);
+  EXPECT_EQ(static_cast<int>(m360.nodes.size()), 8 * (static_cast<int>(m45.nodes.size()) - shared_edge) + 1);
+  std::printf("vwall-like meshes: 45 deg %d elements %zu nodes; 90 deg %d / %zu; 360 deg %d / %zu\n", m45.num_elements(), m45.nodes.size(),
+              m90.num_elements(), m90.nodes.size(), m360.num_elements(), m360.nodes.size());
+  EXPECT_THROW(disc_mesh([] {
+                 auto o = vwall_like(45.0);
+                 o.ring_start = 20.0;  // inside the kite
+                 return o;
+               }()),
+               std::invalid_argument);
 }
