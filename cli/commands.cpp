@@ -98,14 +98,17 @@ void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code)
 }
 
 void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
-  struct Opts { std::string scene, out; bool force = false; };
+  struct Opts { std::string scene, out; bool force = false, resume = false; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json (+ DIR/curve.csv for material points; increments.csv and vtu/ for shell benchmarks; force.csv and vtu/ for forming and cone scenes)");
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
-  cmd->add_flag("--force", o->force, "replace an existing output directory");
+  auto* force = cmd->add_flag("--force", o->force, "replace an existing output directory");
+  cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (cone scenes)")->excludes(force);
   cmd->callback([o, &g, &exit_code] {
     const std::string kind = scene::scene_kind(o->scene);
+    if (o->resume && !scene::is_cone_kind(kind))
+      throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + kind + " (only cone scenes write checkpoints)");
     if (scene::is_forming_kind(kind)) {
       const auto fs = scene::read_forming_scene(o->scene);  // input errors before touching --out
       std::vector<std::string> inputs{fs.file, fs.card.file};
@@ -131,8 +134,11 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     }
     if (scene::is_cone_kind(kind)) {
       const auto cs = scene::read_cone_scene(o->scene);  // input errors before touching --out
-      const auto dir = io::OutputDirectory::prepare(o->out, o->force, {cs.file, cs.card.file});
-      const auto rep = scene::run_cone_scene(cs, dir, g.verbose);
+      const auto dir = o->resume ? io::OutputDirectory::existing(o->out) : io::OutputDirectory::prepare(o->out, o->force, {cs.file, cs.card.file});
+      scene::ConeRunOptions ro;
+      ro.progress = g.verbose;
+      ro.resume = o->resume;  // the checkpoint is checked before any output is rewritten
+      const auto rep = scene::run_cone_scene(cs, dir, ro);
       const auto& s = rep.summary;
       if (!rep.ok) {
         std::cerr << "spifit: " << cs.name << " failed: " << s.value("message", std::string("?")) << "\n";

@@ -2,6 +2,7 @@
 
 #include "forward/element/log_strain.hpp"
 #include "forward/element/quad_shape.hpp"
+#include "forward/io/binary_archive.hpp"
 
 #include <ceres/jet.h>
 
@@ -222,6 +223,31 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
 
 void ShellContact::commit() { committed_ = trial_; }
 void ShellContact::revert() { trial_ = committed_; }
+
+void ShellContact::save_state(io::BinaryWriter& w) const {
+  w.i64(tools_);
+  w.i64(static_cast<std::int64_t>(areas_.size()));
+  for (const PointState& p : committed_) {
+    w.vec3(p.traction);
+    w.vec3(p.force);
+    w.f64(p.pressure);
+    w.f64(p.penetration);
+    w.boolean(p.active);
+  }
+}
+
+void ShellContact::load_state(io::BinaryReader& r) {
+  r.expect_count("contact tools", tools_);
+  r.expect_count("contact points per tool", static_cast<std::int64_t>(areas_.size()));
+  for (PointState& p : committed_) {
+    p.traction = r.vec3();
+    p.force = r.vec3();
+    p.pressure = r.f64();
+    p.penetration = r.f64();
+    p.active = r.boolean();
+  }
+  trial_ = committed_;
+}
 
 ContactSummary ShellContact::committed_summary(int tool_index) const {
   if (tool_index < 0 || tool_index >= tools_) throw std::out_of_range("contact: no tool " + std::to_string(tool_index));

@@ -64,6 +64,10 @@ class ShellContact {
                ContactSummary* summary, int tool_index = 0);
   void commit();
   void revert();
+  // Committed contact point states of every tool (checkpoints, bit-exact); load_state resets
+  // the trial states to them. io::ArchiveError when the counts differ from this contact's.
+  void save_state(io::BinaryWriter& w) const;
+  void load_state(io::BinaryReader& r);
   int tools() const { return tools_; }
   // Position of contact point p of an element (natural-coordinate shape values N) on the
   // tool-side surface of the given options: exposed for tests.

@@ -106,6 +106,14 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
 
 double ShellQ4::reference_area() const { return area_; }
 
+void ShellQ4::save_state(io::BinaryWriter& w) const {
+  for (const auto& sec : sections_) sec.save_state(w);
+}
+
+void ShellQ4::load_state(io::BinaryReader& r) {
+  for (auto& sec : sections_) sec.load_state(r);
+}
+
 ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent) {
   ElementStatus status;
   Vec24 rp = Vec24::Zero();  // derivative with respect to p = (x_I, d_I) per node

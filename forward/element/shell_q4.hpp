@@ -71,6 +71,9 @@ class ShellQ4 {
   ElementStatus compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent);
   void commit();
   void revert();
+  // Committed state of the four sections (checkpoints; ShellSection::save_state).
+  void save_state(io::BinaryWriter& w) const;
+  void load_state(io::BinaryReader& r);
 
   double reference_area() const;
   const ShellSection& section(int point) const { return sections_[static_cast<std::size_t>(point)]; }

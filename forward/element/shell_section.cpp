@@ -1,6 +1,7 @@
 #include "forward/element/shell_section.hpp"
 
 #include "forward/element/log_strain.hpp"
+#include "forward/io/binary_archive.hpp"
 
 #include <cmath>
 
@@ -103,6 +104,44 @@ void ShellSection::revert() {
     tangent_trial_[l] = tangent_[l];
   }
   e_trial_ = e_committed_;
+}
+
+void ShellSection::save_state(io::BinaryWriter& w) const {
+  w.f64(h_);
+  w.vec3(e_committed_);
+  w.i64(static_cast<std::int64_t>(points_.size()));
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    const auto& s = points_[l].committed();
+    w.vec3(s.stress);
+    w.vec3(s.plastic_strain);
+    w.vec3(s.back_stress);
+    w.f64(s.back_stress_zz);
+    w.f64(s.eqps);
+    w.f64(s.plastic_work);
+    w.vec3(eps_[l]);
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) w.f64(tangent_[l](i, j));
+  }
+}
+
+void ShellSection::load_state(io::BinaryReader& r) {
+  h_ = r.f64();
+  e_committed_ = e_trial_ = r.vec3();
+  r.expect_count("layers", static_cast<std::int64_t>(points_.size()));
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    material::MaterialState<double, 3> s;
+    s.stress = r.vec3();
+    s.plastic_strain = r.vec3();
+    s.back_stress = r.vec3();
+    s.back_stress_zz = r.f64();
+    s.eqps = r.f64();
+    s.plastic_work = r.f64();
+    points_[l].set_committed(s);
+    eps_[l] = eps_trial_[l] = r.vec3();
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) tangent_[l](i, j) = r.f64();
+    tangent_trial_[l] = tangent_[l];
+  }
 }
 
 }  // namespace spifit::element

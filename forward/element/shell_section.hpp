@@ -21,6 +21,11 @@
 #include <string>
 #include <vector>
 
+namespace spifit::io {
+class BinaryWriter;
+class BinaryReader;
+}  // namespace spifit::io
+
 namespace spifit::element {
 
 using Vec3 = Eigen::Vector3d;
@@ -44,6 +49,11 @@ class ShellSection {
   SectionStatus update(const Vec3& e, const Vec3& kappa, Vec6* resultant, Mat6* tangent);
   void commit();
   void revert();
+  // Committed state for checkpoints (forward/io/binary_archive.hpp), bit-exact: thickness,
+  // membrane strain, and per layer the material state, log strain and consistent tangent.
+  // load_state resets the trial state to it; io::ArchiveError on a layer-count mismatch.
+  void save_state(io::BinaryWriter& w) const;
+  void load_state(io::BinaryReader& r);
 
   double reference_thickness() const { return h0_; }
   double thickness() const { return h_; }  // committed, constant-volume

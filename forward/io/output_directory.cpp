@@ -48,6 +48,12 @@ OutputDirectory OutputDirectory::prepare(const std::string& path, bool force, co
   return OutputDirectory(p);
 }
 
+OutputDirectory OutputDirectory::existing(const std::string& path) {
+  std::error_code ec;
+  if (!fs::is_directory(path, ec)) throw InputError("", "--out", path, "no output directory to resume (--resume continues an earlier run's directory)");
+  return OutputDirectory(fs::path(path));
+}
+
 void OutputDirectory::write_file(const std::string& name, const std::string& contents) const {
   write_file_atomic(path_ / name, contents);
 }

@@ -14,6 +14,9 @@ class OutputDirectory {
   // Throws InputError (key "--out") when the directory exists and force is false.
   // inputs: files this run reads (scene, card), which must not lie inside the directory.
   static OutputDirectory prepare(const std::string& path, bool force, const std::vector<std::string>& inputs = {});
+  // An existing output directory whose run is to be continued (--resume); nothing is cleared.
+  // Throws InputError (key "--out") when it does not exist or is not a directory.
+  static OutputDirectory existing(const std::string& path);
 
   const std::filesystem::path& path() const { return path_; }
   void write_file(const std::string& name, const std::string& contents) const;

@@ -63,6 +63,15 @@ void PvdCollection::write_step(double time, const mesh::Mesh& m, const VtuFrame&
   const std::string file = stem_ + name;
   write_file_atomic(dir_ / file, vtu_text(m, frame));
   entries_.emplace_back(time, file);
+  write_collection();
+}
+
+void PvdCollection::restore(std::vector<std::pair<double, std::string>> entries) {
+  entries_ = std::move(entries);
+  write_collection();
+}
+
+void PvdCollection::write_collection() const {
   std::ostringstream os;
   os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n  <Collection>\n";
   char t[32];

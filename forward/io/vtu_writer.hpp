@@ -31,11 +31,17 @@ class PvdCollection {
   PvdCollection(std::filesystem::path dir, std::string stem);
   void write_step(double time, const mesh::Mesh& m, const VtuFrame& frame);
   int steps() const { return static_cast<int>(entries_.size()); }
+  // Steps written so far (time, file name in DIR); restore() continues a collection from them
+  // (a resumed run): the .pvd is rewritten to list exactly them, the next step gets the next
+  // number.
+  const std::vector<std::pair<double, std::string>>& entries() const { return entries_; }
+  void restore(std::vector<std::pair<double, std::string>> entries);
 
  private:
   std::filesystem::path dir_;
   std::string stem_;
   std::vector<std::pair<double, std::string>> entries_;
+  void write_collection() const;
 };
 
 }  // namespace spifit::io

@@ -1,6 +1,7 @@
 #include "forward/model/shell_model.hpp"
 
 #include "forward/element/director.hpp"
+#include "forward/io/binary_archive.hpp"
 
 #include <Eigen/Geometry>
 
@@ -296,6 +297,51 @@ void ShellModel::revert() {
 }
 
 Eigen::VectorXd ShellModel::increment_from_committed() const { return increment_; }
+
+void ShellModel::save_state(io::BinaryWriter& w) const {
+  w.section("shell_model");
+  w.i64(num_nodes());
+  w.i64(num_elements());
+  w.f64(lambda_);
+  w.vec3s(x_);
+  w.vec3s(d_);
+  w.section("elements");
+  for (const auto& el : elements_) el.save_state(w);
+  w.section("tools");
+  w.i64(static_cast<std::int64_t>(tools_.size()));
+  w.boolean(contact_ != nullptr);
+  for (const auto& t : tools_) {
+    w.f64(t.radius);
+    w.vec3(t.centre);
+    w.vec3(t.centre_committed);
+    w.vec3(t.spin);
+  }
+  if (contact_) contact_->save_state(w);
+}
+
+void ShellModel::load_state(io::BinaryReader& r) {
+  r.section("shell_model");
+  r.expect_count("nodes", num_nodes());
+  r.expect_count("elements", num_elements());
+  lambda_ = r.f64();
+  x_ = r.vec3s();
+  d_ = r.vec3s();
+  if (x_.size() != static_cast<std::size_t>(num_nodes()) || d_.size() != x_.size())
+    throw io::ArchiveError("nodal positions or directors of another model size");
+  r.section("elements");
+  for (auto& el : elements_) el.load_state(r);
+  r.section("tools");
+  r.expect_count("tools (the real one and its copies)", static_cast<std::int64_t>(tools_.size()));
+  if (r.boolean() != (contact_ != nullptr)) throw io::ArchiveError("contact present in the state but not in the model, or the reverse");
+  for (auto& t : tools_) {
+    t.radius = r.f64();
+    t.centre = r.vec3();
+    t.centre_committed = r.vec3();
+    t.spin = r.vec3();
+  }
+  if (contact_) contact_->load_state(r);
+  revert();  // iterate and trial = committed
+}
 
 std::vector<double> ShellModel::nodal_thickness() const {
   std::vector<double> h(x_.size(), 0.0), w(x_.size(), 0.0);

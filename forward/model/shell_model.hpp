@@ -82,6 +82,14 @@ class ShellModel final : public solver::NonlinearProblem {
   void revert() override;
   Eigen::VectorXd increment_from_committed() const override;
 
+  // Committed state for checkpoints (forward/io/binary_archive.hpp), bit-exact: load factor,
+  // nodal positions and directors, every element's sections, the real tool and its copies,
+  // and the contact point states of each. load_state needs a model built the same way (mesh,
+  // thickness points, set_tool and set_tool_copies called); the iterate and trial
+  // configurations are reset to the committed one. io::ArchiveError on any size mismatch.
+  void save_state(io::BinaryWriter& w) const;
+  void load_state(io::BinaryReader& r);
+
   // Committed results.
   Eigen::Vector3d displacement(int node) const { return x_[static_cast<std::size_t>(node)] - mesh_->nodes[static_cast<std::size_t>(node)]; }
   const Eigen::Vector3d& position(int node) const { return x_[static_cast<std::size_t>(node)]; }

@@ -165,15 +165,30 @@ void read_tool_and_contact(const TomlTable& root, ConeScene& s) {
   }
 }
 
+// [output] history_element = { r = ..., theta = ... }: a point of the initial sheet (needs the
+// clamp radius and pie angle, read before).
+void read_history_element(const TomlTable& h, ConeScene& s) {
+  h.allow_only({"r", "theta"});
+  ConeScene::HistoryPoint p;
+  p.r = h.number("r");
+  p.theta_deg = h.number("theta");
+  if (!(p.r >= 0.0 && p.r <= s.clamp_radius)) h.fail("r", "must lie in [0, clamp_radius = " + io::format_number(s.clamp_radius) + "] mm");
+  if (!(p.theta_deg >= 0.0 && p.theta_deg <= s.pie_angle)) h.fail("theta", "must lie in [0, pie_angle = " + io::format_number(s.pie_angle) + "] deg");
+  s.history_element = p;
+}
+
 void read_solver_and_output(const TomlTable& root, ConeScene& s) {
   if (const auto so = root.table("solver")) {
     read_solver_table(*so, {s.travel_per_increment, s.max_iterations, s.linear_solver, s.extrapolate, s.line_search,
                             s.force_tolerance, s.displacement_tolerance});
   }
   if (const auto o = root.table("output")) {
-    o->allow_only({"vtu_every"});
+    o->allow_only({"vtu_every", "checkpoint_every", "history_element"});
     s.vtu_every = o->integer("vtu_every", 0);
     if (s.vtu_every < 0) o->fail("vtu_every", "must be >= 0");
+    s.checkpoint_every = o->integer("checkpoint_every", s.checkpoint_every);
+    if (s.checkpoint_every < 0) o->fail("checkpoint_every", "must be >= 0 (completed contours between checkpoints; 0: none)");
+    if (const auto h = o->table("history_element")) read_history_element(*h, s);
   }
 }
 

@@ -50,6 +50,13 @@ struct ConeScene {
   std::optional<solver::LinearSolverKind> linear_solver;
   // Output.
   int vtu_every = 0;
+  int checkpoint_every = 1;  // completed contours between checkpoints (DIR/checkpoint/state.bin); 0: none
+  // [output] history_element = { r = 75.55, theta = 22.5 }: the element of the initial mesh whose
+  // centroid is nearest to this point writes DIR/history.csv (element_history.hpp; thesis §9.4).
+  struct HistoryPoint {
+    double r = 0.0, theta_deg = 0.0;
+  };
+  std::optional<HistoryPoint> history_element;
 };
 
 bool is_cone_kind(const std::string& kind);
@@ -64,11 +71,25 @@ mesh::Mesh cone_scene_mesh(const ConeScene& scene);
 
 struct ConeReport {
   bool ok = true;
+  bool stopped = false;  // by ConeRunOptions::stop_after_* (status "stopped")
   nlohmann::json summary;
 };
 
-// Writes DIR/summary.json, DIR/force.csv and DIR/vtu/. Numerical failure: status "failed" with
-// where and why; partial outputs kept. progress: one line per completed contour on stderr.
+struct ConeRunOptions {
+  bool progress = false;  // one line per completed contour (and checkpoint) on stderr
+  // Continue from DIR/checkpoint/state.bin (docs/cone-scene.md, "Checkpoints and resume"):
+  // the outputs written after the checkpoint are replaced; io::InputError naming the file when
+  // there is none, or it is of another version, scene or card, or damaged.
+  bool resume = false;
+  // Tests: stop (as a kill would, status "stopped") once this many contours are complete
+  // (after their checkpoint), or after this many increments in all (0: run to the end).
+  int stop_after_contours = 0;
+  int stop_after_increments = 0;
+};
+
+// Writes DIR/summary.json, DIR/force.csv, DIR/contours.csv, DIR/sections/, DIR/vtu/ and the
+// checkpoints. Numerical failure: status "failed" with where and why; partial outputs kept.
+ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out, const ConeRunOptions& options);
 ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out, bool progress = false);
 
 }  // namespace spifit::scene

@@ -4,6 +4,8 @@
 #include "forward/io/vtu_writer.hpp"
 #include "forward/model/cyclic_symmetry.hpp"
 #include "forward/model/shell_model.hpp"
+#include "forward/scenes/cone_checkpoint.hpp"
+#include "forward/scenes/cone_observable_log.hpp"
 #include "forward/scenes/cone_scene.hpp"
 #include "forward/scenes/scene_tables.hpp"
 
@@ -112,9 +114,11 @@ class ForceLog {
     const Eigen::Vector3d fp = polar_components(f, centre);
     const toolpath::ConeSegment& seg = track_.segment_at(s);
     const double theta = std::atan2(centre.y(), centre.x()) * 180.0 / std::numbers::pi;
-    csv_.add_row({time, centre.x(), centre.y(), centre.z(), theta, f.x(), f.y(), f.z(), fp.x(), fp.y(), static_cast<double>(seg.stage),
-                  static_cast<double>(seg.contour), static_cast<double>(static_cast<int>(seg.move)), penetration,
-                  static_cast<double>(iterations)});
+    std::vector<double> row{time, centre.x(), centre.y(), centre.z(), theta, f.x(), f.y(), f.z(), fp.x(), fp.y(), static_cast<double>(seg.stage),
+                            static_cast<double>(seg.contour), static_cast<double>(static_cast<int>(seg.move)), penetration,
+                            static_cast<double>(iterations)};
+    csv_.add_row(row);
+    rows_.push_back(std::move(row));
     samples_.push_back({s, f, fp});
     for (int i = 0; i < 3; ++i) {
       if (std::abs(f(i)) > std::abs(peak_(i))) peak_(i) = f(i);
@@ -137,6 +141,20 @@ class ForceLog {
                                         means.str());
   }
   ContourMean contour_mean(int k) const { return contour_means(track_, samples_, k + 1).back(); }
+  // Checkpoints: the rows, samples and peaks so far; restore() continues an empty log from them.
+  void save(ConeRunLog* log) const {
+    log->force_rows = rows_;
+    log->samples = samples_;
+    log->peak = peak_;
+    log->peak_polar = peak_polar_;
+  }
+  void restore(const ConeRunLog& log) {
+    for (const auto& row : log.force_rows) csv_.add_row(row);
+    rows_ = log.force_rows;
+    samples_ = log.samples;
+    peak_ = log.peak;
+    peak_polar_ = log.peak_polar;
+  }
   const Eigen::Vector3d& peak() const { return peak_; }
   const Eigen::Vector3d& peak_polar() const { return peak_polar_; }
 
@@ -145,28 +163,11 @@ class ForceLog {
   const ConeTrack& track_;
   const io::OutputDirectory& out_;
   io::CsvTable csv_;
+  std::vector<std::vector<double>> rows_;  // csv_'s rows as numbers (checkpoints)
   std::vector<ForceSample> samples_;
   Eigen::Vector3d peak_ = Eigen::Vector3d::Zero(), peak_polar_ = Eigen::Vector3d::Zero();
   Clock::time_point last_{};
 };
-
-// Mid-surface shape and thickness along the radial section line (SPEC §4), in the current state.
-void write_section(const io::OutputDirectory& out, const ConeScene& s, const model::ShellModel& model, const std::vector<int>& line,
-                   const ContourSpan& span) {
-  const std::vector<double> h = model.nodal_thickness();
-  io::CsvTable sec({"r0 [mm]", "r [mm]", "theta [deg]", "z [mm]", "thickness [mm]"});
-  for (int n : line) {
-    const Eigen::Vector3d& p = model.position(n);
-    sec.add_row({model.mesh().nodes[static_cast<std::size_t>(n)].head<2>().norm(), p.head<2>().norm(),
-                 std::atan2(p.y(), p.x()) * 180.0 / std::numbers::pi, p.z(), h[static_cast<std::size_t>(n)]});
-  }
-  char name[64];
-  std::snprintf(name, sizeof name, "sections/section_s%d_c%03d.csv", span.stage, span.contour);
-  char head[200];
-  std::snprintf(head, sizeof head, "# spifit cone scene %s: mid-surface section at theta0 = %.6g deg after stage %d, contour %d\n",
-                s.name.c_str(), section_angle_deg(s.pie_angle), span.stage, span.contour);
-  out.write_file(name, head + sec.str());
-}
 
 void finish_summary(json& j, const solver::NewtonSummary& r, int increments, const ConeTrack& track, double length,
                     const model::ShellModel& model, const ForceLog& log) {
@@ -193,7 +194,15 @@ void finish_summary(json& j, const solver::NewtonSummary& r, int increments, con
 }  // namespace
 
 ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out, bool progress) {
-  const auto t0 = Clock::now();
+  ConeRunOptions o;
+  o.progress = progress;
+  return run_cone_scene(scene, out, o);
+}
+
+ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out, const ConeRunOptions& options) {
+  auto t0 = Clock::now();
+  const bool progress = options.progress;
+  const ConeInputs inputs = read_cone_inputs(scene);
   const mesh::Mesh mesh = cone_scene_mesh(scene);
   model::ShellModelOptions mo;
   mo.shell.thickness_points = scene.thickness_points;
@@ -206,19 +215,61 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   model.set_tool(scene.tool_radius, [&path, length](double lambda) { return path.at_distance(lambda * length); }, scene.contact, spin);
   model.set_tool_copies(tool_copies(scene));
   const solver::DofConstraints c = cone_constraints(scene, mesh, model.num_dofs());
+  solver::NewtonSolver solver(model, c, tool_newton_options(scene, length));
+
+  // Resume: the checkpoint is read (and refused with an InputError) before any output is touched.
+  ConeRunLog restored;
+  if (options.resume) {
+    solver::NewtonState newton;
+    read_cone_checkpoint(out, inputs, &model, &newton, &restored);
+    solver.set_state(newton);
+    t0 -= std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(restored.wall_seconds));
+  }
 
   json s = summary_head(scene, model, track, scene_warnings(scene, track, model));
+  if (options.resume) s["resumed_at_contour"] = restored.contours_done;
   out.write_file("summary.json", s.dump(2) + "\n");
   std::filesystem::create_directories(out.path() / "vtu");
   io::PvdCollection pvd(out.path() / "vtu", "sheet");
-  pvd.write_step(0.0, mesh, model.vtu_frame());
+  if (options.resume) pvd.restore(restored.vtu_steps);
+  else pvd.write_step(0.0, mesh, model.vtu_frame());
 
   ForceLog log(scene, track, out);
-  const std::vector<int> section = radial_line_nodes(mesh, section_angle_deg(scene.pie_angle));
-  std::filesystem::create_directories(out.path() / "sections");
-  double max_pen = 0.0;
-  int increments = 0, done = 0;
-  std::vector<double> contour_wall;  // wall seconds at the end of each completed contour
+  ConeObservableLog observables(scene, model, track, out);  // sections/, sections.csv, stages.csv, history.csv
+  double max_pen = restored.max_penetration;
+  int increments = restored.increments, done = restored.contours_done;
+  std::vector<double> contour_wall = restored.contour_wall;  // wall seconds at the end of each completed contour
+  if (options.resume) {
+    // The rows a killed run wrote after its checkpoint are dropped here.
+    log.restore(restored);
+    log.write(done, true);
+    observables.restore(restored);
+    observables.write(true);
+  }
+  // Checkpoint at the committed state of a completed contour; the solver has chosen its next
+  // increment already (NewtonSolver's callback), so its state is where the run goes on.
+  int checkpoint_contours = done, checkpoints = 0;
+  double checkpoint_seconds = 0.0;
+  std::size_t checkpoint_bytes = 0;
+  auto write_checkpoint = [&]() {
+    const auto c0 = Clock::now();
+    ConeRunLog cl;
+    log.save(&cl);
+    observables.save(&cl);
+    cl.increments = increments;
+    cl.contours_done = done;
+    cl.max_penetration = max_pen;
+    cl.contour_wall = contour_wall;
+    cl.wall_seconds = std::chrono::duration<double>(c0 - t0).count();
+    cl.vtu_steps = pvd.entries();
+    checkpoint_bytes = write_cone_checkpoint(out, inputs, model, solver.state(), cl);
+    const double dt = std::chrono::duration<double>(Clock::now() - c0).count();
+    checkpoint_seconds += dt;
+    ++checkpoints;
+    checkpoint_contours = done;
+    if (progress) std::fprintf(stderr, "  checkpoint after contour %d: %zu bytes in %.3f s\n", done, checkpoint_bytes, dt);
+  };
+  bool stopped = false;
   auto on_increment = [&](const solver::IncrementReport& ir) {
     ++increments;
     const double travel = ir.lambda * length, time = ir.lambda * duration;
@@ -232,25 +283,50 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
     for (; done < now_done; ++done) {
       contour_wall.push_back(wall);
       const ContourSpan& span = track.contours()[static_cast<std::size_t>(done)];
-      write_section(out, scene, model, section, span);
+      observables.after_contour(span);
       if (progress) {
         const Eigen::Vector3d mean = log.contour_mean(done).polar;
         std::fprintf(stderr, "  contour %d/%zu (stage %d, contour %d) done, wall %.1f s: central-third mean (Fr, Ftheta, Fz) = (%.1f, %.1f, %.1f) N\n",
                      done + 1, track.contours().size(), span.stage, span.contour, wall, mean.x(), mean.y(), mean.z());
       }
     }
+    observables.after_increment(travel, ir.lambda);
+    observables.write(contour_ended);
     log.write(done, contour_ended);
     if (scene.vtu_every > 0 && increments % scene.vtu_every == 0) pvd.write_step(time, mesh, model.vtu_frame());
+    if (scene.checkpoint_every > 0 && done >= checkpoint_contours + scene.checkpoint_every) write_checkpoint();
+    if ((options.stop_after_contours > 0 && done >= options.stop_after_contours) ||
+        (options.stop_after_increments > 0 && increments >= options.stop_after_increments)) {
+      stopped = true;
+      return false;
+    }
     return true;
   };
 
-  solver::NewtonSolver solver(model, c, tool_newton_options(scene, length));
-  const solver::NewtonSummary r = solver.solve(0.0, 1.0, on_increment);
+  const solver::NewtonSummary r = options.resume ? solver.resume(1.0, on_increment) : solver.solve(0.0, 1.0, on_increment);
+  if (stopped) {
+    // As a kill may leave it: force.csv, contours.csv and the observables' files hold every
+    // increment so far (rows after the last checkpoint included), no final VTU step.
+    log.write(done, true);
+    observables.write(true);
+    s["status"] = "stopped";
+    s["message"] = "stopped after " + std::to_string(increments) + " increments, " + std::to_string(done) + " contours (test option)";
+    out.write_file("summary.json", s.dump(2) + "\n");
+    ConeReport rep;
+    rep.ok = false;
+    rep.stopped = true;
+    rep.summary = s;
+    return rep;
+  }
   if (increments > 0 && (scene.vtu_every == 0 || increments % scene.vtu_every != 0)) pvd.write_step(r.lambda * duration, mesh, model.vtu_frame());
   log.write(done, true);
+  observables.write(true);
   finish_summary(s, r, increments, track, length, model, log);
+  s["observables"] = observables.summary();
   s["max_penetration"] = max_pen;
   s["contour_wall_seconds"] = contour_wall;
+  s["checkpoints"] = {{"file", "checkpoint/state.bin"}, {"every_contours", scene.checkpoint_every}, {"written", checkpoints},
+                      {"bytes", checkpoint_bytes}, {"write_seconds", checkpoint_seconds}};
   s["wall_seconds"] = std::chrono::duration<double>(Clock::now() - t0).count();
   ConeReport rep;
   rep.ok = set_run_status(s, r.converged, r.lambda * length, r.message);

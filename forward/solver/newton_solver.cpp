@@ -246,60 +246,115 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
 NewtonSummary NewtonSolver::solve(double lambda_end, const IncrementCallback& callback) { return solve(0.0, lambda_end, callback); }
 
 NewtonSummary NewtonSolver::solve(double lambda_start, double lambda_end, const IncrementCallback& callback) {
+  lambda_ = lambda_start;
+  dl_ = options_.linear ? lambda_end - lambda_start : options_.initial_increment;
+  ceiling_ = options_.max_increment;
+  increments_ = iterations_ = cutbacks_ = 0;
+  return run(lambda_end, callback);
+}
+
+NewtonState NewtonSolver::state() const {
+  NewtonState s;
+  s.lambda = lambda_;
+  s.increment = dl_;
+  s.ceiling = ceiling_;
+  s.last_increment = last_increment_;
+  s.last_increment_size = last_dl_;
+  s.increments = increments_;
+  s.iterations = iterations_;
+  s.cutbacks = cutbacks_;
+  s.cholmod_factorisations = prior_cholmod_ + (cholmod_ ? cholmod_->numeric_factorisations() : 0);
+  s.umfpack_factorisations = prior_umfpack_ + (umfpack_ ? umfpack_->numeric_factorisations() : 0);
+  s.symbolic_analyses = prior_symbolic_ + (cholmod_ ? cholmod_->symbolic_analyses() : 0) + (umfpack_ ? umfpack_->symbolic_analyses() : 0);
+  s.element_seconds = element_seconds_;
+  s.scatter_seconds = scatter_seconds_;
+  s.linear_seconds = linear_seconds_;
+  return s;
+}
+
+void NewtonSolver::set_state(const NewtonState& s) {
+  if (s.last_increment.size() != 0 && s.last_increment.size() != problem_.num_dofs())
+    throw std::invalid_argument("Newton state: predictor of " + std::to_string(s.last_increment.size()) + " DOFs, the problem has " +
+                                std::to_string(problem_.num_dofs()));
+  lambda_ = s.lambda;
+  dl_ = s.increment;
+  ceiling_ = s.ceiling;
+  last_increment_ = s.last_increment;
+  last_dl_ = s.last_increment_size;
+  increments_ = s.increments;
+  iterations_ = s.iterations;
+  cutbacks_ = s.cutbacks;
+  prior_cholmod_ = s.cholmod_factorisations - (cholmod_ ? cholmod_->numeric_factorisations() : 0);
+  prior_umfpack_ = s.umfpack_factorisations - (umfpack_ ? umfpack_->numeric_factorisations() : 0);
+  prior_symbolic_ = s.symbolic_analyses - (cholmod_ ? cholmod_->symbolic_analyses() : 0) - (umfpack_ ? umfpack_->symbolic_analyses() : 0);
+  element_seconds_ = s.element_seconds;
+  scatter_seconds_ = s.scatter_seconds;
+  linear_seconds_ = s.linear_seconds;
+}
+
+NewtonSummary NewtonSolver::resume(double lambda_end, const IncrementCallback& callback) {
+  if (!(dl_ > 0.0 && ceiling_ > 0.0)) throw std::logic_error("NewtonSolver::resume without a stepping state (solve or set_state first)");
+  return run(lambda_end, callback);
+}
+
+NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& callback) {
   NewtonSummary summary;
-  summary.lambda = lambda_start;
-  double lambda = lambda_start, dl = options_.linear ? lambda_end - lambda_start : options_.initial_increment;
-  double ceiling = options_.max_increment;
-  while (lambda < lambda_end - 1e-12) {
-    double lambda1 = std::min(lambda + dl, lambda_end);
-    if (lambda_end - lambda1 < 1e-3 * dl) lambda1 = lambda_end;
+  while (lambda_ < lambda_end - 1e-12) {
+    const double lambda = lambda_;
+    double lambda1 = std::min(lambda + dl_, lambda_end);
+    if (lambda_end - lambda1 < 1e-3 * dl_) lambda1 = lambda_end;
     IncrementReport report;
-    report.index = summary.increments + 1;
+    report.index = increments_ + 1;
     report.lambda = lambda1;
     report.increment = lambda1 - lambda;
     ElementEvaluation failure;
     const bool ok = increment(lambda, lambda1, &report, &failure);
-    summary.iterations += report.iterations;
+    iterations_ += report.iterations;
     if (ok) {
       if (options_.extrapolate) {
         last_increment_ = problem_.increment_from_committed() - constraints_.prescribed_values(lambda1 - lambda);
         last_dl_ = lambda1 - lambda;
       }
       problem_.commit(lambda1);
-      lambda = lambda1;
-      summary.lambda = lambda;
-      ++summary.increments;
+      lambda_ = lambda1;
+      ++increments_;
+      // Growth stays below a size that failed recently; that ceiling relaxes slowly. Chosen
+      // before the callback, so that state() there is where the run continues from.
+      ceiling_ = std::min(options_.max_increment, ceiling_ * 1.1);
+      if (report.iterations <= options_.easy_iterations) dl_ = std::min(ceiling_, dl_ * options_.growth);
       summary.history.push_back(report);
       if (callback && !callback(report)) {
-        summary.message = "stopped by the caller at load factor " + std::to_string(lambda);
+        summary.message = "stopped by the caller at load factor " + std::to_string(lambda_);
         break;
       }
-      // Growth stays below a size that failed recently; that ceiling relaxes slowly.
-      ceiling = std::min(options_.max_increment, ceiling * 1.1);
-      if (report.iterations <= options_.easy_iterations) dl = std::min(ceiling, dl * options_.growth);
       continue;
     }
-    ceiling = std::max(options_.min_increment, 0.75 * (lambda1 - lambda));
+    ceiling_ = std::max(options_.min_increment, 0.75 * (lambda1 - lambda));
     problem_.revert();
-    ++summary.cutbacks;
+    ++cutbacks_;
     const double s = std::min(options_.cutback, failure.suggested_scale);
-    if (dl <= options_.min_increment * (1.0 + 1e-12)) {
+    if (dl_ <= options_.min_increment * (1.0 + 1e-12)) {
       char buf[200];
-      std::snprintf(buf, sizeof buf, "increment from load factor %.6g failed at the minimum increment %.3g: ", lambda, dl);
+      std::snprintf(buf, sizeof buf, "increment from load factor %.6g failed at the minimum increment %.3g: ", lambda, dl_);
       summary.message = buf + failure.reason + (failure.where.empty() ? "" : " (" + failure.where + ")");
       break;
     }
-    dl = std::max(options_.min_increment, dl * s);
+    dl_ = std::max(options_.min_increment, dl_ * s);
   }
+  const NewtonState st = state();
+  summary.lambda = st.lambda;
+  summary.increments = st.increments;
+  summary.iterations = st.iterations;
+  summary.cutbacks = st.cutbacks;
   summary.converged = summary.lambda >= lambda_end - 1e-12;
   if (summary.converged && summary.message.empty()) summary.message = "converged";
-  summary.cholmod_factorisations = cholmod_ ? cholmod_->numeric_factorisations() : 0;
-  summary.umfpack_factorisations = umfpack_ ? umfpack_->numeric_factorisations() : 0;
+  summary.cholmod_factorisations = st.cholmod_factorisations;
+  summary.umfpack_factorisations = st.umfpack_factorisations;
   summary.factorisations = summary.cholmod_factorisations + summary.umfpack_factorisations;
-  summary.element_seconds = element_seconds_;
-  summary.scatter_seconds = scatter_seconds_;
-  summary.linear_seconds = linear_seconds_;
-  summary.symbolic_analyses = (cholmod_ ? cholmod_->symbolic_analyses() : 0) + (umfpack_ ? umfpack_->symbolic_analyses() : 0);
+  summary.element_seconds = st.element_seconds;
+  summary.scatter_seconds = st.scatter_seconds;
+  summary.linear_seconds = st.linear_seconds;
+  summary.symbolic_analyses = st.symbolic_analyses;
   return summary;
 }
 

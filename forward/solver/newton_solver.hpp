@@ -7,6 +7,7 @@
 // reused).
 #include "forward/solver/dof_constraints.hpp"
 #include "forward/solver/linear_solver.hpp"
+#include "forward/solver/newton_state.hpp"
 #include "forward/solver/nonlinear_problem.hpp"
 
 #include <functional>
@@ -74,11 +75,22 @@ class NewtonSolver {
  public:
   NewtonSolver(NonlinearProblem& problem, const DofConstraints& constraints, NewtonOptions options = {});
   ~NewtonSolver();
-  // Called after every converged increment (outputs, progress). Returning false stops the run.
+  // Called after every converged increment (outputs, progress), once the problem is committed
+  // and the size of the next increment chosen: state() is then a complete restart point
+  // (checkpoints). Returning false stops the run.
   using IncrementCallback = std::function<bool(const IncrementReport&)>;
   NewtonSummary solve(double lambda_end = 1.0, const IncrementCallback& callback = {});
-  // From the committed load factor lambda_start (a previous solve's end) to lambda_end.
+  // From the committed load factor lambda_start (a previous solve's end) to lambda_end; the
+  // increment size, growth ceiling and counters start afresh (the predictor carries over).
   NewtonSummary solve(double lambda_start, double lambda_end, const IncrementCallback& callback);
+  // Continues from the stepping state (set_state, or where the last solve stopped) to
+  // lambda_end. With a problem restored to the state's committed load factor, the increments
+  // that follow are those an uninterrupted run would have taken, and the summary's totals
+  // include the state's. std::logic_error before any solve or set_state.
+  NewtonSummary resume(double lambda_end, const IncrementCallback& callback);
+  NewtonState state() const;
+  // Throws std::invalid_argument when the predictor's size differs from the problem's DOFs.
+  void set_state(const NewtonState& state);
   // One Newton iteration's building blocks, exposed for benchmarks and tests.
   struct Assembly {
     Eigen::VectorXd residual;  // reduced
@@ -101,12 +113,19 @@ class NewtonSolver {
   std::vector<Eigen::MatrixXd> ke_;
   std::vector<ElementEvaluation> ev_;
   double element_seconds_ = 0.0, scatter_seconds_ = 0.0, linear_seconds_ = 0.0;
+  // Stepping state: committed load factor, next increment, growth ceiling, totals.
+  double lambda_ = 0.0, dl_ = 0.0, ceiling_ = 0.0;
+  int increments_ = 0, iterations_ = 0, cutbacks_ = 0;
+  // Factorisations and analyses of earlier solver objects (a restored state's).
+  int prior_cholmod_ = 0, prior_umfpack_ = 0, prior_symbolic_ = 0;
   // Free part of the last converged increment (full DOF vector) and its load-factor size.
   Eigen::VectorXd last_increment_;
   double last_dl_ = 0.0;
   LinearSolver& umfpack();
   LinearSolver& cholmod();
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error);
+  // The increment loop from the stepping state to lambda_end (solve and resume).
+  NewtonSummary run(double lambda_end, const IncrementCallback& callback);
   // Returns false (with a message) when the increment fails.
   bool increment(double lambda0, double lambda1, IncrementReport* report, ElementEvaluation* failure);
 };

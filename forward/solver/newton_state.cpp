@@ -1,0 +1,44 @@
+#include "forward/solver/newton_state.hpp"
+
+#include "forward/io/binary_archive.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace spifit::solver {
+
+void save_newton_state(io::BinaryWriter& w, const NewtonState& s) {
+  w.section("newton_state");
+  w.f64(s.lambda);
+  w.f64(s.increment);
+  w.f64(s.ceiling);
+  w.vector(s.last_increment);
+  w.f64(s.last_increment_size);
+  for (int n : {s.increments, s.iterations, s.cutbacks, s.cholmod_factorisations, s.umfpack_factorisations, s.symbolic_analyses})
+    w.i64(n);
+  w.f64(s.element_seconds);
+  w.f64(s.scatter_seconds);
+  w.f64(s.linear_seconds);
+}
+
+NewtonState load_newton_state(io::BinaryReader& r) {
+  r.section("newton_state");
+  NewtonState s;
+  s.lambda = r.f64();
+  s.increment = r.f64();
+  s.ceiling = r.f64();
+  s.last_increment = r.vector();
+  s.last_increment_size = r.f64();
+  for (int* n : {&s.increments, &s.iterations, &s.cutbacks, &s.cholmod_factorisations, &s.umfpack_factorisations, &s.symbolic_analyses}) {
+    const std::int64_t v = r.i64();
+    if (v < 0 || v > 2'000'000'000) throw io::ArchiveError("invalid Newton counter " + std::to_string(v));
+    *n = static_cast<int>(v);
+  }
+  s.element_seconds = r.f64();
+  s.scatter_seconds = r.f64();
+  s.linear_seconds = r.f64();
+  if (!(std::isfinite(s.lambda) && s.increment > 0.0 && s.ceiling > 0.0)) throw io::ArchiveError("invalid Newton stepping state");
+  return s;
+}
+
+}  // namespace spifit::solver
