@@ -45,7 +45,10 @@ struct ConeScene {
   double travel_per_increment = 1.0;  // mm
   int max_iterations = 25;
   bool extrapolate = true;
-  bool line_search = false;
+  // Energy line search on by default for cones: on cone70_pie45_short it cut the Newton
+  // iterations 1692 -> 1236 and the cut-backs 45 -> 6, forces within 1.3 % on the loaded
+  // contours (docs/cone-scene.md).
+  bool line_search = true;
   double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
   std::optional<solver::LinearSolverKind> linear_solver;
   // Output.
