@@ -1,0 +1,97 @@
+// Wall time of the bundled cone scenes (issue 6 speed goals on 2 cores: cone70 fine mesh,
+// 60 contours < 10 min; vwall on the 45-degree pie, 5 stages < 1 h; thesis: 101 h for vwall).
+// Each benchmark runs the scene file as `spifit run` would (outputs to a temporary directory,
+// removed afterwards) and prints the median wall time, Newton iterations, increments, cut-backs,
+// completed contours, seconds per contour and where the time went (elements, assembly, linear
+// solver). Error against a reference: the steady-state Fz is only defined for the 100-contour
+// cone70 (docs/cone-scene.md), so the line reports the last contour's central-third mean Fz
+// for comparison by eye with the tables there. Only cone70_short (3 contours, about a minute)
+// runs by default: the others take hours and are selected with --benchmark_filter.
+#include "forward/io/output_directory.hpp"
+#include "forward/runtime/omp_wait_policy.hpp"
+#include "forward/scenes/cone_scene.hpp"
+
+#include <benchmark/benchmark.h>
+#include <omp.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace spifit;
+
+namespace {
+
+struct Case {
+  const char* name;
+  const char* file;  // relative to the source tree
+  int repetitions;
+  bool by_default;
+};
+
+const Case kCases[] = {
+    {"cone70_short", "experiments/aa3003o/scenes/cone70_pie45_short.toml", 1, true},
+    {"cone50_pie45_10", "experiments/aa3003o/scenes/cone50_pie45_10.toml", 1, false},
+    {"cone70_fine_60", "experiments/aa3003o/scenes/cone70_pie45_fine.toml", 1, false},
+    {"vwall_pie45", "experiments/aa3003o/scenes/vwall_pie45.toml", 1, false},
+};
+
+void cone_scene(benchmark::State& state, const Case& c) {
+  const scene::ConeScene s = scene::read_cone_scene(std::string(SPIFIT_SOURCE_DIR) + "/" + c.file);
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("spifit_bench_" + std::string(c.name) + "_" + std::to_string(::getpid()));
+  std::vector<double> walls;
+  nlohmann::json last;
+  for (auto _ : state) {
+    const auto out = io::OutputDirectory::prepare(dir.string(), true);
+    const scene::ConeReport r = scene::run_cone_scene(s, out);
+    if (!r.ok) {
+      state.SkipWithError(("run failed: " + r.summary.value("message", std::string("?"))).c_str());
+      break;
+    }
+    walls.push_back(r.summary["wall_seconds"].get<double>());
+    last = r.summary;
+  }
+  std::filesystem::remove_all(dir);
+  if (walls.empty()) return;
+  std::sort(walls.begin(), walls.end());
+  const std::size_t k = walls.size();
+  const double median = k % 2 ? walls[k / 2] : 0.5 * (walls[k / 2 - 1] + walls[k / 2]);
+  const int contours = last["contours_completed"].get<int>();
+  state.counters["median_s"] = median;
+  state.counters["elements"] = last["model"]["elements"].get<double>();
+  state.counters["contours"] = contours;
+  state.counters["s_per_contour"] = median / std::max(contours, 1);
+  state.counters["increments"] = last["increments"].get<double>();
+  state.counters["newton_its"] = last["newton_iterations"].get<double>();
+  state.counters["cutbacks"] = last["cutbacks"].get<double>();
+  state.counters["elements_s"] = last["profile_seconds"]["elements"].get<double>();
+  state.counters["linear_s"] = last["profile_seconds"]["linear_solver"].get<double>();
+  state.counters["threads"] = omp_get_max_threads();
+  std::printf("# %-16s median %.1f s over %zu run(s): %d elements, %d contours (%.1f s each), %d increments, %d Newton iterations, %d cut-backs\n",
+              c.name, median, k, last["model"]["elements"].get<int>(), contours, median / std::max(contours, 1),
+              last["increments"].get<int>(), last["newton_iterations"].get<int>(), last["cutbacks"].get<int>());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  runtime::ensure_passive_omp_wait(argv);  // as spifit itself
+  bool filtered = false;
+  for (int i = 1; i < argc; ++i) filtered = filtered || std::string(argv[i]).rfind("--benchmark_filter", 0) == 0;
+  for (const Case& c : kCases) {
+    if (!c.by_default && !filtered) continue;
+    benchmark::RegisterBenchmark((std::string("cone/") + c.name).c_str(), cone_scene, c)
+        ->Iterations(c.repetitions)
+        ->Unit(benchmark::kSecond)
+        ->UseRealTime();
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
