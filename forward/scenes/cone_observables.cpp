@@ -65,6 +65,23 @@ std::vector<ContourMean> contour_means(const ConeTrack& track, const std::vector
   return out;
 }
 
+SteadyState steady_state(const std::vector<ContourMean>& means, int from, int to) {
+  SteadyState out;
+  out.from = from;
+  out.to = to;
+  for (std::size_t k = 0; k < means.size(); ++k) {
+    const int c = static_cast<int>(k) + 1;
+    if (c < from || c > to || means[k].samples == 0) continue;
+    out.force += means[k].force;
+    out.polar += means[k].polar;
+    ++out.contours;
+  }
+  const double n = out.contours > 0 ? static_cast<double>(out.contours) : std::numeric_limits<double>::quiet_NaN();
+  out.force /= n;
+  out.polar /= n;
+  return out;
+}
+
 double section_angle_deg(double pie_angle_deg) {
   const double sectors = std::ceil(pie_angle_deg / 90.0 - 1e-9);  // as disc_mesh
   return 0.5 * pie_angle_deg / sectors;

@@ -61,6 +61,15 @@ struct ContourMean {
 // Means of the samples in the central third of each of the first `contours` contours.
 std::vector<ContourMean> contour_means(const ConeTrack& track, const std::vector<ForceSample>& samples, int contours);
 
+// Steady state (SPEC §4; thesis §9.3 uses contours 60-80 of the 100-contour cone70): the mean of
+// the central-third means of contours `from`..`to` (1-based, path order), over those of them that
+// are completed and have samples (`contours` says how many; 0: NaN means).
+struct SteadyState {
+  int from = 0, to = 0, contours = 0;
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), polar = Eigen::Vector3d::Zero();
+};
+SteadyState steady_state(const std::vector<ContourMean>& means, int from, int to);
+
 // Shape section (SPEC §4): the nodes of the initial mesh on the radial line at the polar angle
 // section_angle_deg(pie_angle), sorted by radius (the axis node first). The angle is the middle
 // of the first O-grid sub-sector of disc_mesh, a line of nodes: the pie middle for pies up to

@@ -183,12 +183,21 @@ void read_solver_and_output(const TomlTable& root, ConeScene& s) {
                             s.force_tolerance, s.displacement_tolerance});
   }
   if (const auto o = root.table("output")) {
-    o->allow_only({"vtu_every", "checkpoint_every", "history_element"});
+    o->allow_only({"vtu_every", "checkpoint_every", "history_element", "steady_state"});
     s.vtu_every = o->integer("vtu_every", 0);
     if (s.vtu_every < 0) o->fail("vtu_every", "must be >= 0");
     s.checkpoint_every = o->integer("checkpoint_every", s.checkpoint_every);
     if (s.checkpoint_every < 0) o->fail("checkpoint_every", "must be >= 0 (completed contours between checkpoints; 0: none)");
     if (const auto h = o->table("history_element")) read_history_element(*h, s);
+    if (o->has("steady_state")) {
+      const std::vector<double> r = o->number_list("steady_state");
+      int total = 0;
+      for (const auto& st : s.stages) total += st.contours;
+      if (r.size() != 2 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]) || !(r[0] >= 1 && r[0] <= r[1] && r[1] <= total))
+        o->fail("steady_state", "must be [from, to]: whole contour numbers with 1 <= from <= to <= " + std::to_string(total) +
+                                    " (the path's contours)");
+      s.steady_state = std::make_pair(static_cast<int>(r[0]), static_cast<int>(r[1]));
+    }
   }
 }
 

@@ -60,6 +60,9 @@ struct ConeScene {
     double r = 0.0, theta_deg = 0.0;
   };
   std::optional<HistoryPoint> history_element;
+  // [output] steady_state = [from, to]: contour range of the steady-state means in summary.json
+  // (1-based; thesis §9.3: [60, 80] of the 100-contour cone70). Empty: none.
+  std::optional<std::pair<int, int>> steady_state;
 };
 
 bool is_cone_kind(const std::string& kind);

@@ -141,6 +141,7 @@ class ForceLog {
                                         means.str());
   }
   ContourMean contour_mean(int k) const { return contour_means(track_, samples_, k + 1).back(); }
+  std::vector<ContourMean> means(int contours_completed) const { return contour_means(track_, samples_, contours_completed); }
   // Checkpoints: the rows, samples and peaks so far; restore() continues an empty log from them.
   void save(ConeRunLog* log) const {
     log->force_rows = rows_;
@@ -323,6 +324,16 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   observables.write(true);
   finish_summary(s, r, increments, track, length, model, log);
   s["observables"] = observables.summary();
+  if (scene.steady_state) {
+    const auto [from, to] = *scene.steady_state;
+    const SteadyState ss = steady_state(log.means(done), from, to);
+    s["steady_state"] = {{"contours", {from, to}},
+                         {"contours_used", ss.contours},
+                         {"force", vec(ss.force)},
+                         {"polar_force", vec(ss.polar)},
+                         {"fr_over_fz", ss.polar.x() / ss.polar.z()},
+                         {"definition", "mean of the central-third contour means of the completed contours in the range (thesis §9.3)"}};
+  }
   s["max_penetration"] = max_pen;
   s["contour_wall_seconds"] = contour_wall;
   s["checkpoints"] = {{"file", "checkpoint/state.bin"}, {"every_contours", scene.checkpoint_every}, {"written", checkpoints},

@@ -53,7 +53,7 @@ std::vector<std::vector<double>> read_rows(const fs::path& csv) {
 }
 
 TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
-  const fs::path file = write_scene("tiny", kTiny);
+  const fs::path file = write_scene("tiny", std::string(kTiny) + "[output]\nsteady_state = [1, 1]\n");
   const ConeScene scene = read_cone_scene(file.string());
   EXPECT_EQ(scene.stages.size(), 1u);
   EXPECT_DOUBLE_EQ(scene.clamp_radius, 21.5);  // top radius + 1.5 mm
@@ -97,6 +97,13 @@ TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
   const auto means = read_rows(dir / "contours.csv");
   ASSERT_EQ(means.size(), 1u);
   EXPECT_GT(means[0][5], 0.0);  // mean Fz over the central third
+  // The steady state over contours [1, 1] is that contour's mean (as written to contours.csv
+  // with 17 significant digits).
+  ASSERT_TRUE(s.contains("steady_state"));
+  EXPECT_EQ(s["steady_state"]["contours_used"].get<int>(), 1);
+  EXPECT_NEAR(s["steady_state"]["polar_force"][2].get<double>(), means[0][5], 1e-12 * std::abs(means[0][5]));
+  EXPECT_NEAR(s["steady_state"]["polar_force"][0].get<double>(), means[0][6], 1e-12 * std::abs(means[0][6]));
+  EXPECT_NEAR(s["steady_state"]["fr_over_fz"].get<double>(), means[0][6] / means[0][5], 1e-12);
   const auto section = read_rows(dir / "sections" / "section_s1_c001.csv");
   EXPECT_GT(section.size(), 5u);
   EXPECT_EQ(section.front()[0], 0.0);  // from the axis
@@ -140,6 +147,10 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
       {"[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = 2\ntop_radius = 20.0\n", "sheet.thickness", "0", "thickness"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nelements_per_45deg = 1\n", "sheet.elements_per_45deg", "1", "[2, 2000]"},
       {"[cone]\npreset = \"cone70\"\n[contact]\nvirtual_tool = false\n", "contact.virtual_tool", "", "unknown key"},
+      {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [60, 80]\n", "output.steady_state", "", "<= 60"},
+      {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [5]\n", "output.steady_state", "", "[from, to]"},
+      {"[cone]\npreset = \"cone70\"\n[sheet]\nmax_sector_deg = 60.0\n", "sheet.max_sector_deg", "60", "45 or 90"},
+      {"[cone]\npreset = \"vwall\"\n[sheet]\nring_start = 10.0\ncore_radius = 26.0\n", "sheet", "", "ring_start must lie beyond the core"},
   };
   for (const auto& c : cases) {
     const fs::path f = write_scene("bad", c.body);
@@ -157,6 +168,24 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
     }
     fs::remove(f);
   }
+}
+
+// Steady state = mean of the contour means in the range; contours without samples (or not
+// completed) do not count.
+TEST(ConeScene, SteadyStateAveragesTheContourMeansInItsRange) {
+  std::vector<ContourMean> m(4);
+  for (int k = 0; k < 4; ++k) {
+    m[static_cast<std::size_t>(k)].samples = 10;
+    m[static_cast<std::size_t>(k)].polar = Eigen::Vector3d(-(k + 1.0), 0.5 * k, 100.0 * (k + 1));
+    m[static_cast<std::size_t>(k)].force = m[static_cast<std::size_t>(k)].polar;
+  }
+  m[2].samples = 0;  // no sample in its central third
+  const SteadyState s = steady_state(m, 2, 6);
+  EXPECT_EQ(s.contours, 2);  // contours 2 and 4
+  EXPECT_DOUBLE_EQ(s.polar.z(), 300.0);
+  EXPECT_DOUBLE_EQ(s.polar.x(), -3.0);
+  EXPECT_EQ(steady_state(m, 5, 6).contours, 0);
+  EXPECT_TRUE(std::isnan(steady_state(m, 5, 6).polar.z()));
 }
 
 }  // namespace
