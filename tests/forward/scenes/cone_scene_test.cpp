@@ -170,6 +170,22 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
   }
 }
 
+// Every bundled cone scene reads, meshes and passes the mesh checks (the long ones are run on
+// demand only, so nothing else would notice a scene file that cannot start).
+TEST(ConeScene, EveryBundledConeSceneReads) {
+  int n = 0;
+  for (const auto& entry : fs::directory_iterator(fs::path(SPIFIT_SOURCE_DIR) / "experiments/aa3003o/scenes")) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".toml" || !(name.rfind("cone", 0) == 0 || name.rfind("vwall", 0) == 0)) continue;
+    EXPECT_NO_THROW({
+      const ConeScene s = read_cone_scene(entry.path().string());
+      EXPECT_GT(cone_scene_mesh(s).num_elements(), 0);
+    }) << name;
+    ++n;
+  }
+  EXPECT_GE(n, 10);  // cone50 x 3, cone70 x 4, vwall x 3
+}
+
 // Steady state = mean of the contour means in the range; contours without samples (or not
 // completed) do not count.
 TEST(ConeScene, SteadyStateAveragesTheContourMeansInItsRange) {
