@@ -9,6 +9,7 @@
 // The line scenes are long (minutes): select them with --benchmark_filter.
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
+#include "bench/scene_runs.hpp"
 #include "forward/scenes/forming_scene.hpp"
 
 #include <benchmark/benchmark.h>
@@ -41,28 +42,14 @@ const Case kCases[] = {
 
 void forming_scene(benchmark::State& state, const Case& c) {
   const scene::FormingScene s = scene::read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/" + c.file);
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / ("spifit_bench_" + std::string(c.name) + "_" + std::to_string(::getpid()));
-  std::vector<double> walls;
-  nlohmann::json last;
-  for (auto _ : state) {
-    const auto out = io::OutputDirectory::prepare(dir.string(), true);
-    const scene::FormingReport r = scene::run_forming_scene(s, out);
-    if (!r.ok) {
-      state.SkipWithError(("run failed: " + r.summary.value("message", std::string("?"))).c_str());
-      break;
-    }
-    walls.push_back(r.summary["wall_seconds"].get<double>());
-    last = r.summary;
-  }
-  std::filesystem::remove_all(dir);
-  if (walls.empty()) return;
-  std::sort(walls.begin(), walls.end());
-  const std::size_t k = walls.size();
-  const double median = k % 2 ? walls[k / 2] : 0.5 * (walls[k / 2 - 1] + walls[k / 2]);
+  const bench::SceneRuns runs = bench::run_scene_repeatedly(state, c.name, [&](const io::OutputDirectory& out) { return scene::run_forming_scene(s, out); });
+  if (runs.walls.empty()) return;
+  const nlohmann::json& last = runs.last;
+  const std::size_t k = runs.walls.size();
+  const double median = runs.median();
   const double fz = last["peak_force"][2].get<double>();
   state.counters["median_s"] = median;
-  state.counters["min_s"] = walls.front();
+  state.counters["min_s"] = runs.walls.front();
   state.counters["elements"] = last["model"]["elements"].get<double>();
   state.counters["increments"] = last["increments"].get<double>();
   state.counters["newton_its"] = last["newton_iterations"].get<double>();

@@ -4,6 +4,7 @@
 // missing directory or checkpoint, and --force, with exit code 2 and one line naming the
 // file or option.
 #include "tests/cli/cli_support.hpp"
+#include "forward/io/text_file.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -35,12 +36,7 @@ fs::path write_scene(const std::string& name, int contours, const std::string& e
   return f;
 }
 
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string slurp(const fs::path& f) { return spifit::io::read_text_file(f.string()); }
 
 TEST(ConeResumeCli, RefusesWhatItCannotResume) {
   const std::string tensile = std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/tensile_00.toml";

@@ -6,6 +6,7 @@
 // missing, truncated or corrupted one, is refused with an InputError naming the checkpoint
 // file, before any output is touched.
 #include "forward/io/input_error.hpp"
+#include "forward/io/text_file.hpp"
 #include "forward/scenes/cone_checkpoint.hpp"
 #include "forward/scenes/cone_scene.hpp"
 
@@ -39,12 +40,7 @@ fs::path write(const std::string& name, const std::string& text) {
   return f;
 }
 
-std::string slurp(const fs::path& f) {
-  std::ifstream in(f, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+std::string slurp(const fs::path& f) { return spifit::io::read_text_file(f.string()); }
 
 int data_rows(const fs::path& csv) {
   std::ifstream in(csv);
