@@ -8,7 +8,9 @@
 // eigenvalues l1, l2 of C):
 //   ln C = a I + b C,  b = atanh(x) / (x m),  a = ln(det) / 2 - b m.
 // atanh(x)/x depends on x^2 only, so a and b are smooth at equal eigenvalues (series there):
-// no eigenvectors, no special cases, and the derivatives follow by automatic differentiation.
+// no eigenvectors, no special cases. The derivatives follow in closed form by the chain rule
+// through (m, det) (log_strain.cpp); the template below also runs on nested Jets, which the
+// tests use as the reference.
 // Vectors use engineering shear: E = (E11, E22, 2 E12), eps = (e11, e22, 2 e12).
 #include "forward/material/scalar.hpp"
 
@@ -59,7 +61,7 @@ struct LogStrain {
   std::array<Eigen::Matrix3d, 3> second;  // second[i](j, k) = d2 eps_i / dE_j dE_k
 };
 
-// Value and derivatives (nested forward-mode Jets). Requires det C > 0 (checked by callers).
+// Value and first and second derivatives in closed form. Requires det C > 0 (checked by callers).
 LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green);
 
 }  // namespace spifit::element

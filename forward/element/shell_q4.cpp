@@ -173,12 +173,15 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
       status.suggested_scale = ss.suggested_scale;
       return status;
     }
-    Eigen::Matrix<double, 6, 6> q6 = Eigen::Matrix<double, 6, 6>::Zero();
-    q6.topLeftCorner<3, 3>() = pg.Q;
-    q6.bottomRightCorner<3, 3>() = pg.Q;
-    const Vec6 s6 = q6.transpose() * s6m;
-    Mat6 d6 = Mat6::Zero();
-    if (tangent) d6 = q6.transpose() * d6m * q6;
+    // With q6 = diag(Q, Q): s6 = q6^T s6m and d6 = q6^T d6m q6, block by block.
+    Vec6 s6;
+    s6.head<3>().noalias() = pg.Q.transpose() * s6m.head<3>();
+    s6.tail<3>().noalias() = pg.Q.transpose() * s6m.tail<3>();
+    Mat6 d6;
+    if (tangent)
+      for (int bi = 0; bi < 2; ++bi)
+        for (int bj = 0; bj < 2; ++bj)
+          d6.block<3, 3>(3 * bi, 3 * bj).noalias() = pg.Q.transpose() * (d6m.block<3, 3>(3 * bi, 3 * bj) * pg.Q);
     const Eigen::Vector2d Q = ks * gamma;
 
     // B = d(e, kappa, gamma)/dp, 8 x 24.
@@ -206,10 +209,12 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
 
     rp.noalias() += pg.weight * (B.topRows<6>().transpose() * s6 + B.bottomRows<2>().transpose() * Q);
     if (tangent) {
-      Eigen::Matrix<double, 8, 8> dsec = Eigen::Matrix<double, 8, 8>::Zero();
-      dsec.topLeftCorner<6, 6>() = d6;
-      dsec(6, 6) = dsec(7, 7) = ks;
-      kp.noalias() += pg.weight * (B.transpose() * (dsec * B));
+      // B^T D B with D = diag(d6, ks, ks): coefficient-wise (lazy) products; at 24 x 8 x 24
+      // Eigen's blocked GEMM spent more time packing than multiplying.
+      Eigen::Matrix<double, 8, 24> DB;
+      DB.topRows<6>().noalias() = (pg.weight * d6).lazyProduct(B.topRows<6>());
+      DB.bottomRows<2>() = (pg.weight * ks) * B.bottomRows<2>();
+      kp.noalias() += B.transpose().lazyProduct(DB);
       // Geometric terms: second derivatives of e, kappa and gamma are (scalar) x identity.
       const Eigen::Vector2d qn = pg.K.transpose() * Q;  // Q . gamma = qn . gamma_nat
       for (int I = 0; I < 4; ++I) {

@@ -43,14 +43,19 @@ void ReducedAssembler::add(int e, const Eigen::VectorXd& re, const Eigen::Matrix
   const auto ue = static_cast<std::size_t>(e);
   const std::vector<int>& red = reduced_dofs_[ue];
   const auto m = red.size();
-  Eigen::VectorXd r = re;
-  if (dg_local && ke && dg_local->size() > 0) r.noalias() += (*ke) * (*dg_local);
+  // The residual part only when asked for (the Newton solver scatters residuals itself).
+  Eigen::VectorXd r;
+  if (r_bar) {
+    r = re;
+    if (dg_local && ke && dg_local->size() > 0) r.noalias() += (*ke) * (*dg_local);
+  }
   const std::vector<long>& pos = map_.positions[ue];
   if (has_ties_[ue]) {
     const Eigen::MatrixXd& s = expansion_[ue];
-    const Eigen::VectorXd rr = s.transpose() * r;  // cheap; kept simple
-    if (r_bar)
+    if (r_bar) {
+      const Eigen::VectorXd rr = s.transpose() * r;
       for (std::size_t i = 0; i < m; ++i) (*r_bar)(red[i]) += rr(static_cast<Eigen::Index>(i));
+    }
     if (k_bar && ke) {
       const Eigen::MatrixXd kk = s.transpose() * (*ke) * s;
       auto& v = k_bar->values();

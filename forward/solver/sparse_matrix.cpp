@@ -32,6 +32,9 @@ SparsePattern build_pattern(int num_dofs, const std::vector<std::vector<int>>& e
   }
   p.cols.reserve(p.row_ptr.back());
   for (const auto& v : rows) p.cols.insert(p.cols.end(), v.begin(), v.end());
+  p.mirror.resize(p.cols.size());
+  for (int r = 0; r < num_dofs; ++r)
+    for (long k = p.row_ptr[r]; k < p.row_ptr[r + 1]; ++k) p.mirror[static_cast<std::size_t>(k)] = p.find(static_cast<int>(p.cols[k]), r);
   return p;
 }
 
@@ -77,9 +80,10 @@ bool SparseMatrix::is_symmetric(double tol) const {
   const auto& p = *pattern_;
   double scale = 0.0;
   for (double v : values_) scale = std::max(scale, std::abs(v));
+  const bool has_mirror = p.mirror.size() == p.cols.size();  // patterns not made by build_pattern search
   for (int r = 0; r < p.rows; ++r) {
     for (long k = p.row_ptr[r]; k < p.row_ptr[r + 1]; ++k) {
-      const long t = p.find(static_cast<int>(p.cols[k]), r);
+      const long t = has_mirror ? p.mirror[static_cast<std::size_t>(k)] : p.find(static_cast<int>(p.cols[k]), r);
       const double other = t >= 0 ? values_[t] : 0.0;
       if (std::abs(values_[k] - other) > tol * scale) return false;
     }

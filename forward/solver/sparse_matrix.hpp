@@ -13,6 +13,7 @@ struct SparsePattern {
   int rows = 0;
   std::vector<long> row_ptr;  // size rows + 1
   std::vector<long> cols;     // column indices, sorted within each row
+  std::vector<long> mirror;   // mirror[k] = position of (cols[k], row of k), -1 if absent; set by build_pattern
   long nonzeros() const { return static_cast<long>(cols.size()); }
   long find(int row, int col) const;  // -1 when (row, col) is not in the pattern
 };

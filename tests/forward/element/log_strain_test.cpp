@@ -1,6 +1,7 @@
 #include "forward/element/log_strain.hpp"
 #include "forward/element/thickness_rule.hpp"
 
+#include <ceres/jet.h>
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>
 
@@ -30,6 +31,40 @@ TEST(LogStrain, MatchesEigenDecompositionFromSmallToFourHundredPercent) {
   // Uniaxial stretch 3.07 (thesis: 420 % Green radial strain) is log strain 1.12.
   const double lambda = 3.07;
   EXPECT_NEAR(log_strain_of_green(Eigen::Vector3d(0.5 * (lambda * lambda - 1.0), 0.0, 0.0))(0), std::log(lambda), 1e-14);
+}
+
+// Value, first and second derivatives by nested forward-mode Jets through the generic template
+// (the implementation before the closed form; the reference for it).
+LogStrain log_strain_by_nested_jets(const Eigen::Vector3d& green) {
+  using Inner = ceres::Jet<double, 3>;
+  using Outer = ceres::Jet<Inner, 3>;
+  Eigen::Matrix<Outer, 3, 1> g;
+  for (int j = 0; j < 3; ++j) g(j) = Outer(Inner(green(j), j), j);
+  const Eigen::Matrix<Outer, 3, 1> eps = log_strain_of_green(g);
+  LogStrain out;
+  for (int i = 0; i < 3; ++i) {
+    out.value(i) = eps(i).a.a;
+    for (int j = 0; j < 3; ++j) {
+      out.first(i, j) = eps(i).a.v(j);
+      for (int k = 0; k < 3; ++k) out.second[static_cast<std::size_t>(i)](j, k) = eps(i).v(j).v(k);
+    }
+  }
+  return out;
+}
+
+TEST(LogStrain, ClosedFormDerivativesMatchNestedJets) {
+  // y = 1 - det C / m^2 spans 0 (equal eigenvalues), both sides of the series switch at 0.05,
+  // and a 400 % stretch with compression (y near 1).
+  const Eigen::Vector3d points[] = {{0.0, 0.0, 0.0},   {1e-9, -2e-9, 3e-9}, {0.02, 0.0199, 1e-5}, {0.2, 0.0, 0.0},
+                                    {0.25, 0.0, 0.0},  {0.3, -0.05, 0.01},  {1.5, -0.2, 0.4},     {0.1, 0.3, -0.25},
+                                    {4.2, -0.3, 0.3},  {-0.3, 0.5, -0.4},   {2.0, 2.0, 0.0},      {-0.2, -0.2, 0.1}};
+  for (const auto& g : points) {
+    const LogStrain c = log_strain_with_derivatives(g), j = log_strain_by_nested_jets(g);
+    EXPECT_LT((c.value - j.value).norm(), 1e-14 * (1.0 + j.value.norm())) << g.transpose();
+    EXPECT_LT((c.first - j.first).norm(), 1e-13 * (1.0 + j.first.norm())) << g.transpose();
+    for (std::size_t i = 0; i < 3; ++i)
+      EXPECT_LT((c.second[i] - j.second[i]).norm(), 1e-12 * (1.0 + j.second[i].norm())) << "component " << i << " at " << g.transpose();
+  }
 }
 
 TEST(LogStrain, DerivativesMatchCentralDifferences) {
