@@ -13,7 +13,9 @@ namespace spifit::scene {
 namespace {
 
 constexpr char kKind[] = "cone-checkpoint";
-constexpr std::uint32_t kLayout = 1;  // bump when the layout below changes
+// Bump when the layout below or the meaning of the stored load factor changes (2: pie moves
+// shortened by ConeLoadMap, so a load factor of layout 1 is another point of the path).
+constexpr std::uint32_t kLayout = 2;
 
 void save_rows(io::BinaryWriter& w, const std::vector<std::vector<double>>& rows) {
   w.i64(static_cast<std::int64_t>(rows.size()));

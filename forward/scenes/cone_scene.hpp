@@ -43,6 +43,9 @@ struct ConeScene {
   bool virtual_tools = true;       // pies: copies of the tool at +-gamma (thesis Fig. 8.4)
   // Solver: increments of tool travel.
   double travel_per_increment = 1.0;  // mm
+  // Increments per horizontal move between pie contours (tool in the air; cone_load_map.hpp);
+  // 0: one per travel_per_increment like the rest of the path.
+  int move_increments = 1;
   int max_iterations = 25;
   bool extrapolate = true;
   // Energy line search on by default for cones: on cone70_pie45_short it cut the Newton

@@ -5,6 +5,7 @@
 #include "forward/model/cyclic_symmetry.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/scenes/cone_checkpoint.hpp"
+#include "forward/scenes/cone_load_map.hpp"
 #include "forward/scenes/cone_observable_log.hpp"
 #include "forward/scenes/cone_scene.hpp"
 #include "forward/scenes/scene_tables.hpp"
@@ -96,6 +97,8 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const Cone
                   {"friction", s.contact.friction},
                   {"points", s.contact.points},
                   {"surface", s.contact.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"}};
+  j["solver"] = {{"travel_per_increment", s.travel_per_increment}, {"move_increments", s.move_increments},
+                 {"line_search", s.line_search},                   {"extrapolate", s.extrapolate}};
   j["warnings"] = warnings;
   j["status"] = "running";
   return j;
@@ -170,7 +173,7 @@ class ForceLog {
   Clock::time_point last_{};
 };
 
-void finish_summary(json& j, const solver::NewtonSummary& r, int increments, const ConeTrack& track, double length,
+void finish_summary(json& j, const solver::NewtonSummary& r, int increments, const ConeTrack& track, const ConeLoadMap& map,
                     const model::ShellModel& model, const ForceLog& log) {
   const Eigen::Vector3d f = model.tool_force();
   j["increments"] = increments;
@@ -179,9 +182,9 @@ void finish_summary(json& j, const solver::NewtonSummary& r, int increments, con
   j["factorisations"] = r.factorisations;
   j["factorisations_by_solver"] = {{"cholmod", r.cholmod_factorisations}, {"umfpack", r.umfpack_factorisations}};
   j["profile_seconds"] = {{"elements", r.element_seconds}, {"assembly", r.scatter_seconds}, {"linear_solver", r.linear_seconds}};
-  j["travel_reached"] = r.lambda * length;
+  j["travel_reached"] = map.travel(r.lambda);
   j["contours_total"] = track.contours().size();
-  j["contours_completed"] = track.completed(r.lambda * length);
+  j["contours_completed"] = track.completed(map.travel(r.lambda));
   j["peak_force"] = vec(log.peak());
   j["peak_polar_force"] = vec(log.peak_polar());
   j["final_force"] = vec(f);
@@ -211,12 +214,16 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   const ConeTrack track(cone_scene_path(scene));
   const toolpath::ToolPath& path = track.path().path;
   const double length = path.length(), duration = path.duration();
-  // Spin [rad per unit load factor] = omega [rad/s] x duration [s].
-  const double spin = scene.spin * 2.0 * std::numbers::pi / 60.0 * duration;
-  model.set_tool(scene.tool_radius, [&path, length](double lambda) { return path.at_distance(lambda * length); }, scene.contact, spin);
+  const ConeLoadMap map(track.path(), scene.travel_per_increment, scene.move_increments);
+  // Spin [rad per unit load factor] = omega [rad/s] x the time per unit load factor where the
+  // tool touches (the moves in the air, shortened by the map, turn it faster; no effect there).
+  const double spin = scene.spin * 2.0 * std::numbers::pi / 60.0 * duration * map.effective_length() / length;
+  model.set_tool(scene.tool_radius, [&path, &map](double lambda) { return path.at_distance(map.travel(lambda)); }, scene.contact, spin);
   model.set_tool_copies(tool_copies(scene));
   const solver::DofConstraints c = cone_constraints(scene, mesh, model.num_dofs());
-  solver::NewtonSolver solver(model, c, tool_newton_options(scene, length));
+  solver::NewtonOptions newton_options = tool_newton_options(scene, map.effective_length());
+  newton_options.breakpoints = map.breakpoints();
+  solver::NewtonSolver solver(model, c, newton_options);
 
   // Resume: the checkpoint is read (and refused with an InputError) before any output is touched.
   ConeRunLog restored;
@@ -273,7 +280,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   bool stopped = false;
   auto on_increment = [&](const solver::IncrementReport& ir) {
     ++increments;
-    const double travel = ir.lambda * length, time = ir.lambda * duration;
+    const double travel = map.travel(ir.lambda), time = travel / length * duration;
     const Eigen::Vector3d f = model.tool_force();
     const double pen = model.contact_summary().max_penetration;
     max_pen = std::max(max_pen, pen);
@@ -319,10 +326,10 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
     rep.summary = s;
     return rep;
   }
-  if (increments > 0 && (scene.vtu_every == 0 || increments % scene.vtu_every != 0)) pvd.write_step(r.lambda * duration, mesh, model.vtu_frame());
+  if (increments > 0 && (scene.vtu_every == 0 || increments % scene.vtu_every != 0)) pvd.write_step(map.travel(r.lambda) / length * duration, mesh, model.vtu_frame());
   log.write(done, true);
   observables.write(true);
-  finish_summary(s, r, increments, track, length, model, log);
+  finish_summary(s, r, increments, track, map, model, log);
   s["observables"] = observables.summary();
   if (scene.steady_state) {
     const auto [from, to] = *scene.steady_state;
@@ -340,7 +347,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
                       {"bytes", checkpoint_bytes}, {"write_seconds", checkpoint_seconds}};
   s["wall_seconds"] = std::chrono::duration<double>(Clock::now() - t0).count();
   ConeReport rep;
-  rep.ok = set_run_status(s, r.converged, r.lambda * length, r.message);
+  rep.ok = set_run_status(s, r.converged, map.travel(r.lambda), r.message);
   out.write_file("summary.json", s.dump(2) + "\n");
   rep.summary = s;
   return rep;

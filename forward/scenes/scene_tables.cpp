@@ -31,8 +31,15 @@ void read_contact_table(const io::TomlTable& ct, contact::ContactOptions* c) {
 }
 
 void read_solver_table(const io::TomlTable& so, const SolverFields& f) {
-  so.allow_only({"travel_per_increment", "max_iterations", "linear_solver", "extrapolate", "line_search", "force_tolerance",
-                 "displacement_tolerance"});
+  std::vector<std::string> keys{"travel_per_increment", "max_iterations", "linear_solver", "extrapolate", "line_search",
+                                 "force_tolerance", "displacement_tolerance"};
+  if (f.move_increments) keys.push_back("move_increments");
+  so.allow_only(keys);
+  if (f.move_increments) {
+    *f.move_increments = so.integer("move_increments", *f.move_increments);
+    if (*f.move_increments < 0 || *f.move_increments > 1000)
+      so.fail("move_increments", "must be in [0, 1000] (increments per move between pie contours; 0: one per travel_per_increment)");
+  }
   if (so.has("travel_per_increment")) {
     f.travel_per_increment = so.number("travel_per_increment");
     if (!(f.travel_per_increment > 0.0 && std::isfinite(f.travel_per_increment))) so.fail("travel_per_increment", "must be > 0");

@@ -34,9 +34,10 @@ struct SolverFields {
   bool& line_search;
   double& force_tolerance;
   double& displacement_tolerance;
+  int* move_increments = nullptr;  // cone scenes only: the key move_increments (>= 0)
 };
 // travel_per_increment, max_iterations, linear_solver, extrapolate, line_search,
-// force_tolerance, displacement_tolerance (and no other key).
+// force_tolerance, displacement_tolerance, and move_increments where bound (and no other key).
 void read_solver_table(const io::TomlTable& so, const SolverFields& f);
 
 // Newton options of a tool scene (any type with the SolverFields members) whose path is

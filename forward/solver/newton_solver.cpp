@@ -29,6 +29,8 @@ std::string NewtonOptions::validate() const {
   if (!(force_tolerance > 0.0) || !(displacement_tolerance > 0.0)) return "tolerances must be > 0";
   if (max_line_search < 0) return "max_line_search must be >= 0";
   if (element_chunk < 1) return "element_chunk must be >= 1";
+  for (std::size_t i = 0; i < breakpoints.size(); ++i)
+    if (!std::isfinite(breakpoints[i]) || (i > 0 && !(breakpoints[i] > breakpoints[i - 1]))) return "breakpoints must be finite and increasing";
   return {};
 }
 
@@ -78,6 +80,7 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
   auto& re = re_;
   auto& ke = ke_;
   auto& ev = ev_;
+  Eigen::VectorXd r, dgl;  // per-element buffers, sized once (all elements have the same DOF count)
   for (int first = 0; first < ne; first += chunk) {
     const int count = std::min(chunk, ne - first);
     auto t0 = std::chrono::steady_clock::now();
@@ -96,11 +99,11 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
         return out;
       }
       const std::vector<int>& ed = dofs[static_cast<std::size_t>(first + i)];
-      Eigen::VectorXd r = re[ui];
+      r = re[ui];
       for (std::size_t a = 0; a < ed.size(); ++a)
         if (constraints_.prescribed(ed[a])) reactions(ed[a]) += r(static_cast<Eigen::Index>(a));
       if (dg_full && with_tangent) {
-        Eigen::VectorXd dgl(static_cast<Eigen::Index>(ed.size()));
+        dgl.resize(static_cast<Eigen::Index>(ed.size()));
         for (std::size_t a = 0; a < ed.size(); ++a) dgl(static_cast<Eigen::Index>(a)) = (*dg_full)(ed[a]);
         if (dgl.squaredNorm() > 0.0) r.noalias() += ke[ui] * dgl;
       }
@@ -303,6 +306,10 @@ NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& call
     const double lambda = lambda_;
     double lambda1 = std::min(lambda + dl_, lambda_end);
     if (lambda_end - lambda1 < 1e-3 * dl_) lambda1 = lambda_end;
+    // The next breakpoint after lambda: the increment ends there (also when it would end just short of it).
+    const auto& bp = options_.breakpoints;
+    const auto next = std::upper_bound(bp.begin(), bp.end(), lambda + 1e-12);
+    if (next != bp.end() && *next < lambda_end && *next - lambda1 < 1e-3 * dl_) lambda1 = *next;
     IncrementReport report;
     report.index = increments_ + 1;
     report.lambda = lambda1;

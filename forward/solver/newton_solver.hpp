@@ -38,6 +38,9 @@ struct NewtonOptions {
   // An increment whose residual exceeds its initial one after `divergence_after` iterations
   // is cut back at once instead of iterating to max_iterations (0: never).
   int divergence_after = 3;
+  // Load factors that no increment steps over (increasing): an increment reaching past one
+  // ends there instead, as at lambda_end; the increment size is not reduced by this.
+  std::vector<double> breakpoints{};
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
   int element_chunk = 2048;
   // Linear analysis: one increment, one solve from the reference state, no equilibrium

@@ -2,6 +2,7 @@
 // and writes polar force components consistent with the Cartesian ones; the reader names file
 // and key of bad inputs.
 #include "forward/io/input_error.hpp"
+#include "forward/scenes/cone_load_map.hpp"
 #include "forward/scenes/cone_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -133,6 +134,62 @@ TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
   fs::remove(v);
 }
 
+// The load map of a cone70 pie path: linear with slope = effective length except on the moves,
+// each of which spans move_increments x travel_per_increment of load between two breakpoints.
+TEST(ConeLoadMap, ShortensEveryPieMoveToItsIncrementsAndInvertsExactly) {
+  const toolpath::ConePath path = toolpath::annotated_cone_path(toolpath::cone70(3, 45.0));
+  const std::vector<double> d = path.path.waypoint_distances();
+  const double length = d.back();
+  const ConeLoadMap off(path, 1.0, 0);
+  EXPECT_TRUE(off.breakpoints().empty());
+  EXPECT_EQ(off.effective_length(), length);
+  for (double l : {0.0, 0.123, 0.5, 0.987, 1.0}) EXPECT_EQ(off.travel(l), l * length);
+  const ConeLoadMap map(path, 1.0, 2);
+  EXPECT_EQ(map.shortened_moves(), 2);  // between contours 1-2 and 2-3
+  ASSERT_EQ(map.breakpoints().size(), 4u);
+  double moves = 0.0;
+  for (std::size_t i = 1; i < d.size(); ++i) {
+    if (path.segments[i].move != toolpath::ConeMove::move) continue;
+    moves += d[i] - d[i - 1];
+    const double l0 = map.lambda(d[i - 1]), l1 = map.lambda(d[i]);
+    EXPECT_NEAR((l1 - l0) * map.effective_length(), 2.0, 1e-9) << "move ending at waypoint " << i;
+    EXPECT_NEAR(map.travel(0.5 * (l0 + l1)), 0.5 * (d[i - 1] + d[i]), 1e-9);  // linear inside the move
+  }
+  EXPECT_GT(moves, 80.0);  // two chords of about 2 x 90 sin(22.5 deg) = 69 mm: the saving is real
+  EXPECT_NEAR(map.effective_length(), length - moves + 4.0, 1e-9);
+  for (double s : {0.0, 10.0, 0.4 * length, 0.77 * length, length}) EXPECT_NEAR(map.travel(map.lambda(s)), s, 1e-9 * length);
+  EXPECT_EQ(map.travel(1.0), length);
+}
+
+// The move between two contours of the tiny cone in one increment (the default) instead of one
+// per 0.5 mm: the second contour's mean force hardly changes (the tool is in the air on the move).
+TEST(ConeScene, PieMoveInOneIncrementKeepsTheNextContoursForce) {
+  std::string two(kTiny);
+  two.replace(two.find("contours = 1"), 12, "contours = 2");
+  double fz[2] = {0.0, 0.0};
+  int move_rows[2] = {0, 0}, increments[2] = {0, 0};
+  for (int n : {0, 1}) {
+    const fs::path file = write_scene("move" + std::to_string(n), two + "move_increments = " + std::to_string(n) + "\n");
+    const fs::path dir = temp("move_out" + std::to_string(n));
+    fs::remove_all(dir);
+    const ConeReport r = run_cone_scene(read_cone_scene(file.string()), io::OutputDirectory::prepare(dir.string(), true));
+    ASSERT_TRUE(r.ok) << r.summary.dump();
+    EXPECT_EQ(r.summary["solver"]["move_increments"].get<int>(), n);
+    increments[n] = r.summary["increments"].get<int>();
+    for (const auto& row : read_rows(dir / "force.csv")) move_rows[n] += row[12] == 5.0 ? 1 : 0;
+    const auto means = read_rows(dir / "contours.csv");
+    ASSERT_EQ(means.size(), 2u);
+    fz[n] = means[1][5];
+    fs::remove_all(dir);
+    fs::remove(file);
+  }
+  std::printf("tiny cone, 2 contours: move in %d / %d increments, %d / %d increments in all, contour 2 mean Fz %.3f / %.3f N\n",
+              move_rows[0], move_rows[1], increments[0], increments[1], fz[0], fz[1]);
+  EXPECT_EQ(move_rows[1], 1);
+  EXPECT_GT(move_rows[0], 10);  // a chord of 2 x 20 sin(45 deg) = 28 mm at 0.5 mm per increment
+  EXPECT_NEAR(fz[1], fz[0], 0.02 * std::abs(fz[0]));
+}
+
 TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
   struct Case {
     std::string body, key, value, fragment;
@@ -149,6 +206,7 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
       {"[cone]\npreset = \"cone70\"\n[contact]\nvirtual_tool = false\n", "contact.virtual_tool", "", "unknown key"},
       {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [60, 80]\n", "output.steady_state", "", "<= 60"},
       {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [5]\n", "output.steady_state", "", "[from, to]"},
+      {"[cone]\npreset = \"cone70\"\n[solver]\nmove_increments = -1\n", "solver.move_increments", "-1", "[0, 1000]"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nmax_sector_deg = 60.0\n", "sheet.max_sector_deg", "60", "45 or 90"},
       {"[cone]\npreset = \"vwall\"\n[sheet]\nring_start = 10.0\ncore_radius = 26.0\n", "sheet", "", "ring_start must lie beyond the core"},
   };

@@ -185,6 +185,32 @@ TEST(NewtonSolver, EnergyLineSearchIsUsedAndReachesTheSameSolution) {
   EXPECT_NEAR(z[1], z[0], 1e-4 * std::abs(z[0]));
 }
 
+TEST(NewtonSolver, IncrementsEndAtEveryBreakpointAndKeepTheirSize) {
+  // The elastic cantilever strip of cantilever_corrections() under a moderate tip load.
+  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 2);
+  ShellModel model(m, 1.0, aluminium(false), {});
+  DofConstraints c(model.num_dofs());
+  for (int n : m.node_sets.at("clamped"))
+    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
+  for (int n : m.node_sets.at("tip")) model.add_nodal_load(ShellModel::dof(n, 2), 10.0);
+  c.finalize();
+  NewtonOptions o;
+  o.initial_increment = o.max_increment = 0.25;
+  // 0.5499: the increment from 0.3 would end 1e-4 short of it (< 1e-3 x 0.25) and reaches it instead.
+  o.breakpoints = {0.1, 0.3, 0.5499, 0.7};
+  NewtonSolver s(model, c, o);
+  std::vector<double> ends;
+  const NewtonSummary r = s.solve(1.0, [&](const IncrementReport& ir) { return ends.push_back(ir.lambda), true; });
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_EQ(r.cutbacks, 0);  // the sequence below assumes no cut-back
+  const std::vector<double> expected = {0.1, 0.3, 0.5499, 0.7, 0.95, 1.0};
+  ASSERT_EQ(ends.size(), expected.size());
+  for (std::size_t i = 0; i < ends.size(); ++i) EXPECT_NEAR(ends[i], expected[i], 1e-12) << "increment " << i + 1;
+  NewtonOptions bad;
+  bad.breakpoints = {0.5, 0.2};
+  EXPECT_NE(bad.validate().find("breakpoints"), std::string::npos);
+}
+
 TEST(NewtonOptions, ValidateNamesTheProblem) {
   NewtonOptions o;
   EXPECT_EQ(o.validate(), "");
