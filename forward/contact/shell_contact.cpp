@@ -149,6 +149,7 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
       // is zero for a point that was not in contact.
       // A spinning tool's surface point moves by spin x (xp - centre) on top of the translation.
       const Eigen::Vector3d slip = (xp - xp0) - (tool.centre - tool.centre_committed) - tool.spin.cross(v);
+      st.slip = slip;
       const Eigen::Vector3d w = committed_[sid].traction - kt * slip;
       const Eigen::Vector3d ttr = P * w;
       // d(P w)/dx = -kt P (I - [spin]x) - (n.w) P / rho - n (P w)^T / rho
@@ -221,7 +222,29 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
   return any;
 }
 
-void ShellContact::commit() { committed_ = trial_; }
+void ShellContact::commit() {
+  if (options_.friction > 0.0) {
+    const double kt = options_.tangential_penalty > 0.0 ? options_.tangential_penalty : options_.penalty;
+    for (std::size_t i = 0; i < trial_.size(); ++i) {
+      const PointState &o = committed_[i], &n = trial_[i];
+      if (!o.active && !n.active) continue;
+      const double da = areas_[i % areas_.size()];
+      dissipation_ += (-0.5 * (o.traction + n.traction).dot(n.slip) - 0.5 * (n.traction.squaredNorm() - o.traction.squaredNorm()) / kt) * da;
+    }
+  }
+  committed_ = trial_;
+}
+
+double ShellContact::stored_energy() const {
+  const double kt = options_.tangential_penalty > 0.0 ? options_.tangential_penalty : options_.penalty;
+  double e = 0.0;
+  for (std::size_t i = 0; i < committed_.size(); ++i) {
+    const PointState& p = committed_[i];
+    if (!p.active) continue;
+    e += (0.5 * p.pressure * p.penetration + 0.5 * p.traction.squaredNorm() / kt) * areas_[i % areas_.size()];
+  }
+  return e;
+}
 void ShellContact::revert() { trial_ = committed_; }
 
 void ShellContact::save_state(io::BinaryWriter& w) const {
@@ -234,6 +257,7 @@ void ShellContact::save_state(io::BinaryWriter& w) const {
     w.f64(p.penetration);
     w.boolean(p.active);
   }
+  w.f64(dissipation_);
 }
 
 void ShellContact::load_state(io::BinaryReader& r) {
@@ -246,6 +270,7 @@ void ShellContact::load_state(io::BinaryReader& r) {
     p.penetration = r.f64();
     p.active = r.boolean();
   }
+  dissipation_ = r.f64();
   trial_ = committed_;
 }
 
@@ -262,6 +287,16 @@ ContactSummary ShellContact::committed_summary(int tool_index) const {
     ++s.active_points;
   }
   return s;
+}
+
+std::vector<double> ShellContact::element_normal_force() const {
+  std::vector<double> out(static_cast<std::size_t>(mesh_->num_elements()), 0.0);
+  for (std::size_t i = 0; i < committed_.size(); ++i) {
+    if (!committed_[i].active) continue;
+    const std::size_t k = i % areas_.size();
+    out[k / static_cast<std::size_t>(per_element_)] += committed_[i].pressure * areas_[k];
+  }
+  return out;
 }
 
 std::vector<double> ShellContact::element_pressure() const {

@@ -77,6 +77,14 @@ class ShellContact {
   // Sum over the committed contact points of one tool (element order: deterministic), in the
   // sheet's frame.
   ContactSummary committed_summary(int tool_index = 0) const;
+  // Energies of the committed state [N mm] over all tools: stored in the penalty springs
+  // (normal: p g / 2 per area; tangential stick: |t|^2 / (2 K_t)), and the frictional
+  // dissipation accumulated at every commit, -(t_old + t_new) / 2 . slip - the change of the
+  // stick energy (a point leaving contact dissipates its stick energy).
+  double stored_energy() const;
+  double friction_dissipation() const { return dissipation_; }
+  // Committed normal contact force on each element's points, all tools [N] (sum of p dA).
+  std::vector<double> element_normal_force() const;
   // Largest committed pressure over each element's points and all tools (VTU cell data).
   std::vector<double> element_pressure() const;
   const ContactOptions& options() const { return options_; }
@@ -85,6 +93,7 @@ class ShellContact {
   struct PointState {
     Eigen::Vector3d traction = Eigen::Vector3d::Zero();  // tangential traction on the sheet [MPa]
     Eigen::Vector3d force = Eigen::Vector3d::Zero();     // force on the sheet [N]
+    Eigen::Vector3d slip = Eigen::Vector3d::Zero();      // trial only: sheet relative to tool over the increment [mm]
     double pressure = 0.0, penetration = 0.0;
     bool active = false;
   };
@@ -98,6 +107,7 @@ class ShellContact {
   std::vector<double> areas_;          // per element x point
   std::vector<PointState> committed_, trial_;  // [tool][element][point]
   int per_element_ = 0;
+  double dissipation_ = 0.0;  // committed frictional dissipation [N mm]
   int tools_ = 1;
 };
 

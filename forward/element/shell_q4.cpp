@@ -117,6 +117,37 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   sections_.assign(4, ShellSection(law, rule, thickness));
 }
 
+ShellQ4::TransverseShear ShellQ4::transverse_shear(const NodeVectors& x, const NodeVectors& d) const {
+  TransverseShear out;
+  std::array<double, 4> gamma_t{};
+  for (std::size_t t = 0; t < 4; ++t) {
+    out.a_t[t] = combine(tying_[t].dN, x);
+    out.d_t[t] = combine(tying_[t].N, d);
+    gamma_t[t] = out.a_t[t].dot(out.d_t[t]) - tying_[t].gamma_ref;
+  }
+  for (std::size_t q = 0; q < 4; ++q) {
+    const PointGeometry& pg = points_[q];
+    const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
+    const Eigen::Vector2d gamma_nat(c[0] * gamma_t[0] + c[1] * gamma_t[1], c[2] * gamma_t[2] + c[3] * gamma_t[3]);
+    out.gamma[q] = pg.K * gamma_nat;
+  }
+  return out;
+}
+
+ElementEnergy ShellQ4::energy(const NodeVectors& x, const NodeVectors& d) const {
+  ElementEnergy out;
+  const double ks = options_.shear_factor * shear_modulus_ * h0_;
+  const TransverseShear shear = transverse_shear(x, d);
+  for (std::size_t q = 0; q < 4; ++q) {
+    const double w = points_[q].weight;
+    const SectionEnergy se = sections_[q].energy();
+    out.elastic += w * se.elastic;
+    out.plastic += w * se.plastic;
+    out.transverse_shear += w * 0.5 * ks * shear.gamma[q].squaredNorm();
+  }
+  return out;
+}
+
 double ShellQ4::reference_area() const { return area_; }
 
 void ShellQ4::save_state(io::BinaryWriter& w) const {
@@ -135,13 +166,9 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
   const double ks = options_.shear_factor * shear_modulus_ * h0_;
 
   // Tying-point shear strains and their derivatives (shared by the four Gauss points).
-  std::array<double, 4> gamma_t{};
-  std::array<Eigen::Vector3d, 4> a_t, d_t;
-  for (std::size_t t = 0; t < 4; ++t) {
-    a_t[t] = combine(tying_[t].dN, x);
-    d_t[t] = combine(tying_[t].N, d);
-    gamma_t[t] = a_t[t].dot(d_t[t]) - tying_[t].gamma_ref;
-  }
+  const TransverseShear shear = transverse_shear(x, d);
+  const auto& a_t = shear.a_t;
+  const auto& d_t = shear.d_t;
 
   for (std::size_t q = 0; q < 4; ++q) {
     const PointGeometry& pg = points_[q];
@@ -158,8 +185,7 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     kappa -= pg.kappa_ref;
     // Interpolation weights of the tying points at this Gauss point.
     const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
-    const Eigen::Vector2d gamma_nat(c[0] * gamma_t[0] + c[1] * gamma_t[1], c[2] * gamma_t[2] + c[3] * gamma_t[3]);
-    const Eigen::Vector2d gamma = pg.K * gamma_nat;
+    const Eigen::Vector2d& gamma = shear.gamma[q];
 
     // The layers work in the material frame: e_m = Q e, (N, M) = Q^T (N_m, M_m).
     Vec6 s6m;

@@ -52,6 +52,13 @@ using Mat24 = Eigen::Matrix<double, 24, 24>;
 // normal to the directors (no drilling stiffness). Shared by the shell and its contact.
 void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku);
 
+// Energies of an element's committed state [N mm], integrated over its reference area.
+struct ElementEnergy {
+  double elastic = 0.0;           // membrane and bending, layer by layer (SectionEnergy)
+  double plastic = 0.0;           // plastic work of the layers
+  double transverse_shear = 0.0;  // MITC4 shear: k G h0 |gamma|^2 / 2
+};
+
 struct ElementStatus {
   bool ok = true;
   int point = -1, layer = -1;  // in-plane Gauss point 0..3, layer from the bottom
@@ -75,6 +82,8 @@ class ShellQ4 {
   void save_state(io::BinaryWriter& w) const;
   void load_state(io::BinaryReader& r);
 
+  // Energies at the committed nodes x and directors d (the sections' committed states).
+  ElementEnergy energy(const NodeVectors& x, const NodeVectors& d) const;
   double reference_area() const;
   const ShellSection& section(int point) const { return sections_[static_cast<std::size_t>(point)]; }
   static constexpr int kPoints = 4;
@@ -94,6 +103,13 @@ class ShellQ4 {
     Eigen::Vector4d dN;     // natural derivative along its direction (xi for B/D, eta for A/C)
     double gamma_ref = 0.0; // a_alpha . d in the reference configuration
   };
+  // MITC4 transverse shear strains (element frame) at the four Gauss points, and the tying
+  // points' a_alpha and d (shared by compute and energy).
+  struct TransverseShear {
+    std::array<Eigen::Vector3d, 4> a_t, d_t;
+    std::array<Eigen::Vector2d, 4> gamma;  // per Gauss point
+  };
+  TransverseShear transverse_shear(const NodeVectors& x, const NodeVectors& d) const;
   ShellOptions options_;
   double h0_;
   double shear_modulus_;

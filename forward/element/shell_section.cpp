@@ -3,12 +3,14 @@
 #include "forward/element/log_strain.hpp"
 #include "forward/io/binary_archive.hpp"
 
+#include <Eigen/LU>
+
 #include <cmath>
 
 namespace spifit::element {
 
 ShellSection::ShellSection(const Law& law, const ThicknessRule& rule, double thickness0)
-    : rule_(&rule), h0_(thickness0), h_(thickness0),
+    : rule_(&rule), h0_(thickness0), h_(thickness0), compliance_(law.elastic_matrix().inverse()),
       points_(rule.zeta.size(), material::MaterialPoint<double, 3>(law)),
       eps_(rule.zeta.size(), Vec3::Zero()), eps_trial_(rule.zeta.size(), Vec3::Zero()),
       tangent_(rule.zeta.size(), law.elastic_matrix()), tangent_trial_(rule.zeta.size(), law.elastic_matrix()) {}
@@ -78,6 +80,17 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
     }
   }
   return status;
+}
+
+SectionEnergy ShellSection::energy() const {
+  SectionEnergy out;
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    const double w = rule_->weight[l] * 0.5 * h0_;
+    const auto& st = points_[l].committed();
+    out.elastic += w * 0.5 * st.stress.dot(compliance_ * st.stress);
+    out.plastic += w * st.plastic_work;
+  }
+  return out;
 }
 
 void ShellSection::commit() {

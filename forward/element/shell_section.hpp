@@ -32,6 +32,12 @@ using Vec3 = Eigen::Vector3d;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
+// Energies per unit reference area of a section's committed state [N mm / mm^2].
+struct SectionEnergy {
+  double elastic = 0.0;  // sum_l w_l h0/2 x T . C^-1 T / 2 (plane-stress elasticity of the layers)
+  double plastic = 0.0;  // sum_l w_l h0/2 x plastic work (sum of T . d eps_p)
+};
+
 struct SectionStatus {
   bool ok = true;
   int layer = -1;                // failing layer (bottom = 0)
@@ -62,10 +68,12 @@ class ShellSection {
   const material::MaterialState<double, 3>& layer_trial_state(int l) const { return points_[static_cast<std::size_t>(l)].trial(); }
   const Vec3& layer_log_strain(int l) const { return eps_[static_cast<std::size_t>(l)]; }
   const Vec3& membrane_green_strain() const { return e_committed_; }
+  SectionEnergy energy() const;
 
  private:
   const ThicknessRule* rule_;
   double h0_, h_;
+  Eigen::Matrix3d compliance_;  // inverse of the law's plane-stress elastic matrix
   std::vector<material::MaterialPoint<double, 3>> points_;
   std::vector<Vec3> eps_, eps_trial_;  // layer log strains (committed, trial)
   // Material tangent of the last update (trial) and at the converged state (committed). A

@@ -274,12 +274,30 @@ void ShellModel::accept_trial() {
 }
 
 void ShellModel::commit(double lambda) {
+  // External work of the increment (trapezoidal rule): nodal loads over the increment of their
+  // DOF, each tool's force on the sheet over the move of its centre.
+  for (const auto& [i, a] : loads_) load_work_ += 0.5 * (lambda_ + lambda) * a * increment_(i);
+  std::vector<Eigen::Vector3d> force_before;
+  if (contact_)
+    for (int i = 0; i < contact_->tools(); ++i) force_before.push_back(contact_->committed_summary(i).force_on_sheet);
   // The last evaluation was at the accepted iterate: its element trial states are the ones to keep.
   x_ = xi_;
   d_ = di_;
+  std::vector<double> thickness_before;
+  if (contact_)
+    for (int e = 0; e < num_elements(); ++e) thickness_before.push_back(element_thickness(e));
   for (auto& el : elements_) el.commit();
   if (contact_) {
     contact_->commit();
+    const std::vector<double> fn = contact_->element_normal_force();
+    for (int e = 0; e < num_elements(); ++e) {
+      const auto ue = static_cast<std::size_t>(e);
+      if (fn[ue] != 0.0) offset_release_ -= fn[ue] * 0.5 * (element_thickness(e) - thickness_before[ue]);
+    }
+    for (std::size_t i = 0; i < tools_.size(); ++i) {
+      const Eigen::Vector3d after = contact_->committed_summary(static_cast<int>(i)).force_on_sheet;
+      tool_work_ += 0.5 * (force_before[i] + after).dot(tools_[i].centre - tools_[i].centre_committed);
+    }
     for (auto& t : tools_) t.centre_committed = t.centre;
   }
   increment_.setZero();
@@ -317,6 +335,32 @@ void ShellModel::save_state(io::BinaryWriter& w) const {
     w.vec3(t.spin);
   }
   if (contact_) contact_->save_state(w);
+  w.f64(tool_work_);
+  w.f64(load_work_);
+  w.f64(offset_release_);
+}
+
+ModelEnergies ShellModel::energies() const {
+  ModelEnergies out;
+  out.external_work = tool_work_ + load_work_;
+  for (int e = 0; e < num_elements(); ++e) {
+    const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+    element::NodeVectors x, d;
+    for (std::size_t i = 0; i < 4; ++i) {
+      x[i] = x_[static_cast<std::size_t>(q[i])];
+      d[i] = d_[static_cast<std::size_t>(q[i])];
+    }
+    const element::ElementEnergy ee = elements_[static_cast<std::size_t>(e)].energy(x, d);
+    out.elastic += ee.elastic;
+    out.plastic += ee.plastic;
+    out.transverse_shear += ee.transverse_shear;
+  }
+  if (contact_) {
+    out.contact_stored = contact_->stored_energy();
+    out.friction_dissipation = contact_->friction_dissipation();
+    out.contact_offset_release = offset_release_;
+  }
+  return out;
 }
 
 void ShellModel::load_state(io::BinaryReader& r) {
@@ -340,6 +384,9 @@ void ShellModel::load_state(io::BinaryReader& r) {
     t.spin = r.vec3();
   }
   if (contact_) contact_->load_state(r);
+  tool_work_ = r.f64();
+  load_work_ = r.f64();
+  offset_release_ = r.f64();
   revert();  // iterate and trial = committed
 }
 

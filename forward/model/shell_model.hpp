@@ -24,6 +24,27 @@ struct ShellModelOptions {
   double max_thickness_over_length = 3.0;
 };
 
+// Energy account of the committed state [N mm] (SPEC §4: checks). Static implicit solution:
+// no kinetic energy. external_work = the tool's (and its copies') work on the sheet, the
+// trapezoidal sum over the increments of (f_old + f_new) / 2 . (change of the tool centre),
+// plus the work of the nodal loads; a spinning tool's torque is not counted.
+// contact_offset_release: the tool-side surface sits h/2 from the mid-surface with the
+// committed thickness h; when h changes at a commit (constant-volume update) that surface
+// moves under the loaded contact points and their penalty energy changes by about
+// -(normal force) x (change of h/2) without any work: a plane-stress shell has no
+// through-thickness stress to do that work. The balance
+//   external_work = elastic + plastic + transverse_shear + contact_stored
+//                   + friction_dissipation + contact_offset_release
+// holds up to the trapezoidal rule's error (balance_error).
+struct ModelEnergies {
+  double external_work = 0.0, elastic = 0.0, plastic = 0.0, transverse_shear = 0.0;
+  double contact_stored = 0.0, friction_dissipation = 0.0, contact_offset_release = 0.0, kinetic = 0.0;
+  double internal() const { return elastic + plastic + transverse_shear; }
+  double balance_error() const {
+    return external_work - internal() - contact_stored - friction_dissipation - contact_offset_release - kinetic;
+  }
+};
+
 class ShellModel final : public solver::NonlinearProblem {
  public:
   // Throws std::invalid_argument for a degenerate element (naming it), t/l above the limit,
@@ -98,6 +119,7 @@ class ShellModel final : public solver::NonlinearProblem {
   double load_factor() const { return lambda_; }
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
   std::vector<double> nodal_thickness() const;
+  ModelEnergies energies() const;
   // Lumped mass per node, Jetteur's diagonal matrix (thesis eqs. 6.61-6.62): translational
   // m_I (area share x thickness x density); rotational about the in-plane axes c m_I with
   // c = max(t^2/12, S/18) (bending and membrane frequencies of a rectangular sheet, S the
@@ -133,6 +155,8 @@ class ShellModel final : public solver::NonlinearProblem {
   std::vector<double> copies_deg_;
   std::vector<Eigen::Matrix3d> copy_rotations_{Eigen::Matrix3d::Identity()};  // one per tool: [0] = identity
   double spin_per_load_factor_ = 0.0;
+  double tool_work_ = 0.0, load_work_ = 0.0;  // committed external work [N mm] (ModelEnergies)
+  double offset_release_ = 0.0;                // ModelEnergies::contact_offset_release [N mm]
   // Moves the real tool and its copies (rotated centres and spin).
   void place_tools(const Eigen::Vector3d& centre_committed, const Eigen::Vector3d& centre, const Eigen::Vector3d& spin);
   double element_thickness(int e) const;

@@ -14,8 +14,9 @@ namespace {
 
 constexpr char kKind[] = "cone-checkpoint";
 // Bump when the layout below or the meaning of the stored load factor changes (2: pie moves
-// shortened by ConeLoadMap, so a load factor of layout 1 is another point of the path).
-constexpr std::uint32_t kLayout = 2;
+// shortened by ConeLoadMap, so a load factor of layout 1 is another point of the path; 3: the
+// model's external work and the contact's frictional dissipation, ModelEnergies).
+constexpr std::uint32_t kLayout = 3;
 
 void save_rows(io::BinaryWriter& w, const std::vector<std::vector<double>>& rows) {
   w.i64(static_cast<std::int64_t>(rows.size()));

@@ -111,16 +111,23 @@ class ForceLog {
   ForceLog(const ConeScene& s, const ConeTrack& track, const io::OutputDirectory& out)
       : scene_(s), track_(track), out_(out),
         csv_({"time [s]", "tool_x [mm]", "tool_y [mm]", "tool_z [mm]", "theta [deg]", "Fx [N]", "Fy [N]", "Fz [N]", "Fr [N]",
-              "Ftheta [N]", "stage", "contour", "move", "max_penetration [mm]", "iterations"}) {}
+              "Ftheta [N]", "stage", "contour", "move", "max_penetration [mm]", "iterations"}),
+        energy_csv_({"travel [mm]", "external_work [N mm]", "elastic [N mm]", "plastic [N mm]", "transverse_shear [N mm]",
+                     "contact_stored [N mm]", "friction_dissipation [N mm]", "contact_offset_release [N mm]",
+                     "balance_error [N mm]"}) {}
 
-  void add(double s, double time, const Eigen::Vector3d& centre, const Eigen::Vector3d& f, double penetration, int iterations) {
+  void add(double s, double time, const Eigen::Vector3d& centre, const Eigen::Vector3d& f, double penetration, int iterations,
+           const model::ModelEnergies& en) {
     const Eigen::Vector3d fp = polar_components(f, centre);
     const toolpath::ConeSegment& seg = track_.segment_at(s);
     const double theta = std::atan2(centre.y(), centre.x()) * 180.0 / std::numbers::pi;
     std::vector<double> row{time, centre.x(), centre.y(), centre.z(), theta, f.x(), f.y(), f.z(), fp.x(), fp.y(), static_cast<double>(seg.stage),
                             static_cast<double>(seg.contour), static_cast<double>(static_cast<int>(seg.move)), penetration,
-                            static_cast<double>(iterations)};
-    csv_.add_row(row);
+                            static_cast<double>(iterations),
+                            // energies.csv (kForceColumns onwards)
+                            s, en.external_work, en.elastic, en.plastic, en.transverse_shear, en.contact_stored,
+                            en.friction_dissipation, en.contact_offset_release, en.balance_error()};
+    add_csv_rows(row);
     rows_.push_back(std::move(row));
     samples_.push_back({s, f, fp});
     for (int i = 0; i < 3; ++i) {
@@ -142,6 +149,11 @@ class ForceLog {
     out_.write_file("contours.csv", "# spifit cone scene " + scene_.name +
                                         ": mean force over the central third of each completed contour (by travel; thesis §8.3)\n" +
                                         means.str());
+    out_.write_file("energies.csv", "# spifit cone scene " + scene_.name +
+                                         ": energy account of the (pie) model after each increment (model::ModelEnergies), N mm; "
+                                         "external work = the tool's and its copies' work on the sheet (trapezoidal rule); "
+                                         "kinetic energy 0 (static implicit); balance_error = external_work - the other columns\n" +
+                                         energy_csv_.str());
   }
   ContourMean contour_mean(int k) const { return contour_means(track_, samples_, k + 1).back(); }
   std::vector<ContourMean> means(int contours_completed) const { return contour_means(track_, samples_, contours_completed); }
@@ -153,7 +165,7 @@ class ForceLog {
     log->peak_polar = peak_polar_;
   }
   void restore(const ConeRunLog& log) {
-    for (const auto& row : log.force_rows) csv_.add_row(row);
+    for (const auto& row : log.force_rows) add_csv_rows(row);
     rows_ = log.force_rows;
     samples_ = log.samples;
     peak_ = log.peak;
@@ -163,11 +175,17 @@ class ForceLog {
   const Eigen::Vector3d& peak_polar() const { return peak_polar_; }
 
  private:
+  static constexpr std::size_t kForceColumns = 15;  // the rest of a row goes to energies.csv
+  void add_csv_rows(const std::vector<double>& row) {
+    if (row.size() != kForceColumns + 9) throw std::logic_error("cone force log: row of " + std::to_string(row.size()) + " values");
+    csv_.add_row(std::vector<double>(row.begin(), row.begin() + kForceColumns));
+    energy_csv_.add_row(std::vector<double>(row.begin() + kForceColumns, row.end()));
+  }
   const ConeScene& scene_;
   const ConeTrack& track_;
   const io::OutputDirectory& out_;
-  io::CsvTable csv_;
-  std::vector<std::vector<double>> rows_;  // csv_'s rows as numbers (checkpoints)
+  io::CsvTable csv_, energy_csv_;
+  std::vector<std::vector<double>> rows_;  // csv_'s and energy_csv_'s rows as numbers (checkpoints)
   std::vector<ForceSample> samples_;
   Eigen::Vector3d peak_ = Eigen::Vector3d::Zero(), peak_polar_ = Eigen::Vector3d::Zero();
   Clock::time_point last_{};
@@ -284,7 +302,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
     const Eigen::Vector3d f = model.tool_force();
     const double pen = model.contact_summary().max_penetration;
     max_pen = std::max(max_pen, pen);
-    log.add(travel, time, model.tool().centre, f, pen, ir.iterations);
+    log.add(travel, time, model.tool().centre, f, pen, ir.iterations, model.energies());
     const int now_done = track.completed(travel);
     const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
     const bool contour_ended = done < now_done;
@@ -340,6 +358,20 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
                          {"polar_force", vec(ss.polar)},
                          {"fr_over_fz", ss.polar.x() / ss.polar.z()},
                          {"definition", "mean of the central-third contour means of the completed contours in the range (thesis §9.3)"}};
+  }
+  {
+    const model::ModelEnergies en = model.energies();
+    s["energies"] = {{"external_work", en.external_work},
+                     {"elastic", en.elastic},
+                     {"plastic", en.plastic},
+                     {"transverse_shear", en.transverse_shear},
+                     {"contact_stored", en.contact_stored},
+                     {"friction_dissipation", en.friction_dissipation},
+                     {"contact_offset_release", en.contact_offset_release},
+                     {"kinetic", en.kinetic},
+                     {"balance_error", en.balance_error()},
+                     {"relative_balance_error", en.external_work != 0.0 ? en.balance_error() / en.external_work : 0.0},
+                     {"units", "N mm (= mJ), the modelled pie only"}};
   }
   s["max_penetration"] = max_pen;
   s["contour_wall_seconds"] = contour_wall;

@@ -58,7 +58,7 @@ ConeReport run(const ConeScene& scene, const fs::path& dir, ConeRunOptions o = {
 
 // Everything but wall times and the checkpoint bookkeeping must be identical.
 void expect_same_outputs(const fs::path& ref, const ConeReport& ref_report, const fs::path& dir, const ConeReport& report) {
-  for (const char* f : {"force.csv", "contours.csv", "sections.csv", "stages.csv", "history.csv", "vtu/sheet.pvd"}) {
+  for (const char* f : {"force.csv", "energies.csv", "contours.csv", "sections.csv", "stages.csv", "history.csv", "vtu/sheet.pvd"}) {
     EXPECT_EQ(fs::exists(dir / f), fs::exists(ref / f)) << f;
     EXPECT_EQ(slurp(dir / f), slurp(ref / f)) << f << " differs";
   }
