@@ -59,7 +59,7 @@ ConeObservableLog::ConeObservableLog(const ConeScene& scene, const model::ShellM
       stage_ends_(stage_end_distances(track.path())),
       // The run's shells use the default Gauss rule with the scene's thickness points
       // (element_history_row checks the count against the element's layers).
-      rule_(element::make_thickness_rule(element::ThicknessRuleKind::gauss, scene.thickness_points)) {
+      rule_(element::make_thickness_rule(scene.thickness_rule, scene.thickness_points)) {
   std::filesystem::create_directories(out.path() / "sections");
   const auto axis = model.mesh().node_sets.find("axis");
   if (axis != model.mesh().node_sets.end() && !axis->second.empty()) centre_node_ = axis->second.front();

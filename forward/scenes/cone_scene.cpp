@@ -117,7 +117,7 @@ void read_sheet_table(const TomlTable& root, ConeScene& s) {
   if (sh) {
     sh->allow_only({"thickness", "clamp_radius", "clamp_rotations", "elements_per_45deg", "core_radius", "radial_elements",
                     "radial_grading", "band_inner", "band_outer", "band_factor", "max_sector_deg", "ring_start",
-                    "transition_elements", "rim_ring_width", "thickness_points"});
+                    "transition_elements", "rim_ring_width", "thickness_points", "thickness_rule"});
     positive(*sh, "thickness", &s.thickness);
     positive(*sh, "clamp_radius", &s.clamp_radius);
     if (sh->has("clamp_radius") && !(s.clamp_radius > top))
@@ -146,6 +146,12 @@ void read_sheet_table(const TomlTable& root, ConeScene& s) {
     if (!(m.rim_ring_width >= 0.0)) sh->fail("rim_ring_width", "must be >= 0 (0: none)");
     s.thickness_points = sh->integer("thickness_points", s.thickness_points);
     if (s.thickness_points < 1 || s.thickness_points > 11) sh->fail("thickness_points", "unsupported number of thickness points (1 to 11)");
+    if (sh->has("thickness_rule")) {
+      if (!element::thickness_rule_from_string(sh->string("thickness_rule"), &s.thickness_rule))
+        sh->fail("thickness_rule", "expected \"gauss\" or \"surface\"");
+      if (s.thickness_rule == element::ThicknessRuleKind::surface && (s.thickness_points < 3 || s.thickness_points % 2 == 0))
+        sh->fail("thickness_rule", "the surface rule needs an odd number of thickness points >= 3");
+    }
   }
 }
 

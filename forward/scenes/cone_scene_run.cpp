@@ -85,7 +85,8 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const Cone
   j["model"] = {{"elements", model.num_elements()},       {"nodes", model.num_nodes()},
                 {"pie_angle", s.pie_angle},               {"clamp_radius", s.clamp_radius},
                 {"clamp_rotations", s.clamp_rotations},   {"thickness", s.thickness},
-                {"thickness_points", s.thickness_points}, {"elements_per_45deg", s.mesh.elements_per_45deg},
+                {"thickness_points", s.thickness_points}, {"thickness_rule", element::to_string(s.thickness_rule)},
+                {"elements_per_45deg", s.mesh.elements_per_45deg},
                 {"virtual_tools_deg", model.tool_copies_deg()}};
   json stages = json::array();
   for (const auto& o : s.stages)
@@ -228,6 +229,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   const mesh::Mesh mesh = cone_scene_mesh(scene);
   model::ShellModelOptions mo;
   mo.shell.thickness_points = scene.thickness_points;
+  mo.shell.thickness_rule = scene.thickness_rule;
   model::ShellModel model(mesh, scene.thickness, scene.card.params, mo);
   const ConeTrack track(cone_scene_path(scene));
   const toolpath::ToolPath& path = track.path().path;

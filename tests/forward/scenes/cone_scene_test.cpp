@@ -115,7 +115,7 @@ TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
 }
 
 TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
-  const fs::path f = write_scene("preset", "[cone]\npreset = \"cone70\"\ncontours = 3\n[sheet]\nelements_per_45deg = 16\n");
+  const fs::path f = write_scene("preset", "[cone]\npreset = \"cone70\"\ncontours = 3\n[sheet]\nelements_per_45deg = 16\nthickness_rule = \"surface\"\n");
   const ConeScene s = read_cone_scene(f.string());
   ASSERT_EQ(s.stages.size(), 1u);
   EXPECT_EQ(s.stages[0].contours, 3);
@@ -123,6 +123,7 @@ TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
   EXPECT_DOUBLE_EQ(s.pie_angle, 45.0);
   EXPECT_DOUBLE_EQ(s.thickness, 1.2);
   EXPECT_DOUBLE_EQ(s.clamp_radius, 91.5);
+  EXPECT_EQ(s.thickness_rule, element::ThicknessRuleKind::surface);
   EXPECT_EQ(cone_scene_mesh(s).node_sets.count("edge_theta1"), 1u);
   const fs::path v = write_scene("vwall", "[cone]\npreset = \"vwall\"\nstages = 2\npie_angle = 90.0\n[sheet]\nelements_per_45deg = 8\n");
   const ConeScene w = read_cone_scene(v.string());
@@ -249,6 +250,8 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
       {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [60, 80]\n", "output.steady_state", "", "<= 60"},
       {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [5]\n", "output.steady_state", "", "[from, to]"},
       {"[cone]\npreset = \"cone70\"\n[solver]\nmove_increments = -1\n", "solver.move_increments", "-1", "[0, 1000]"},
+      {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"lobatto\"\n", "sheet.thickness_rule", "\"lobatto\"", "\"surface\""},
+      {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"surface\"\nthickness_points = 4\n", "sheet.thickness_rule", "", "odd number"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nmax_sector_deg = 60.0\n", "sheet.max_sector_deg", "60", "45 or 90"},
       {"[cone]\npreset = \"vwall\"\n[sheet]\nring_start = 10.0\ncore_radius = 26.0\n", "sheet", "", "ring_start must lie beyond the core"},
   };
