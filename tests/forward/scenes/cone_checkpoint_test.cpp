@@ -9,6 +9,7 @@
 #include "forward/io/text_file.hpp"
 #include "forward/scenes/cone_checkpoint.hpp"
 #include "forward/scenes/cone_scene.hpp"
+#include "tests/support/csv_rows.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -83,18 +84,10 @@ void expect_same_outputs(const fs::path& ref, const ConeReport& ref_report, cons
 int increments_to_first_contour(const ConeScene& scene, const fs::path& ref) {
   const ConeTrack track(cone_scene_path(scene));
   const double end = track.contours().at(0).end;
-  std::ifstream in(ref / "force.csv");
   int row = 0;
-  bool header = true;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
+  for (const auto& r : test::read_csv_rows(ref / "force.csv")) {
     ++row;
-    const double time = std::stod(line.substr(0, line.find(',')));
-    if (time * scene.feed >= end - 1e-9) return row;
+    if (r.at(0) * scene.feed >= end - 1e-9) return row;  // time [s] x feed = travel
   }
   return -1;
 }

@@ -4,6 +4,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/cone_load_map.hpp"
 #include "forward/scenes/cone_scene.hpp"
+#include "tests/support/csv_rows.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -35,23 +36,7 @@ const char* kTiny =
     "[sheet]\nthickness = 1.0\nelements_per_45deg = 8\nthickness_points = 3\n"
     "[solver]\ntravel_per_increment = 0.5\n";
 
-std::vector<std::vector<double>> read_rows(const fs::path& csv) {
-  std::ifstream in(csv);
-  std::vector<std::vector<double>> rows;
-  bool header = true;
-  for (std::string line; std::getline(in, line);) {
-    if (line.empty() || line[0] == '#') continue;
-    if (header) {
-      header = false;
-      continue;
-    }
-    std::vector<double> row;
-    std::stringstream ss(line);
-    for (std::string cell; std::getline(ss, cell, ',');) row.push_back(std::stod(cell));
-    rows.push_back(row);
-  }
-  return rows;
-}
+std::vector<std::vector<double>> read_rows(const fs::path& csv) { return test::read_csv_rows(csv); }
 
 TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
   const fs::path file = write_scene("tiny", std::string(kTiny) + "[output]\nsteady_state = [1, 1]\n");
