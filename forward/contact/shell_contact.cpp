@@ -76,6 +76,25 @@ Eigen::Vector3d ShellContact::surface_point(const ContactOptions& o, const Eigen
   return surface_of(p.data(), N, offset, o.surface == ContactOptions::Surface::phong);
 }
 
+double ShellContact::surface_penetration(const ContactOptions& o, const element::NodeVectors& x, const element::NodeVectors& d,
+                                         double offset, const SphereTool& tool, int samples) {
+  if (samples < 2) throw std::invalid_argument("contact: surface_penetration needs >= 2 samples per direction");
+  Eigen::Vector3d centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
+  double radius = 0.0;
+  for (const auto& xi : x) radius = std::max(radius, (xi - centre).norm());
+  if ((centre - tool.centre).norm() > tool.radius + radius + 2.0 * offset) return 0.0;
+  const auto p = pack(x, d);
+  const bool phong = o.surface == ContactOptions::Surface::phong;
+  double deepest = 0.0;
+  for (int j = 0; j < samples; ++j)
+    for (int i = 0; i < samples; ++i) {
+      const double xi = -1.0 + 2.0 * i / (samples - 1), eta = -1.0 + 2.0 * j / (samples - 1);
+      const Eigen::Vector4d N = element::quad_shape(xi, eta);
+      deepest = std::max(deepest, tool.radius - (surface_of(p.data(), N, offset, phong) - tool.centre).norm());
+    }
+  return deepest;
+}
+
 ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options, int tools)
     : options_(options), mesh_(&mesh), tools_(tools) {
   if (tools < 1) throw std::invalid_argument("contact: the number of tools must be >= 1");

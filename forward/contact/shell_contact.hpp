@@ -73,6 +73,13 @@ class ShellContact {
   // tool-side surface of the given options: exposed for tests.
   static Eigen::Vector3d surface_point(const ContactOptions& o, const Eigen::Vector4d& N, const element::NodeVectors& x,
                                        const element::NodeVectors& d, double offset);
+  // Largest penetration of the tool into an element's tool-side surface, sampled on a
+  // samples x samples grid over the whole element (edges included; 0 when the tool misses it).
+  // The contact points see only their own penetration: where this exceeds theirs, the tool
+  // sinks between them (too few points for the element's current size; output
+  // surface_penetration of the cone scenes).
+  static double surface_penetration(const ContactOptions& o, const element::NodeVectors& x, const element::NodeVectors& d,
+                                    double offset, const SphereTool& tool, int samples = 11);
 
   // Sum over the committed contact points of one tool (element order: deterministic), in the
   // sheet's frame.

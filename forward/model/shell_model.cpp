@@ -196,6 +196,23 @@ contact::ContactSummary ShellModel::contact_summary() const {
   return out;
 }
 
+double ShellModel::surface_penetration() const {
+  if (!contact_) return 0.0;
+  double deepest = contact_summary().max_penetration;
+  for (int e = 0; e < mesh_->num_elements(); ++e) {
+    const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+    element::NodeVectors x, d;
+    for (std::size_t i = 0; i < 4; ++i) {
+      x[i] = x_[static_cast<std::size_t>(q[i])];
+      d[i] = d_[static_cast<std::size_t>(q[i])];
+    }
+    const double offset = 0.5 * element_thickness(e);
+    for (const contact::SphereTool& tool : tools_)
+      deepest = std::max(deepest, contact::ShellContact::surface_penetration(contact_->options(), x, d, offset, tool));
+  }
+  return deepest;
+}
+
 void ShellModel::begin_increment(double lambda0, double lambda1) {
   if (!contact_) return;
   place_tools(tool_path_(lambda0), tool_path_(lambda1), Eigen::Vector3d(0.0, 0.0, spin_per_load_factor_ * (lambda1 - lambda0)));

@@ -85,6 +85,11 @@ class ShellModel final : public solver::NonlinearProblem {
   // sheet: the real tool's own contact plus each copy's contact rotated back by the copy's
   // angle (see shell_model.cpp). Without copies: the plain sum over the contact points.
   contact::ContactSummary contact_summary() const;
+  // Largest penetration of any tool into the committed tool-side surface, sampled over every
+  // element near a tool (ShellContact::surface_penetration) and never below the contact
+  // points' own: the depth the tool reaches, against contact_summary().max_penetration, the
+  // depth the points feel. 0 without contact.
+  double surface_penetration() const;
   // Committed contact of tool i alone (0: the real tool; i >= 1: copy i - 1 of
   // tool_copies_deg()), in the sheet's frame (not rotated back).
   contact::ContactSummary contact_summary_of_tool(int i) const;

@@ -15,8 +15,9 @@ namespace {
 constexpr char kKind[] = "cone-checkpoint";
 // Bump when the layout below or the meaning of the stored load factor changes (2: pie moves
 // shortened by ConeLoadMap, so a load factor of layout 1 is another point of the path; 3: the
-// model's external work and the contact's frictional dissipation, ModelEnergies).
-constexpr std::uint32_t kLayout = 3;
+// model's external work and the contact's frictional dissipation, ModelEnergies; 4: force rows
+// with surface_penetration and the run's largest).
+constexpr std::uint32_t kLayout = 4;
 
 void save_rows(io::BinaryWriter& w, const std::vector<std::vector<double>>& rows) {
   w.i64(static_cast<std::int64_t>(rows.size()));
@@ -46,6 +47,7 @@ void save_log(io::BinaryWriter& w, const ConeRunLog& log) {
   w.i64(log.increments);
   w.i64(log.contours_done);
   w.f64(log.max_penetration);
+  w.f64(log.max_surface_penetration);
   w.f64s(log.contour_wall);
   w.f64(log.wall_seconds);
   w.i64(static_cast<std::int64_t>(log.vtu_steps.size()));
@@ -82,6 +84,7 @@ ConeRunLog load_log(io::BinaryReader& r) {
   log.increments = load_count(r, "increment count");
   log.contours_done = load_count(r, "contour count");
   log.max_penetration = r.f64();
+  log.max_surface_penetration = r.f64();
   log.contour_wall = r.f64s();
   log.wall_seconds = r.f64();
   const int steps = load_count(r, "VTU step count");

@@ -36,6 +36,7 @@ struct ConeRunLog {
   int increments = 0;                           // committed increments
   int contours_done = 0;                        // completed contours (sections written)
   double max_penetration = 0.0;
+  double max_surface_penetration = 0.0;
   std::vector<double> contour_wall;             // wall seconds at each completed contour
   double wall_seconds = 0.0;                    // wall time of the run up to the checkpoint
   std::vector<std::pair<double, std::string>> vtu_steps;  // vtu/sheet.pvd entries (time, file)

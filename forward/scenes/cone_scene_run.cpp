@@ -71,6 +71,17 @@ std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& tra
   return w;
 }
 
+// The tool reached clearly deeper into the tool-side surface than its contact points felt: it
+// sank between them (elements stretched beyond what points x points resolve).
+std::string contact_resolution_warning(double point_depth, double surface_depth, int points) {
+  if (!(surface_depth > 1.5 * point_depth)) return {};
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "the tool reached %.3g mm into the tool-side surface where its %d x %d contact points per element "
+                "felt at most %.3g mm: it sank between them (stretched elements); raise [contact] points", surface_depth, points,
+                points, point_depth);
+  return buf;
+}
+
 json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 json summary_head(const ConeScene& s, const model::ShellModel& model, const ConeTrack& track, const std::vector<std::string>& warnings) {
@@ -112,19 +123,19 @@ class ForceLog {
   ForceLog(const ConeScene& s, const ConeTrack& track, const io::OutputDirectory& out)
       : scene_(s), track_(track), out_(out),
         csv_({"time [s]", "tool_x [mm]", "tool_y [mm]", "tool_z [mm]", "theta [deg]", "Fx [N]", "Fy [N]", "Fz [N]", "Fr [N]",
-              "Ftheta [N]", "stage", "contour", "move", "max_penetration [mm]", "iterations"}),
+              "Ftheta [N]", "stage", "contour", "move", "max_penetration [mm]", "iterations", "surface_penetration [mm]"}),
         energy_csv_({"travel [mm]", "external_work [N mm]", "elastic [N mm]", "plastic [N mm]", "transverse_shear [N mm]",
                      "contact_stored [N mm]", "friction_dissipation [N mm]", "contact_offset_release [N mm]",
                      "balance_error [N mm]"}) {}
 
   void add(double s, double time, const Eigen::Vector3d& centre, const Eigen::Vector3d& f, double penetration, int iterations,
-           const model::ModelEnergies& en) {
+           double surface_penetration, const model::ModelEnergies& en) {
     const Eigen::Vector3d fp = polar_components(f, centre);
     const toolpath::ConeSegment& seg = track_.segment_at(s);
     const double theta = std::atan2(centre.y(), centre.x()) * 180.0 / std::numbers::pi;
     std::vector<double> row{time, centre.x(), centre.y(), centre.z(), theta, f.x(), f.y(), f.z(), fp.x(), fp.y(), static_cast<double>(seg.stage),
                             static_cast<double>(seg.contour), static_cast<double>(static_cast<int>(seg.move)), penetration,
-                            static_cast<double>(iterations),
+                            static_cast<double>(iterations), surface_penetration,
                             // energies.csv (kForceColumns onwards)
                             s, en.external_work, en.elastic, en.plastic, en.transverse_shear, en.contact_stored,
                             en.friction_dissipation, en.contact_offset_release, en.balance_error()};
@@ -176,7 +187,7 @@ class ForceLog {
   const Eigen::Vector3d& peak_polar() const { return peak_polar_; }
 
  private:
-  static constexpr std::size_t kForceColumns = 15;  // the rest of a row goes to energies.csv
+  static constexpr std::size_t kForceColumns = 16;  // the rest of a row goes to energies.csv
   void add_csv_rows(const std::vector<double>& row) {
     if (row.size() != kForceColumns + 9) throw std::logic_error("cone force log: row of " + std::to_string(row.size()) + " values");
     csv_.add_row(std::vector<double>(row.begin(), row.begin() + kForceColumns));
@@ -264,7 +275,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
 
   ForceLog log(scene, track, out);
   ConeObservableLog observables(scene, model, track, out);  // sections/, sections.csv, stages.csv, history.csv
-  double max_pen = restored.max_penetration;
+  double max_pen = restored.max_penetration, max_surface_pen = restored.max_surface_penetration;
   int increments = restored.increments, done = restored.contours_done;
   std::vector<double> contour_wall = restored.contour_wall;  // wall seconds at the end of each completed contour
   if (options.resume) {
@@ -287,6 +298,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
     cl.increments = increments;
     cl.contours_done = done;
     cl.max_penetration = max_pen;
+    cl.max_surface_penetration = max_surface_pen;
     cl.contour_wall = contour_wall;
     cl.wall_seconds = std::chrono::duration<double>(c0 - t0).count();
     cl.vtu_steps = pvd.entries();
@@ -304,7 +316,9 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
     const Eigen::Vector3d f = model.tool_force();
     const double pen = model.contact_summary().max_penetration;
     max_pen = std::max(max_pen, pen);
-    log.add(travel, time, model.tool().centre, f, pen, ir.iterations, model.energies());
+    const double surface_pen = model.surface_penetration();
+    max_surface_pen = std::max(max_surface_pen, surface_pen);
+    log.add(travel, time, model.tool().centre, f, pen, ir.iterations, surface_pen, model.energies());
     const int now_done = track.completed(travel);
     const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
     const bool contour_ended = done < now_done;
@@ -376,6 +390,9 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
                      {"units", "N mm (= mJ), the modelled pie only"}};
   }
   s["max_penetration"] = max_pen;
+  s["max_surface_penetration"] = max_surface_pen;
+  if (const std::string w = contact_resolution_warning(max_pen, max_surface_pen, scene.contact.points); !w.empty())
+    s["warnings"].push_back(w);
   s["contour_wall_seconds"] = contour_wall;
   s["checkpoints"] = {{"file", "checkpoint/state.bin"}, {"every_contours", scene.checkpoint_every}, {"written", checkpoints},
                       {"bytes", checkpoint_bytes}, {"write_seconds", checkpoint_seconds}};

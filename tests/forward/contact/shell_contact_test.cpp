@@ -168,6 +168,46 @@ TEST(ShellContact, PenetrationOutsideTheToolGivesNothing) {
   EXPECT_EQ(r.norm(), 0.0);
 }
 
+// A flat 10 x 10 mm element (tool side z = 0.25) and a 5 mm tool whose nose sinks 0.3 mm into
+// its middle. The 2 x 2 points sit 2.89 mm from the middle in x and y: 4.08 mm off the tool
+// axis, where the sphere is sqrt(25 - 16.7) = 2.88 mm above its nose, so they feel nothing; the
+// middle point of 3 x 3 feels the 0.3 mm. surface_penetration finds the 0.3 mm in both cases.
+TEST(ShellContact, SurfacePenetrationFindsAToolSunkBetweenThePoints) {
+  const mesh::Mesh m = mesh::strip(10.0, 10.0, 1, 1);
+  NodeVectors x, d;
+  for (std::size_t i = 0; i < 4; ++i) {
+    x[i] = m.nodes[static_cast<std::size_t>(m.quads[0][i])];
+    d[i] = Eigen::Vector3d::UnitZ();
+  }
+  const Eigen::Vector3d middle = 0.25 * (x[0] + x[1] + x[2] + x[3]);
+  const double offset = 0.25, R = 5.0, depth = 0.3;
+  SphereTool tool;
+  tool.radius = R;
+  tool.centre = tool.centre_committed = middle + Eigen::Vector3d(0.0, 0.0, offset + R - depth);
+  for (int points : {2, 3}) {
+    ContactOptions o;
+    o.points = points;
+    ShellContact c(m, o);
+    Vec24 r = Vec24::Zero();
+    ContactSummary cs;
+    c.element(0, x, d, x, d, offset, tool, &r, nullptr, &cs);
+    const double surface = ShellContact::surface_penetration(o, x, d, offset, tool);
+    std::printf("%d x %d points: deepest point %.4f mm, %d active; surface %.4f mm\n", points, points, cs.max_penetration,
+                cs.active_points, surface);
+    EXPECT_NEAR(surface, depth, 1e-12);  // the grid (11 x 11) has the middle
+    if (points == 2) {
+      EXPECT_EQ(cs.active_points, 0);
+      EXPECT_EQ(r.norm(), 0.0);
+    } else {
+      EXPECT_NEAR(cs.max_penetration, depth, 1e-12);
+    }
+  }
+  // A tool that misses the element: 0; fewer than 2 samples: an error.
+  tool.centre.z() += 1.0;
+  EXPECT_EQ(ShellContact::surface_penetration(ContactOptions{}, x, d, offset, tool), 0.0);
+  EXPECT_THROW(ShellContact::surface_penetration(ContactOptions{}, x, d, offset, tool, 1), std::invalid_argument);
+}
+
 // An elastic sheet (it cannot plough: no plastic wave ahead of the tool) indented 0.05 mm and
 // dragged 6 mm: once sliding, the tool's horizontal force is mu times its vertical force
 // (Coulomb), and zero at mu = 0. 0.5 mm elements and 3 x 3 contact points resolve the 0.7 mm

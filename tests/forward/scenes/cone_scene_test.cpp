@@ -61,8 +61,13 @@ TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
   const auto rows = read_rows(dir / "force.csv");
   ASSERT_EQ(static_cast<int>(rows.size()), s["increments"].get<int>());
   int on_contour = 0, pushed = 0;
+  double deepest_point = 0.0, deepest_surface = 0.0;
   for (const auto& row : rows) {
-    ASSERT_EQ(row.size(), 15u);
+    ASSERT_EQ(row.size(), 16u);
+    // The tool's depth in the tool-side surface includes the contact points' depth.
+    EXPECT_GE(row[15], row[13]);
+    deepest_point = std::max(deepest_point, row[13]);
+    deepest_surface = std::max(deepest_surface, row[15]);
     const double x = row[1], y = row[2], theta = std::atan2(y, x);
     const double fx = row[5], fy = row[6], fz = row[7], fr = row[8], ft = row[9];
     const double scale = std::max(1.0, std::hypot(fx, fy));
@@ -80,6 +85,9 @@ TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
   // neighbour (the pie's cyclic image) formed at the start of the contour.
   EXPECT_GT(on_contour, 5);
   EXPECT_GT(pushed, 0.8 * on_contour);
+  EXPECT_DOUBLE_EQ(s["max_penetration"].get<double>(), deepest_point);
+  EXPECT_DOUBLE_EQ(s["max_surface_penetration"].get<double>(), deepest_surface);
+  EXPECT_GT(deepest_surface, 0.0);
   const auto means = read_rows(dir / "contours.csv");
   ASSERT_EQ(means.size(), 1u);
   EXPECT_GT(means[0][5], 0.0);  // mean Fz over the central third
