@@ -196,6 +196,16 @@ contact::ContactSummary ShellModel::contact_summary() const {
   return out;
 }
 
+std::string ShellModel::describe_dof(int dof) const {
+  const int node = dof / 6, k = dof % 6;
+  if (dof < 0 || node >= static_cast<int>(x_.size())) return "DOF " + std::to_string(dof);
+  const Eigen::Vector3d& p = x_[static_cast<std::size_t>(node)];
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "node %d (%.4g, %.4g, %.4g) %s %c", node, p.x(), p.y(), p.z(), k < 3 ? "displacement" : "rotation",
+                "xyz"[k % 3]);
+  return buf;
+}
+
 double ShellModel::surface_penetration() const {
   if (!contact_) return 0.0;
   double deepest = contact_summary().max_penetration;

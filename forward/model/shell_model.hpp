@@ -53,6 +53,8 @@ class ShellModel final : public solver::NonlinearProblem {
              const ShellModelOptions& options);
 
   static int dof(int node, int component) { return 6 * node + component; }
+  // "node N (x, y, z) displacement|rotation x|y|z" at the committed configuration.
+  std::string describe_dof(int dof) const override;
   const mesh::Mesh& mesh() const { return *mesh_; }
   int num_nodes() const { return mesh_->num_nodes(); }
   int num_elements() const { return mesh_->num_elements(); }

@@ -184,6 +184,14 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
       return false;
     }
     const Eigen::VectorXd dfree = constraints_.expand(du);
+    // Where the correction is largest: named in the message if the increment fails.
+    auto largest_correction = [&]() {
+      Eigen::Index k = 0;
+      if (dfree.size() > 0) dfree.cwiseAbs().maxCoeff(&k);
+      char b[64];
+      std::snprintf(b, sizeof b, "largest correction %.3g at ", dfree.size() > 0 ? dfree(k) : 0.0);
+      return std::string(b) + problem_.describe_dof(static_cast<int>(k));
+    };
     // A trial where an element fails is halved (always). Optional energy line search on
     // s(alpha) = du . r(alpha) (secant steps, alpha in [0.1, 1]).
     const double s0 = du.dot(r);
@@ -218,6 +226,7 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     if (!std::isfinite(rel) || rel > 1e10) {
       failure->ok = false;
       failure->reason = "Newton iterations diverged (relative residual " + std::to_string(rel) + ")";
+      failure->where = largest_correction();
       failure->suggested_scale = options_.cutback;
       return false;
     }
@@ -233,9 +242,11 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
       std::snprintf(buf, sizeof buf, "Newton iterations diverging (relative residual %.3g after %d iterations, %.3g at the start)", rel, it, r0);
       failure->ok = false;
       failure->reason = buf;
+      failure->where = largest_correction();
       failure->suggested_scale = options_.cutback;
       return false;
     }
+    if (it == options_.max_iterations) failure->where = largest_correction();
   }
   failure->ok = false;
   char buf[160];

@@ -39,6 +39,8 @@ class NonlinearProblem {
   // Displacement-like value of each DOF in the iterate relative to the committed state
   // (prescribed DOFs are driven to their targets through it).
   virtual Eigen::VectorXd increment_from_committed() const = 0;
+  // Names a DOF for messages (where a Newton correction was largest when an increment failed).
+  virtual std::string describe_dof(int dof) const { return "DOF " + std::to_string(dof); }
 };
 
 }  // namespace spifit::solver

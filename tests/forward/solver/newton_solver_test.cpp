@@ -162,6 +162,10 @@ TEST(NewtonSolver, StopsAtTheMinimumIncrementAndSaysWhereAndWhy) {
   EXPECT_FALSE(r.converged);
   EXPECT_NE(r.message.find("minimum increment"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find("no convergence in 1 iterations"), std::string::npos) << r.message;
+  std::printf("%s\n", r.message.c_str());
+  // Where: the node and component of the largest Newton correction (ShellModel::describe_dof).
+  EXPECT_NE(r.message.find("largest correction"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find(" at node "), std::string::npos) << r.message;
   EXPECT_GT(r.cutbacks, 0);
 }
 
