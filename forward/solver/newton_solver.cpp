@@ -174,6 +174,9 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
   const double r0 = a.residual.norm() / std::max({f_ext.norm(), a.reaction_norm, a.residual.norm(), 1e-300});
   report->residual_norms.push_back(r0);
   Eigen::VectorXd r = a.residual;
+  // At the minimum increment a failure ends the run: the force test alone decides there, and
+  // no divergence cut-back is taken (there is nothing smaller to cut back to).
+  const bool final_size = options_.force_only_at_minimum && dl_ <= options_.min_increment * (1.0 + 1e-12);
   for (int it = 1; it <= options_.max_iterations; ++it) {
     Eigen::VectorXd du;
     std::string error;
@@ -237,7 +240,11 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     if (rel <= options_.force_tolerance && (step <= options_.displacement_tolerance * std::max(inc, 1e-300) ||
                                             rel <= 1e-3 * options_.force_tolerance))
       return true;
-    if (options_.divergence_after > 0 && it >= options_.divergence_after && rel > r0) {
+    if (final_size && rel <= options_.force_tolerance) {
+      report->force_only = true;
+      return true;
+    }
+    if (!final_size && options_.divergence_after > 0 && it >= options_.divergence_after && rel > r0) {
       char buf[160];
       std::snprintf(buf, sizeof buf, "Newton iterations diverging (relative residual %.3g after %d iterations, %.3g at the start)", rel, it, r0);
       failure->ok = false;

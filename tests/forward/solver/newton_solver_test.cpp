@@ -169,6 +169,70 @@ TEST(NewtonSolver, StopsAtTheMinimumIncrementAndSaysWhereAndWhy) {
   EXPECT_GT(r.cutbacks, 0);
 }
 
+// One unknown u with internal force k u + eps sign(u - u_step): a step of height 2 eps in the
+// force, like a few layer points switching between elastic and plastic. For an external force
+// inside the step's range no equilibrium exists and Newton cycles across the step with a
+// residual of 2 eps; for eps small against the load that residual meets the force tolerance.
+class SteppedSpring : public NonlinearProblem {
+ public:
+  SteppedSpring(double k, double eps, double u_step) : k_(k), eps_(eps), u_step_(u_step) {}
+  int num_dofs() const override { return 1; }
+  const std::vector<std::vector<int>>& element_dofs() const override { return dofs_; }
+  ElementEvaluation evaluate_element(int, Eigen::VectorXd* re, Eigen::MatrixXd* ke) override {
+    *re = Eigen::VectorXd::Constant(1, k_ * trial_ + (trial_ > u_step_ ? eps_ : -eps_));
+    if (ke) *ke = Eigen::MatrixXd::Constant(1, 1, k_);
+    return {};
+  }
+  Eigen::VectorXd external_forces(double lambda) const override { return Eigen::VectorXd::Constant(1, lambda); }
+  void set_trial(const Eigen::VectorXd& delta, double alpha) override { trial_ = iterate_ + alpha * delta(0); }
+  void accept_trial() override { iterate_ = trial_; }
+  void commit(double) override { committed_ = iterate_; }
+  void revert() override { trial_ = iterate_ = committed_; }
+  Eigen::VectorXd increment_from_committed() const override { return Eigen::VectorXd::Constant(1, iterate_ - committed_); }
+  double u() const { return committed_; }
+
+ private:
+  double k_, eps_, u_step_;
+  double committed_ = 0.0, iterate_ = 0.0, trial_ = 0.0;
+  std::vector<std::vector<int>> dofs_{{0}};
+};
+
+// The fine cone70 run stopped in contour 88 on such a cycle (docs/numerics-shell.md): at the
+// minimum increment the force test alone must decide, else the run ends on an iterate that
+// meets the force tolerance.
+TEST(NewtonSolver, AtTheMinimumIncrementTheForceTestAloneDecides) {
+  auto run = [](double eps, bool force_only) {
+    SteppedSpring spring(1.0, eps, 0.5);
+    DofConstraints c(1);
+    c.finalize();
+    NewtonOptions o;
+    o.initial_increment = o.min_increment = o.max_increment = 0.1;  // every increment is the smallest
+    o.force_tolerance = 1e-8;
+    o.displacement_tolerance = 1e-12;  // cannot be met while the iterate cycles
+    o.max_iterations = 10;
+    o.force_only_at_minimum = force_only;
+    NewtonSolver s(spring, c, o);
+    const NewtonSummary r = s.solve(0.5);  // the last load, 0.5, lies on the step
+    std::printf("eps %g, force_only_at_minimum %d: %s, u = %.12f\n", eps, force_only, r.message.c_str(), spring.u());
+    return std::make_pair(r, spring.u());
+  };
+  // Cycle residual 2e-9 against the load 0.5: 4e-9 <= 1e-8.
+  const auto [with_rule, u] = run(1e-9, true);
+  ASSERT_TRUE(with_rule.converged) << with_rule.message;
+  EXPECT_TRUE(with_rule.history.back().force_only);
+  EXPECT_FALSE(with_rule.history.front().force_only);  // the increments off the step converge fully
+  EXPECT_NEAR(u, 0.5, 2e-9);
+  const auto [without_rule, u0] = run(1e-9, false);
+  EXPECT_FALSE(without_rule.converged);
+  EXPECT_NE(without_rule.message.find("no convergence in 10 iterations"), std::string::npos) << without_rule.message;
+  (void)u0;
+  // A cycle whose residual misses the force tolerance still fails, rule or not.
+  const auto [too_large, u1] = run(1e-7, true);
+  EXPECT_FALSE(too_large.converged);
+  EXPECT_NE(too_large.message.find("minimum increment"), std::string::npos) << too_large.message;
+  (void)u1;
+}
+
 TEST(NewtonSolver, EnergyLineSearchIsUsedAndReachesTheSameSolution) {
   double z[2];
   int searches[2];
