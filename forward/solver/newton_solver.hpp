@@ -42,7 +42,7 @@ struct NewtonOptions {
   // and the divergence rule is off: the displacement test compares a correction with an
   // increment of almost nothing, which an iterate cycling between elastic and plastic states
   // at a few layer points never passes although its residual meets the force tolerance
-  // (docs/numerics-shell.md, "Convergence at the minimum increment").
+  // (docs/numerics-shell.md, "Global solution", Convergence).
   bool force_only_at_minimum = true;
   // Load factors that no increment steps over (increasing): an increment reaching past one
   // ends there instead, as at lambda_end; the increment size is not reduced by this.
