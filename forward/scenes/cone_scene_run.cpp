@@ -319,6 +319,9 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
     const double surface_pen = model.surface_penetration();
     max_surface_pen = std::max(max_surface_pen, surface_pen);
     log.add(travel, time, model.tool().centre, f, pen, ir.iterations, surface_pen, model.energies());
+    if (progress && ir.force_only)
+      std::fprintf(stderr, "  increment %d at travel %.6f mm accepted on the force test alone at the minimum increment (relative residual %.3g)\n",
+                   ir.index, travel, ir.residual_norms.empty() ? 0.0 : ir.residual_norms.back());
     const int now_done = track.completed(travel);
     const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
     const bool contour_ended = done < now_done;
