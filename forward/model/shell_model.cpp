@@ -13,6 +13,17 @@
 
 namespace spifit::model {
 
+namespace {
+// The four corners' positions and directors of element quad q, taken from node vectors xs, ds.
+void corner_vectors(const mesh::Quad& q, const std::vector<Eigen::Vector3d>& xs, const std::vector<Eigen::Vector3d>& ds,
+                    element::NodeVectors* x, element::NodeVectors* d) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    (*x)[i] = xs[static_cast<std::size_t>(q[i])];
+    (*d)[i] = ds[static_cast<std::size_t>(q[i])];
+  }
+}
+}  // namespace
+
 ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
                        const ShellModelOptions& options)
     : mesh_(&mesh), options_(options), law_(material), rule_(element::make_thickness_rule(options.shell.thickness_rule, options.shell.thickness_points)),
@@ -212,10 +223,7 @@ double ShellModel::surface_penetration() const {
   for (int e = 0; e < mesh_->num_elements(); ++e) {
     const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
     element::NodeVectors x, d;
-    for (std::size_t i = 0; i < 4; ++i) {
-      x[i] = x_[static_cast<std::size_t>(q[i])];
-      d[i] = d_[static_cast<std::size_t>(q[i])];
-    }
+    corner_vectors(q, x_, d_, &x, &d);
     const double offset = 0.5 * element_thickness(e);
     for (const contact::SphereTool& tool : tools_)
       deepest = std::max(deepest, contact::ShellContact::surface_penetration(contact_->options(), x, d, offset, tool));
@@ -237,10 +245,7 @@ double ShellModel::element_thickness(int e) const {
 solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
   const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
   element::NodeVectors x, d;
-  for (std::size_t i = 0; i < 4; ++i) {
-    x[i] = xt_[static_cast<std::size_t>(q[i])];
-    d[i] = dt_[static_cast<std::size_t>(q[i])];
-  }
+  corner_vectors(q, xt_, dt_, &x, &d);
   element::Vec24 r;
   element::Mat24 k;
   const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].compute(x, d, &r, ke ? &k : nullptr);
@@ -258,10 +263,7 @@ solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* r
     element::Vec24 rc = element::Vec24::Zero();
     element::Mat24 kc = element::Mat24::Zero();
     element::NodeVectors x0, d0;
-    for (std::size_t i = 0; i < 4; ++i) {
-      x0[i] = x_[static_cast<std::size_t>(q[i])];
-      d0[i] = d_[static_cast<std::size_t>(q[i])];
-    }
+    corner_vectors(q, x_, d_, &x0, &d0);
     bool touched = false;
     const double offset = 0.5 * element_thickness(e);
     for (std::size_t i = 0; i < tools_.size(); ++i)
@@ -373,10 +375,7 @@ ModelEnergies ShellModel::energies() const {
   for (int e = 0; e < num_elements(); ++e) {
     const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
     element::NodeVectors x, d;
-    for (std::size_t i = 0; i < 4; ++i) {
-      x[i] = x_[static_cast<std::size_t>(q[i])];
-      d[i] = d_[static_cast<std::size_t>(q[i])];
-    }
+    corner_vectors(q, x_, d_, &x, &d);
     const element::ElementEnergy ee = elements_[static_cast<std::size_t>(e)].energy(x, d);
     out.elastic += ee.elastic;
     out.plastic += ee.plastic;
