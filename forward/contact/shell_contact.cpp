@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -93,6 +94,15 @@ double ShellContact::surface_penetration(const ContactOptions& o, const element:
       deepest = std::max(deepest, tool.radius - (surface_of(p.data(), N, offset, phong) - tool.centre).norm());
     }
   return deepest;
+}
+
+std::string ShellContact::resolution_warning(double point_depth, double surface_depth, int points) {
+  if (!(surface_depth > 1.5 * point_depth)) return {};
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "the tool reached %.3g mm into the tool-side surface where its %d x %d contact points per element "
+                "felt at most %.3g mm: it sank between them (stretched elements); raise [contact] points", surface_depth, points,
+                points, point_depth);
+  return buf;
 }
 
 ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options, int tools)

@@ -11,6 +11,7 @@
 
 #include <Eigen/Core>
 
+#include <string>
 #include <vector>
 
 namespace spifit::contact {
@@ -80,6 +81,9 @@ class ShellContact {
   // surface_penetration of the cone scenes).
   static double surface_penetration(const ContactOptions& o, const element::NodeVectors& x, const element::NodeVectors& d,
                                     double offset, const SphereTool& tool, int samples = 11);
+  // A warning when the tool reached clearly deeper (above 1.5x) into the tool-side surface than
+  // its points x points contact points per element felt, i.e. it sank between them; else "".
+  static std::string resolution_warning(double point_depth, double surface_depth, int points);
 
   // Sum over the committed contact points of one tool (element order: deterministic), in the
   // sheet's frame.

@@ -71,17 +71,6 @@ std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& tra
   return w;
 }
 
-// The tool reached clearly deeper into the tool-side surface than its contact points felt: it
-// sank between them (elements stretched beyond what points x points resolve).
-std::string contact_resolution_warning(double point_depth, double surface_depth, int points) {
-  if (!(surface_depth > 1.5 * point_depth)) return {};
-  char buf[320];
-  std::snprintf(buf, sizeof buf, "the tool reached %.3g mm into the tool-side surface where its %d x %d contact points per element "
-                "felt at most %.3g mm: it sank between them (stretched elements); raise [contact] points", surface_depth, points,
-                points, point_depth);
-  return buf;
-}
-
 json vec(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
 json summary_head(const ConeScene& s, const model::ShellModel& model, const ConeTrack& track, const std::vector<std::string>& warnings) {
@@ -394,7 +383,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   }
   s["max_penetration"] = max_pen;
   s["max_surface_penetration"] = max_surface_pen;
-  if (const std::string w = contact_resolution_warning(max_pen, max_surface_pen, scene.contact.points); !w.empty())
+  if (const std::string w = contact::ShellContact::resolution_warning(max_pen, max_surface_pen, scene.contact.points); !w.empty())
     s["warnings"].push_back(w);
   s["contour_wall_seconds"] = contour_wall;
   s["checkpoints"] = {{"file", "checkpoint/state.bin"}, {"every_contours", scene.checkpoint_every}, {"written", checkpoints},

@@ -10,6 +10,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace spifit::contact {
 namespace {
@@ -206,6 +207,21 @@ TEST(ShellContact, SurfacePenetrationFindsAToolSunkBetweenThePoints) {
   tool.centre.z() += 1.0;
   EXPECT_EQ(ShellContact::surface_penetration(ContactOptions{}, x, d, offset, tool), 0.0);
   EXPECT_THROW(ShellContact::surface_penetration(ContactOptions{}, x, d, offset, tool, 1), std::invalid_argument);
+}
+
+// The cone scenes' summary warning: above 1.5x the points' depth, naming both depths and the
+// point count; at or below it, nothing (the session-12 cone70 ratio 1.41 stays quiet).
+TEST(ShellContact, ResolutionWarningAboveOneAndAHalfTimesThePointsDepth) {
+  const std::string w = ShellContact::resolution_warning(0.177, 0.3, 2);
+  std::printf("%s\n", w.c_str());
+  EXPECT_NE(w.find("0.3 mm"), std::string::npos) << w;
+  EXPECT_NE(w.find("2 x 2 contact points"), std::string::npos) << w;
+  EXPECT_NE(w.find("0.177 mm"), std::string::npos) << w;
+  EXPECT_NE(w.find("[contact] points"), std::string::npos) << w;
+  EXPECT_EQ(ShellContact::resolution_warning(0.177, 0.250, 2), "");
+  EXPECT_EQ(ShellContact::resolution_warning(0.2, 0.3, 3), "");       // exactly 1.5x
+  EXPECT_NE(ShellContact::resolution_warning(0.2, 0.3001, 3), "");
+  EXPECT_EQ(ShellContact::resolution_warning(0.0, 0.0, 2), "");       // no contact
 }
 
 // An elastic sheet (it cannot plough: no plastic wave ahead of the tool) indented 0.05 mm and
