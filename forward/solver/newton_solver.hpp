@@ -44,6 +44,11 @@ struct NewtonOptions {
   // at a few layer points never passes although its residual meets the force tolerance
   // (docs/numerics-shell.md, "Global solution", Convergence).
   bool force_only_at_minimum = true;
+  // When the force test passes and the last correction fails the displacement test, the next
+  // correction is estimated with the last factorisation (one back-substitution with the
+  // previous iterate's tangent) and tested instead: quadratic convergence makes it far smaller
+  // than the last one, so the iteration that would only confirm it is saved.
+  bool estimate_next_correction = true;
   // Load factors that no increment steps over (increasing): an increment reaching past one
   // ends there instead, as at lambda_end; the increment size is not reduced by this.
   std::vector<double> breakpoints{};
@@ -63,6 +68,7 @@ struct IncrementReport {
   int line_searches = 0;
   bool extrapolated = false;  // started from the extrapolated predictor
   bool force_only = false;    // accepted on the force test alone at the minimum increment
+  bool estimated = false;     // the displacement test passed on the estimated next correction
   std::vector<double> residual_norms;  // relative, one per iteration (first: before the first correction)
   std::vector<double> correction_norms;  // |alpha du| of each iteration (reduced unknowns)
 };
@@ -134,6 +140,10 @@ class NewtonSolver {
   LinearSolver& umfpack();
   LinearSolver& cholmod();
   bool solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, std::string* error);
+  // A solve with the last factorisation (the tangent of the previous iterate): the next Newton
+  // correction's estimate. false if there is none or the solve fails.
+  bool solve_with_last_factor(const Eigen::VectorXd& rhs, Eigen::VectorXd* x);
+  LinearSolver* last_factor_ = nullptr;  // the solver holding the last successful factorisation
   // The increment loop from the stepping state to lambda_end (solve and resume).
   NewtonSummary run(double lambda_end, const IncrementCallback& callback);
   // Returns false (with a message) when the increment fails.
