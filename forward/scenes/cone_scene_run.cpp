@@ -99,7 +99,8 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const Cone
                   {"points", s.contact.points},
                   {"surface", s.contact.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"}};
   j["solver"] = {{"travel_per_increment", s.travel_per_increment}, {"move_increments", s.move_increments},
-                 {"line_search", s.line_search},                   {"extrapolate", s.extrapolate}};
+                 {"line_search", s.line_search},                   {"extrapolate", s.extrapolate},
+                 {"estimate_next_correction", s.estimate_next_correction}};
   j["warnings"] = warnings;
   j["status"] = "running";
   return j;
@@ -242,6 +243,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   model.set_tool_copies(tool_copies(scene));
   const solver::DofConstraints c = cone_constraints(scene, mesh, model.num_dofs());
   solver::NewtonOptions newton_options = tool_newton_options(scene, map.effective_length());
+  newton_options.estimate_next_correction = scene.estimate_next_correction;
   newton_options.breakpoints = map.breakpoints();
   solver::NewtonSolver solver(model, c, newton_options);
 

@@ -34,6 +34,7 @@ void read_solver_table(const io::TomlTable& so, const SolverFields& f) {
   std::vector<std::string> keys{"travel_per_increment", "max_iterations", "linear_solver", "extrapolate", "line_search",
                                  "force_tolerance", "displacement_tolerance"};
   if (f.move_increments) keys.push_back("move_increments");
+  if (f.estimate_next_correction) keys.push_back("estimate_next_correction");
   so.allow_only(keys);
   if (f.move_increments) {
     *f.move_increments = so.integer("move_increments", *f.move_increments);
@@ -53,6 +54,7 @@ void read_solver_table(const io::TomlTable& so, const SolverFields& f) {
     f.linear_solver = k;
   }
   f.extrapolate = so.boolean("extrapolate", f.extrapolate);
+  if (f.estimate_next_correction) *f.estimate_next_correction = so.boolean("estimate_next_correction", *f.estimate_next_correction);
   f.line_search = so.boolean("line_search", f.line_search);
   for (auto [key, v] : {std::pair{"force_tolerance", &f.force_tolerance}, std::pair{"displacement_tolerance", &f.displacement_tolerance}}) {
     *v = so.number(key, *v);

@@ -155,6 +155,30 @@ TEST(ConeLoadMap, ShortensEveryPieMoveToItsIncrementsAndInvertsExactly) {
   EXPECT_EQ(map.travel(1.0), length);
 }
 
+// [solver] estimate_next_correction (NewtonOptions): the tiny cone with and without it; the
+// contour mean force stays within the tolerances' reach and the iterations do not grow.
+TEST(ConeScene, EstimatedNextCorrectionKeepsTheForceWithFewerIterations) {
+  double fz[2] = {0.0, 0.0};
+  int iterations[2] = {0, 0};
+  for (int on : {0, 1}) {
+    const fs::path file = write_scene("estimate" + std::to_string(on), std::string(kTiny) + "estimate_next_correction = " + (on ? "true" : "false") + "\n");
+    const fs::path dir = temp("estimate_out" + std::to_string(on));
+    fs::remove_all(dir);
+    const ConeReport r = run_cone_scene(read_cone_scene(file.string()), io::OutputDirectory::prepare(dir.string(), true));
+    ASSERT_TRUE(r.ok) << r.summary.dump();
+    EXPECT_EQ(r.summary["solver"]["estimate_next_correction"].get<bool>(), on == 1);
+    iterations[on] = r.summary["newton_iterations"].get<int>();
+    const auto means = read_rows(dir / "contours.csv");
+    ASSERT_EQ(means.size(), 1u);
+    fz[on] = means[0][5];
+    fs::remove_all(dir);
+    fs::remove(file);
+  }
+  std::printf("tiny cone: %d / %d Newton iterations without / with the estimate, mean Fz %.6f / %.6f N\n", iterations[0], iterations[1], fz[0], fz[1]);
+  EXPECT_LT(iterations[1], iterations[0]);
+  EXPECT_NEAR(fz[1], fz[0], 1e-4 * std::abs(fz[0]));
+}
+
 // The move between two contours of the tiny cone in one increment (the default) instead of one
 // per 0.5 mm: the second contour's mean force hardly changes (the tool is in the air on the move).
 TEST(ConeScene, PieMoveInOneIncrementKeepsTheNextContoursForce) {
@@ -243,6 +267,7 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
       {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [60, 80]\n", "output.steady_state", "", "<= 60"},
       {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [5]\n", "output.steady_state", "", "[from, to]"},
       {"[cone]\npreset = \"cone70\"\n[solver]\nmove_increments = -1\n", "solver.move_increments", "-1", "[0, 1000]"},
+      {"[cone]\npreset = \"cone70\"\n[solver]\nestimate_next_correction = 1\n", "solver.estimate_next_correction", "1", "true or false"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"lobatto\"\n", "sheet.thickness_rule", "\"lobatto\"", "\"surface\""},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"surface\"\nthickness_points = 4\n", "sheet.thickness_rule", "", "odd number"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nmax_sector_deg = 60.0\n", "sheet.max_sector_deg", "60", "45 or 90"},
