@@ -171,8 +171,8 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
   bool first = true;
   if (try_predictor) {
     // The predicted iterate replaces the committed one when it is closer to equilibrium.
-    const Eigen::VectorXd predicted = ((lambda1 - lambda0) / last_dl_) * last_increment_;
-    problem_.set_trial(predicted + dg, 1.0);
+    const double scale = (lambda1 - lambda0) / last_dl_;
+    problem_.set_trial(scale * last_increment_ + dg, 1.0);
     Assembly p = assemble(lambda1, true, nullptr);
     if (p.failure.ok && p.residual.norm() < a.residual.norm()) {
       problem_.accept_trial();

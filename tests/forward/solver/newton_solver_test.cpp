@@ -23,27 +23,38 @@ material::MaterialParams<double> aluminium(bool plastic) {
   return p;
 }
 
-// A thick cantilever strip (10 x 1 x 1, 10 x 2 elements) under a large tip load, solved in one
-// increment (the solver may cut it back); returns the Newton corrections of the first
-// converged increment.
+// A thick cantilever strip (10 x 1 x 1, 10 x 2 elements), clamped at one end, with a load of
+// per_node along z on each of its three tip nodes.
+struct Cantilever {
+  Cantilever(bool plastic, double per_node)
+      : mesh(mesh::strip(10.0, 1.0, 10, 2)), model(mesh, 1.0, aluminium(plastic), {}), constraints(model.num_dofs()) {
+    for (int n : mesh.node_sets.at("clamped"))
+      for (int k = 0; k < 6; ++k) constraints.prescribe(ShellModel::dof(n, k));
+    for (int n : mesh.node_sets.at("tip")) model.add_nodal_load(ShellModel::dof(n, 2), per_node);
+    constraints.finalize();
+  }
+  Cantilever(const Cantilever&) = delete;  // the model points at the mesh
+  Cantilever& operator=(const Cantilever&) = delete;
+  double tip() const { return model.displacement(mesh.node_sets.at("tip_centre")[0]).z(); }
+  mesh::Mesh mesh;
+  ShellModel model;
+  DofConstraints constraints;
+};
+
+// The cantilever under a large tip load, solved in one increment (the solver may cut it back);
+// returns the Newton corrections of the first converged increment.
 std::vector<double> cantilever_corrections(bool plastic, double load) {
-  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 2);
-  ShellModel model(m, 1.0, aluminium(plastic), {});
-  DofConstraints c(model.num_dofs());
-  for (int n : m.node_sets.at("clamped"))
-    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
-  for (int n : m.node_sets.at("tip")) model.add_nodal_load(ShellModel::dof(n, 2), load / 3.0);
-  c.finalize();
+  Cantilever cant(plastic, load / 3.0);
   NewtonOptions o;
   o.initial_increment = o.max_increment = 1.0;
   o.max_iterations = 30;
   o.force_tolerance = 1e-9;
-  NewtonSolver s(model, c, o);
+  NewtonSolver s(cant.model, cant.constraints, o);
   const NewtonSummary summary = s.solve();
   EXPECT_TRUE(summary.converged) << summary.message;
   const IncrementReport& r = summary.history.at(0);
   std::printf("%s, tip load %g: tip deflection %.4f\n  residuals:", plastic ? "plastic" : "elastic", load,
-              model.displacement(m.node_sets.at("tip_centre")[0]).z());
+              cant.tip());
   for (double v : r.residual_norms) std::printf(" %.2e", v);
   std::printf("\n  corrections:");
   for (double v : r.correction_norms) std::printf(" %.2e", v);
@@ -78,18 +89,12 @@ struct CantileverRun {
 };
 
 CantileverRun cantilever_tip(bool estimate) {
-  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 2);
-  ShellModel model(m, 1.0, aluminium(false), {});
-  DofConstraints c(model.num_dofs());
-  for (int n : m.node_sets.at("clamped"))
-    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
-  for (int n : m.node_sets.at("tip")) model.add_nodal_load(ShellModel::dof(n, 2), 40.0);
-  c.finalize();
+  Cantilever cant(false, 40.0);
   NewtonOptions o;
   o.initial_increment = o.max_increment = 1.0;
   o.force_tolerance = o.displacement_tolerance = 1e-5;
   o.estimate_next_correction = estimate;
-  NewtonSolver s(model, c, o);
+  NewtonSolver s(cant.model, cant.constraints, o);
   const NewtonSummary summary = s.solve();
   EXPECT_TRUE(summary.converged) << summary.message;
   CantileverRun run;
@@ -105,7 +110,7 @@ CantileverRun cantilever_tip(bool estimate) {
       EXPECT_GT(r.correction_norms.back(), 1e-5);
     }
   }
-  run.tip = model.displacement(m.node_sets.at("tip_centre")[0]).z();
+  run.tip = cant.tip();
   std::printf(", tip %.10f\n", run.tip);
   return run;
 }
@@ -305,19 +310,13 @@ TEST(NewtonSolver, EnergyLineSearchIsUsedAndReachesTheSameSolution) {
 }
 
 TEST(NewtonSolver, IncrementsEndAtEveryBreakpointAndKeepTheirSize) {
-  // The elastic cantilever strip of cantilever_corrections() under a moderate tip load.
-  const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 2);
-  ShellModel model(m, 1.0, aluminium(false), {});
-  DofConstraints c(model.num_dofs());
-  for (int n : m.node_sets.at("clamped"))
-    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
-  for (int n : m.node_sets.at("tip")) model.add_nodal_load(ShellModel::dof(n, 2), 10.0);
-  c.finalize();
+  // The elastic cantilever strip under a moderate tip load.
+  Cantilever cant(false, 10.0);
   NewtonOptions o;
   o.initial_increment = o.max_increment = 0.25;
   // 0.5499: the increment from 0.3 would end 1e-4 short of it (< 1e-3 x 0.25) and reaches it instead.
   o.breakpoints = {0.1, 0.3, 0.5499, 0.7};
-  NewtonSolver s(model, c, o);
+  NewtonSolver s(cant.model, cant.constraints, o);
   std::vector<double> ends;
   const NewtonSummary r = s.solve(1.0, [&](const IncrementReport& ir) { return ends.push_back(ir.lambda), true; });
   ASSERT_TRUE(r.converged) << r.message;
