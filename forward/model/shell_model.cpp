@@ -133,7 +133,79 @@ Eigen::VectorXd ShellModel::internal_forces() {
     const auto& dofs = element_dofs_[static_cast<std::size_t>(e)];
     for (std::size_t a = 0; a < dofs.size(); ++a) f(dofs[a]) += re(static_cast<Eigen::Index>(a));
   }
+  rotate_to_frames(dt_, false, &f);  // evaluate_element works in the frames of the trial directors
   return f;
+}
+
+int ShellModel::use_nodal_rotation_frames(solver::DofConstraints* c) {
+  if (c->num_dofs() != num_dofs())
+    throw std::invalid_argument("nodal rotation frames: constraints of " + std::to_string(c->num_dofs()) + " DOFs for a model of " +
+                                std::to_string(num_dofs()));
+  if (c->finalized()) throw std::logic_error("nodal rotation frames: call before DofConstraints::finalize()");
+  const std::vector<char> master = c->master_flags();
+  const auto nn = static_cast<std::size_t>(num_nodes());
+  framed_.assign(nn, 0);
+  frame_t1_.assign(nn, Eigen::Vector3d::Zero());
+  int count = 0;
+  for (int n = 0; n < num_nodes(); ++n) {
+    bool free = true;
+    for (int k = 3; k < 6; ++k) {
+      const int i = dof(n, k);
+      free = free && !c->prescribed(i) && !c->tied(i) && !master[static_cast<std::size_t>(i)];
+    }
+    if (!free) continue;
+    // Reference frame: t1 = the global axis least aligned with the director, made normal to it
+    // (x for a flat sheet in the xy plane: the frame is then x, y, z itself).
+    const Eigen::Vector3d& d = d0_[static_cast<std::size_t>(n)];
+    Eigen::Index k = 0;
+    d.cwiseAbs().minCoeff(&k);
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(k);
+    frame_t1_[static_cast<std::size_t>(n)] = (e - e.dot(d) * d).normalized();
+    framed_[static_cast<std::size_t>(n)] = 1;
+    c->prescribe(dof(n, 5), 0.0);
+    ++count;
+  }
+  return count;
+}
+
+// The frame is carried from the reference director a to d by the shortest rotation (axis
+// a x d), R t = t + v x t + v x (v x t) / (1 + c) with v = a x d, c = a . d: smooth in d, so
+// nearby directors have nearby frames. Beyond 150 deg of turn (never met in forming) any
+// tangent will do: the frames are rebuilt from the directors at every use and nothing is
+// carried in them from one configuration to another except the predictor, which is stored
+// and used at the same directors.
+Eigen::Matrix3d ShellModel::rotation_frame(int node, const Eigen::Vector3d& d) const {
+  const auto n = static_cast<std::size_t>(node);
+  const Eigen::Vector3d& a = d0_[n];
+  const double c = a.dot(d);
+  Eigen::Vector3d t1;
+  if (c > -0.866) {
+    const Eigen::Vector3d& t = frame_t1_[n];
+    const Eigen::Vector3d v = a.cross(d);
+    t1 = t + v.cross(t) + v.cross(v.cross(t)) / (1.0 + c);
+  } else {
+    Eigen::Index k = 0;
+    d.cwiseAbs().minCoeff(&k);
+    t1 = Eigen::Vector3d::Unit(k);
+  }
+  t1 = (t1 - t1.dot(d) * d).normalized();
+  Eigen::Matrix3d q;
+  q.col(0) = t1;
+  q.col(1) = d.cross(t1);
+  q.col(2) = d;  // exactly the director the element uses: its drilling column is exactly decoupled
+  return q;
+}
+
+void ShellModel::rotate_to_frames(const std::vector<Eigen::Vector3d>& ds, bool to_frame, Eigen::VectorXd* v) const {
+  for (std::size_t n = 0; n < framed_.size(); ++n) {
+    if (!framed_[n]) continue;
+    auto seg = v->segment<3>(static_cast<Eigen::Index>(6 * n + 3));
+    if (seg.isZero(0.0)) continue;
+    const Eigen::Matrix3d q = rotation_frame(static_cast<int>(n), ds[n]);
+    const Eigen::Vector3d w = seg;
+    if (to_frame) seg.noalias() = q.transpose() * w;
+    else seg.noalias() = q * w;
+  }
 }
 
 void ShellModel::set_tool(double radius, ToolPathFunction path, const contact::ContactOptions& options, double spin_per_load_factor) {
@@ -212,6 +284,11 @@ std::string ShellModel::describe_dof(int dof) const {
   if (dof < 0 || node >= static_cast<int>(x_.size())) return "DOF " + std::to_string(dof);
   const Eigen::Vector3d& p = x_[static_cast<std::size_t>(node)];
   char buf[160];
+  if (k >= 3 && has_rotation_frame(node)) {
+    static const char* const axis[3] = {"t1", "t2", "normal"};
+    std::snprintf(buf, sizeof buf, "node %d (%.4g, %.4g, %.4g) rotation %s (nodal frame)", node, p.x(), p.y(), p.z(), axis[k - 3]);
+    return buf;
+  }
   std::snprintf(buf, sizeof buf, "node %d (%.4g, %.4g, %.4g) %s %c", node, p.x(), p.y(), p.z(), k < 3 ? "displacement" : "rotation",
                 "xyz"[k % 3]);
   return buf;
@@ -276,6 +353,19 @@ solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* r
       if (ke) k += ku;
     }
   }
+  if (!framed_.empty()) {
+    // Rotation rows and columns of framed nodes into their frames at the trial directors.
+    for (int I = 0; I < 4; ++I) {
+      if (!framed_[static_cast<std::size_t>(q[static_cast<std::size_t>(I)])]) continue;
+      const Eigen::Matrix3d f = rotation_frame(q[static_cast<std::size_t>(I)], d[static_cast<std::size_t>(I)]);
+      const int o = 6 * I + 3;
+      r.segment<3>(o) = (f.transpose() * r.segment<3>(o)).eval();
+      if (ke) {
+        k.middleRows<3>(o) = (f.transpose() * k.middleRows<3>(o)).eval();
+        k.middleCols<3>(o) = (k.middleCols<3>(o) * f).eval();
+      }
+    }
+  }
   *re = r;
   if (ke) *ke = k;
   return out;
@@ -284,16 +374,21 @@ solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* r
 Eigen::VectorXd ShellModel::external_forces(double lambda) const {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
   for (const auto& [i, a] : loads_) f(i) += lambda * a;
+  rotate_to_frames(dt_, true, &f);  // moments at framed nodes, as the element forces they balance
   return f;
 }
 
 void ShellModel::set_trial(const Eigen::VectorXd& delta, double alpha) {
+  // Rotations of framed nodes come in the frames of the iterate's directors (those of the
+  // tangent they were solved with).
+  Eigen::VectorXd step = alpha * delta;
+  rotate_to_frames(di_, false, &step);
   for (std::size_t n = 0; n < x_.size(); ++n) {
     const Eigen::Index o = static_cast<Eigen::Index>(6 * n);
-    xt_[n] = xi_[n] + alpha * delta.segment<3>(o);
-    dt_[n] = element::rotate_by_vector(di_[n], alpha * delta.segment<3>(o + 3));
+    xt_[n] = xi_[n] + step.segment<3>(o);
+    dt_[n] = element::rotate_by_vector(di_[n], step.segment<3>(o + 3));
   }
-  increment_trial_ = increment_ + alpha * delta;
+  increment_trial_ = increment_ + step;
 }
 
 void ShellModel::accept_trial() {
@@ -343,7 +438,11 @@ void ShellModel::revert() {
   increment_trial_.setZero();
 }
 
-Eigen::VectorXd ShellModel::increment_from_committed() const { return increment_; }
+Eigen::VectorXd ShellModel::increment_from_committed() const {
+  Eigen::VectorXd v = increment_;  // x, y, z
+  rotate_to_frames(di_, true, &v);
+  return v;
+}
 
 void ShellModel::save_state(io::BinaryWriter& w) const {
   w.section("shell_model");

@@ -1,11 +1,13 @@
 #pragma once
 // A shell finite-element model: mesh, ShellQ4 elements, six DOFs per node (ux uy uz, then
-// rotation increments about x y z), nodal directors, concentrated loads, and the
-// configuration bookkeeping the Newton solver needs (committed / iterate / trial).
+// rotation increments about x y z, or in the node's frame: use_nodal_rotation_frames), nodal
+// directors, concentrated loads, and the configuration bookkeeping the Newton solver needs
+// (committed / iterate / trial).
 #include "forward/contact/shell_contact.hpp"
 #include "forward/element/shell_q4.hpp"
 #include "forward/io/vtu_writer.hpp"
 #include "forward/mesh/mesh.hpp"
+#include "forward/solver/dof_constraints.hpp"
 #include "forward/solver/nonlinear_problem.hpp"
 
 #include <functional>
@@ -53,8 +55,26 @@ class ShellModel final : public solver::NonlinearProblem {
              const ShellModelOptions& options);
 
   static int dof(int node, int component) { return 6 * node + component; }
-  // "node N (x, y, z) displacement|rotation x|y|z" at the committed configuration.
+  // "node N (x, y, z) displacement|rotation x|y|z" at the committed configuration ("rotation
+  // t1|t2|normal (nodal frame)" at a node with a rotation frame).
   std::string describe_dof(int dof) const override;
+
+  // Five unknowns per node (docs/numerics-shell.md, "Nodal rotation frames"). At every node
+  // whose three rotations are free in c (neither prescribed, tied, nor the master of a tie),
+  // the rotation unknowns 3, 4, 5 are taken in the frame (t1, t2, d) of the node's current
+  // director d instead of about x, y, z, and the one about d -- the drilling rotation, which
+  // moves no director and has only the tangent's regularising stiffness -- is prescribed to
+  // zero in c, so it leaves the factorisation. The tangent's drilling rows and columns are
+  // decoupled from everything else (ShellQ4), so the Newton iterates are those of the six-DOF
+  // model up to round-off. Full DOF vectors the solver exchanges with the model (residuals,
+  // corrections, increment_from_committed, external_forces) carry those nodes' rotation parts
+  // in their frames; internal_forces() and all committed results stay in x, y, z. Call before
+  // c.finalize() and the first solve. Returns the number of nodes with a frame.
+  int use_nodal_rotation_frames(solver::DofConstraints* c);
+  bool has_rotation_frame(int node) const { return !framed_.empty() && framed_[static_cast<std::size_t>(node)]; }
+  // Columns t1, t2, d of the rotation frame of a node with director d (a frame carried from
+  // the reference director by the shortest rotation onto d): exposed for tests.
+  Eigen::Matrix3d rotation_frame(int node, const Eigen::Vector3d& d) const;
   const mesh::Mesh& mesh() const { return *mesh_; }
   int num_nodes() const { return mesh_->num_nodes(); }
   int num_elements() const { return mesh_->num_elements(); }
@@ -164,6 +184,11 @@ class ShellModel final : public solver::NonlinearProblem {
   double spin_per_load_factor_ = 0.0;
   double tool_work_ = 0.0, load_work_ = 0.0;  // committed external work [N mm] (ModelEnergies)
   double offset_release_ = 0.0;                // ModelEnergies::contact_offset_release [N mm]
+  std::vector<char> framed_;               // per node: rotation unknowns in the nodal frame
+  std::vector<Eigen::Vector3d> frame_t1_;  // per node: t1 of the frame of the reference director
+  // In place, on a full DOF vector: the rotation parts of framed nodes from x, y, z to the
+  // frames of the directors ds (to_frame) or back.
+  void rotate_to_frames(const std::vector<Eigen::Vector3d>& ds, bool to_frame, Eigen::VectorXd* v) const;
   // Moves the real tool and its copies (rotated centres and spin).
   void place_tools(const Eigen::Vector3d& centre_committed, const Eigen::Vector3d& centre, const Eigen::Vector3d& spin);
   double element_thickness(int e) const;

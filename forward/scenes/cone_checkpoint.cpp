@@ -16,8 +16,9 @@ constexpr char kKind[] = "cone-checkpoint";
 // Bump when the layout below or the meaning of the stored load factor changes (2: pie moves
 // shortened by ConeLoadMap, so a load factor of layout 1 is another point of the path; 3: the
 // model's external work and the contact's frictional dissipation, ModelEnergies; 4: force rows
-// with surface_penetration and the run's largest).
-constexpr std::uint32_t kLayout = 4;
+// with surface_penetration and the run's largest; 5: the solver's predictor carries the
+// rotations of framed nodes in their nodal frames, ShellModel::use_nodal_rotation_frames).
+constexpr std::uint32_t kLayout = 5;
 
 void save_rows(io::BinaryWriter& w, const std::vector<std::vector<double>>& rows) {
   w.i64(static_cast<std::int64_t>(rows.size()));

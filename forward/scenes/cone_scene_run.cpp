@@ -30,8 +30,8 @@ bool is_pie(const ConeScene& s) { return s.pie_angle < 360.0; }
 // cyclically: the DOFs of edge_theta1 are those of edge_theta0 rotated by gamma, and the axis
 // node moves along z only (tie_cyclic_edges). The rim node of edge_theta1 is a tied node: it
 // is not clamped itself but follows its clamped partner on edge_theta0 (R 0 = 0).
-solver::DofConstraints cone_constraints(const ConeScene& s, const mesh::Mesh& m, int num_dofs) {
-  solver::DofConstraints c(num_dofs);
+solver::DofConstraints cone_constraints(const ConeScene& s, const mesh::Mesh& m, model::ShellModel* model) {
+  solver::DofConstraints c(model->num_dofs());
   std::vector<char> slave(static_cast<std::size_t>(m.num_nodes()), 0);
   if (is_pie(s)) {
     model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", s.pie_angle, &c);
@@ -43,6 +43,9 @@ solver::DofConstraints cone_constraints(const ConeScene& s, const mesh::Mesh& m,
     if (slave[static_cast<std::size_t>(n)]) continue;
     for (int k = 0; k < clamped; ++k) c.prescribe(model::ShellModel::dof(n, k));
   }
+  // Five unknowns at every node away from the ties and the clamp: the drilling rotations
+  // leave the factorisation (docs/numerics-shell.md, "Nodal rotation frames").
+  model->use_nodal_rotation_frames(&c);
   c.finalize();
   return c;
 }
@@ -241,7 +244,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   const double spin = scene.spin * 2.0 * std::numbers::pi / 60.0 * duration * map.effective_length() / length;
   model.set_tool(scene.tool_radius, [&path, &map](double lambda) { return path.at_distance(map.travel(lambda)); }, scene.contact, spin);
   model.set_tool_copies(tool_copies(scene));
-  const solver::DofConstraints c = cone_constraints(scene, mesh, model.num_dofs());
+  const solver::DofConstraints c = cone_constraints(scene, mesh, &model);
   solver::NewtonOptions newton_options = tool_newton_options(scene, map.effective_length());
   newton_options.estimate_next_correction = scene.estimate_next_correction;
   newton_options.breakpoints = map.breakpoints();

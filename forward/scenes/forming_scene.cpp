@@ -223,6 +223,7 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
     for (int n : mesh.node_sets.at("symmetry_y0"))
       for (int k : {1, 3, 5})
         if (!c.prescribed(model::ShellModel::dof(n, k))) c.prescribe(model::ShellModel::dof(n, k));
+  model.use_nodal_rotation_frames(&c);  // drilling rotations out of the system
   c.finalize();
 
   const solver::NewtonOptions o = tool_newton_options(scene, L);

@@ -274,6 +274,7 @@ ShellBenchmark make_shell_benchmark(const ShellBenchmarkSetup& s) {
   else if (s.benchmark == "twisted_beam_out_of_plane") twisted_beam(b, pick(12), points, false);
   else if (s.benchmark == "limit_moment") limit_moment(b, pick(10), points);
   else throw std::invalid_argument("unknown benchmark \"" + s.benchmark + "\"");
+  if (s.rotation_frames) b.model->use_nodal_rotation_frames(b.constraints.get());  // drilling rotations out of the system
   b.constraints->finalize();
   return b;
 }

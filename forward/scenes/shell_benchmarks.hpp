@@ -22,6 +22,9 @@ struct ShellBenchmarkSetup {
   int mesh = 0;               // elements per side / along the length; 0 = the benchmark's default
   int thickness_points = 0;   // 0 = the benchmark's default
   element::ThicknessRuleKind thickness_rule = element::ThicknessRuleKind::gauss;
+  // Five unknowns at every node with free rotations (ShellModel::use_nodal_rotation_frames);
+  // false keeps six (tests compare the two).
+  bool rotation_frames = true;
 };
 
 // A model ready to solve. `mesh` is owned here and outlives `model`.

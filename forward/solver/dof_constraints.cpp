@@ -80,6 +80,13 @@ std::span<const DofConstraints::Term> DofConstraints::expansion(int dof) const {
   return {terms_.data() + offset_[i], static_cast<std::size_t>(offset_[i + 1] - offset_[i])};
 }
 
+std::vector<char> DofConstraints::master_flags() const {
+  std::vector<char> flag(kind_.size(), 0);
+  for (const auto& masters : masters_)
+    for (const auto& [m, c] : masters) flag[static_cast<std::size_t>(m)] = 1;
+  return flag;
+}
+
 Eigen::VectorXd DofConstraints::expand(const Eigen::VectorXd& reduced) const {
   Eigen::VectorXd full = Eigen::VectorXd::Zero(num_dofs());
   for (int i = 0; i < num_dofs(); ++i)

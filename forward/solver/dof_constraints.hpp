@@ -45,6 +45,8 @@ class DofConstraints {
   // Prescribed value per unit load factor (tied DOFs: the part from prescribed masters).
   double amplitude(int dof) const { return amplitude_[static_cast<std::size_t>(dof)]; }
   std::span<const Term> expansion(int dof) const;
+  // Per DOF: 1 when some tied DOF refers to it (before or after finalize).
+  std::vector<char> master_flags() const;
 
   Eigen::VectorXd expand(const Eigen::VectorXd& reduced) const;  // T u_bar
   Eigen::VectorXd reduce(const Eigen::VectorXd& full) const;     // T^T f

@@ -134,5 +134,62 @@ TEST(ShellModel, AutomaticLinearSolverFollowsTheTangentsSymmetry) {
   EXPECT_GT(r2.umfpack_factorisations, 0);
 }
 
+// Nodal rotation frames (use_nodal_rotation_frames): which nodes get one, the frame itself,
+// and the forces the model hands out in and out of the frames.
+TEST(ShellModel, RotationFramesFollowTheDirectorAndKeepResultsInXyz) {
+  const mesh::Mesh m = mesh::strip(4.0, 1.0, 4, 1);  // 10 nodes, two clamped
+  ShellModel plain(m, 0.1, steel(), {}), framed(m, 0.1, steel(), {});
+  solver::DofConstraints c(framed.num_dofs());
+  for (int n : m.node_sets.at("clamped"))
+    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
+  c.tie(ShellModel::dof(9, 4), {{ShellModel::dof(7, 4), 1.0}});  // node 9 tied, node 7 its master
+  EXPECT_EQ(framed.use_nodal_rotation_frames(&c), 10 - 2 - 2);
+  for (int n : m.node_sets.at("clamped")) EXPECT_FALSE(framed.has_rotation_frame(n));
+  EXPECT_FALSE(framed.has_rotation_frame(9));
+  EXPECT_FALSE(framed.has_rotation_frame(7));
+  EXPECT_TRUE(framed.has_rotation_frame(6));
+  EXPECT_TRUE(c.prescribed(ShellModel::dof(6, 5)));  // the drilling unknown left the system
+  EXPECT_FALSE(c.prescribed(ShellModel::dof(6, 4)));
+  EXPECT_NE(framed.describe_dof(ShellModel::dof(6, 3)).find("rotation t1 (nodal frame)"), std::string::npos);
+  EXPECT_NE(framed.describe_dof(ShellModel::dof(9, 3)).find("rotation x"), std::string::npos);
+  c.finalize();
+  EXPECT_THROW(framed.use_nodal_rotation_frames(&c), std::logic_error);
+  solver::DofConstraints wrong(12);
+  EXPECT_THROW(framed.use_nodal_rotation_frames(&wrong), std::invalid_argument);
+
+  // The frame: orthonormal, third column the director itself, the global axes on the flat
+  // sheet, and carried rigidly by a rotation normal to the reference director.
+  const Eigen::Vector3d d0 = framed.reference_director(6);
+  const Eigen::Matrix3d q0 = framed.rotation_frame(6, d0);
+  EXPECT_LT((q0.cwiseAbs() - Eigen::Matrix3d::Identity()).norm(), 1e-15) << q0;
+  const Eigen::Vector3d psi(0.3, -0.7, 0.0);  // normal to d0 = +-z
+  const Eigen::Matrix3d rot = Eigen::AngleAxisd(psi.norm(), psi.normalized()).toRotationMatrix();
+  const Eigen::Matrix3d q = framed.rotation_frame(6, rot * d0);
+  EXPECT_LT((q - rot * q0).norm(), 1e-14);
+  for (const Eigen::Vector3d& d : {Eigen::Vector3d(rot * d0), Eigen::Vector3d(-d0.x(), 0.6, -d0.z()).normalized(),
+                                   Eigen::Vector3d(0.01, 0.0, -d0.z()).normalized()}) {
+    const Eigen::Matrix3d f = framed.rotation_frame(6, d);
+    EXPECT_LT((f.transpose() * f - Eigen::Matrix3d::Identity()).norm(), 1e-14);
+    EXPECT_EQ(f.col(2), d);
+    EXPECT_NEAR(f.determinant(), 1.0, 1e-14);
+  }
+
+  // A bent state reached by translations only (no rotation unknowns, so the same for both):
+  // internal forces in x, y, z equal, element residuals equal up to the frames.
+  Eigen::VectorXd delta = Eigen::VectorXd::Zero(plain.num_dofs());
+  for (int n = 0; n < 10; ++n) delta(ShellModel::dof(n, 2)) = 0.02 * m.nodes[static_cast<std::size_t>(n)].x() * m.nodes[static_cast<std::size_t>(n)].x();
+  plain.set_trial(delta, 1.0);
+  framed.set_trial(delta, 1.0);
+  const Eigen::VectorXd fp = plain.internal_forces(), ff = framed.internal_forces();
+  EXPECT_GT(fp.norm(), 0.0);
+  EXPECT_LT((ff - fp).norm(), 1e-12 * fp.norm());
+  Eigen::VectorXd rp, rf;
+  plain.evaluate_element(2, &rp, nullptr);
+  framed.evaluate_element(2, &rf, nullptr);
+  const int corner = 0, node = m.quads[2][corner];
+  ASSERT_TRUE(framed.has_rotation_frame(node));
+  EXPECT_LT((rf.segment<3>(3) - framed.rotation_frame(node, d0).transpose() * rp.segment<3>(3)).norm(), 1e-12 * rp.norm());
+}
+
 }  // namespace
 }  // namespace spifit::model
