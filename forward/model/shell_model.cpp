@@ -22,6 +22,15 @@ void corner_vectors(const mesh::Quad& q, const std::vector<Eigen::Vector3d>& xs,
     (*d)[i] = ds[static_cast<std::size_t>(q[i])];
   }
 }
+
+// A unit vector normal to the unit vector d: the global axis least aligned with d, made normal
+// to it (x for d = +-z).
+Eigen::Vector3d least_aligned_normal(const Eigen::Vector3d& d) {
+  Eigen::Index k = 0;
+  d.cwiseAbs().minCoeff(&k);
+  const Eigen::Vector3d e = Eigen::Vector3d::Unit(k);
+  return (e - e.dot(d) * d).normalized();
+}
 }  // namespace
 
 ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
@@ -154,13 +163,8 @@ int ShellModel::use_nodal_rotation_frames(solver::DofConstraints* c) {
       free = free && !c->prescribed(i) && !c->tied(i) && !master[static_cast<std::size_t>(i)];
     }
     if (!free) continue;
-    // Reference frame: t1 = the global axis least aligned with the director, made normal to it
-    // (x for a flat sheet in the xy plane: the frame is then x, y, z itself).
-    const Eigen::Vector3d& d = d0_[static_cast<std::size_t>(n)];
-    Eigen::Index k = 0;
-    d.cwiseAbs().minCoeff(&k);
-    const Eigen::Vector3d e = Eigen::Vector3d::Unit(k);
-    frame_t1_[static_cast<std::size_t>(n)] = (e - e.dot(d) * d).normalized();
+    // Reference frame: x, y, z itself for a flat sheet in the xy plane.
+    frame_t1_[static_cast<std::size_t>(n)] = least_aligned_normal(d0_[static_cast<std::size_t>(n)]);
     framed_[static_cast<std::size_t>(n)] = 1;
     c->prescribe(dof(n, 5), 0.0);
     ++count;
@@ -183,12 +187,10 @@ Eigen::Matrix3d ShellModel::rotation_frame(int node, const Eigen::Vector3d& d) c
     const Eigen::Vector3d& t = frame_t1_[n];
     const Eigen::Vector3d v = a.cross(d);
     t1 = t + v.cross(t) + v.cross(v.cross(t)) / (1.0 + c);
+    t1 = (t1 - t1.dot(d) * d).normalized();
   } else {
-    Eigen::Index k = 0;
-    d.cwiseAbs().minCoeff(&k);
-    t1 = Eigen::Vector3d::Unit(k);
+    t1 = least_aligned_normal(d);
   }
-  t1 = (t1 - t1.dot(d) * d).normalized();
   Eigen::Matrix3d q;
   q.col(0) = t1;
   q.col(1) = d.cross(t1);
