@@ -103,7 +103,7 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const Cone
                   {"surface", s.contact.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"}};
   j["solver"] = {{"travel_per_increment", s.travel_per_increment}, {"move_increments", s.move_increments},
                  {"line_search", s.line_search},                   {"extrapolate", s.extrapolate},
-                 {"estimate_next_correction", s.estimate_next_correction}};
+                 {"estimate_next_correction", s.estimate_next_correction}, {"divergence_after", s.divergence_after}};
   j["warnings"] = warnings;
   j["status"] = "running";
   return j;

@@ -150,7 +150,7 @@ FormingScene read_forming_scene(const std::string& path) {
   }
   if (const auto so = root.table("solver")) {
     read_solver_table(*so, {s.travel_per_increment, s.max_iterations, s.linear_solver, s.extrapolate, s.line_search,
-                            s.force_tolerance, s.displacement_tolerance});
+                            s.force_tolerance, s.displacement_tolerance, s.divergence_after});
   }
   if (const auto o = root.table("output")) {
     o->allow_only({"vtu_every", "sections"});

@@ -32,7 +32,7 @@ void read_contact_table(const io::TomlTable& ct, contact::ContactOptions* c) {
 
 void read_solver_table(const io::TomlTable& so, const SolverFields& f) {
   std::vector<std::string> keys{"travel_per_increment", "max_iterations", "linear_solver", "extrapolate", "line_search",
-                                 "force_tolerance", "displacement_tolerance"};
+                                 "force_tolerance", "displacement_tolerance", "divergence_after"};
   if (f.move_increments) keys.push_back("move_increments");
   if (f.estimate_next_correction) keys.push_back("estimate_next_correction");
   so.allow_only(keys);
@@ -53,6 +53,9 @@ void read_solver_table(const io::TomlTable& so, const SolverFields& f) {
       so.fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
     f.linear_solver = k;
   }
+  f.divergence_after = so.integer("divergence_after", f.divergence_after);
+  if (f.divergence_after < 0 || f.divergence_after > 1000)
+    so.fail("divergence_after", "must be in [0, 1000] (iterations before a growing residual cuts the increment back; 0: never)");
   f.extrapolate = so.boolean("extrapolate", f.extrapolate);
   if (f.estimate_next_correction) *f.estimate_next_correction = so.boolean("estimate_next_correction", *f.estimate_next_correction);
   f.line_search = so.boolean("line_search", f.line_search);

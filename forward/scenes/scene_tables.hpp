@@ -34,11 +34,12 @@ struct SolverFields {
   bool& line_search;
   double& force_tolerance;
   double& displacement_tolerance;
+  int& divergence_after;
   int* move_increments = nullptr;  // cone scenes only: the key move_increments (>= 0)
   bool* estimate_next_correction = nullptr;  // cone scenes only: NewtonOptions::estimate_next_correction
 };
 // travel_per_increment, max_iterations, linear_solver, extrapolate, line_search,
-// force_tolerance, displacement_tolerance, and move_increments and estimate_next_correction where
+// force_tolerance, displacement_tolerance, divergence_after, and move_increments and estimate_next_correction where
 // bound (and no other key).
 void read_solver_table(const io::TomlTable& so, const SolverFields& f);
 
@@ -54,6 +55,7 @@ solver::NewtonOptions tool_newton_options(const Scene& s, double length) {
   o.line_search = s.line_search;
   o.force_tolerance = s.force_tolerance;
   o.displacement_tolerance = s.displacement_tolerance;
+  o.divergence_after = s.divergence_after;
   if (s.linear_solver) o.linear_solver = *s.linear_solver;
   return o;
 }

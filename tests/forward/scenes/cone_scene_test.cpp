@@ -124,8 +124,14 @@ TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
   EXPECT_DOUBLE_EQ(w.stages[1].wall_angle_deg, 60.0);
   EXPECT_DOUBLE_EQ(w.clamp_radius, 65.5);  // the vwall backing plate hole (thesis §8.1)
   EXPECT_EQ(cone_scene_path(w).segments.back().stage, 2);
+  // Newton waits 10 iterations before a growing residual cuts a cone increment back (the
+  // solver's own default is 3); [solver] divergence_after sets it.
+  EXPECT_EQ(s.divergence_after, 10);
+  const fs::path d = write_scene("divergence", "[cone]\npreset = \"cone70\"\n[solver]\ndivergence_after = 4\n");
+  EXPECT_EQ(read_cone_scene(d.string()).divergence_after, 4);
   fs::remove(f);
   fs::remove(v);
+  fs::remove(d);
 }
 
 // The load map of a cone70 pie path: linear with slope = effective length except on the moves,
@@ -268,6 +274,7 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
       {"[cone]\npreset = \"cone70\"\n[output]\nsteady_state = [5]\n", "output.steady_state", "", "[from, to]"},
       {"[cone]\npreset = \"cone70\"\n[solver]\nmove_increments = -1\n", "solver.move_increments", "-1", "[0, 1000]"},
       {"[cone]\npreset = \"cone70\"\n[solver]\nestimate_next_correction = 1\n", "solver.estimate_next_correction", "1", "true or false"},
+      {"[cone]\npreset = \"cone70\"\n[solver]\ndivergence_after = -1\n", "solver.divergence_after", "-1", "[0, 1000]"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"lobatto\"\n", "sheet.thickness_rule", "\"lobatto\"", "\"surface\""},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"surface\"\nthickness_points = 4\n", "sheet.thickness_rule", "", "odd number"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nmax_sector_deg = 60.0\n", "sheet.max_sector_deg", "60", "45 or 90"},
