@@ -124,9 +124,9 @@ TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
   EXPECT_DOUBLE_EQ(w.stages[1].wall_angle_deg, 60.0);
   EXPECT_DOUBLE_EQ(w.clamp_radius, 65.5);  // the vwall backing plate hole (thesis §8.1)
   EXPECT_EQ(cone_scene_path(w).segments.back().stage, 2);
-  // Newton waits 10 iterations before a growing residual cuts a cone increment back (the
-  // solver's own default is 3); [solver] divergence_after sets it.
-  EXPECT_EQ(s.divergence_after, 10);
+  // Newton waits 3 iterations before a growing residual cuts a cone increment back (the
+  // solver's default); [solver] divergence_after sets it (10 in cone70_pie45_fine.toml).
+  EXPECT_EQ(s.divergence_after, 3);
   const fs::path d = write_scene("divergence", "[cone]\npreset = \"cone70\"\n[solver]\ndivergence_after = 4\n");
   EXPECT_EQ(read_cone_scene(d.string()).divergence_after, 4);
   fs::remove(f);
