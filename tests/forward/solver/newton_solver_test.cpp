@@ -150,8 +150,9 @@ DivergenceRun cantilever_in_one_increment(double load, int divergence_after) {
 }
 
 // An increment whose residual is still above its starting value after 3 iterations often
-// converges a few iterations later (large rotations here; the contact settling in the cone
-// scenes, which therefore wait 10 iterations): cutting it back at once costs more increments.
+// converges a few iterations later (large rotations here; the contact settling in the fine
+// cone70 scene, which therefore waits 10 iterations): cutting it back at once costs more
+// increments.
 TEST(NewtonSolver, WaitingLongerBeforeTheDivergenceCutBackSavesIncrements) {
   const DivergenceRun three = cantilever_in_one_increment(3000.0, 3), ten = cantilever_in_one_increment(3000.0, 10);
   ASSERT_TRUE(three.summary.converged) << three.summary.message;
