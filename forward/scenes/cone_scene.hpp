@@ -60,8 +60,8 @@ struct ConeScene {
   // NewtonOptions::divergence_after. 10 saves 23 % on the fine cone70 (most increments cut back
   // by the 3-iteration rule converge in 8-13 iterations when let run, and each cut-back costs
   // about five smaller increments), but the vwall pie then failed in contour 149 at a tied-edge
-  // node: 3 by default, cone70_pie45_fine.toml sets 10 (docs/cone-scene.md, speed).
-  int divergence_after = 3;
+  // node: the solver's 3 by default, cone70_pie45_fine.toml sets 10 (docs/cone-scene.md, speed).
+  int divergence_after = solver::NewtonOptions{}.divergence_after;
   // NewtonOptions::estimate_next_correction: about 10 % fewer iterations, off by default
   // (docs/cone-scene.md, speed: the vwall run then failed in its last contour).
   bool estimate_next_correction = false;

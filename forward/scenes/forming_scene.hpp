@@ -47,7 +47,7 @@ struct FormingScene {
   // Relative (NewtonOptions). 1e-5 changed the indent_line peak force by 1e-12 relative and
   // saved 13 % of the iterations against 1e-7 (docs/contact.md).
   double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
-  int divergence_after = 3;  // NewtonOptions::divergence_after
+  int divergence_after = solver::NewtonOptions{}.divergence_after;  // the solver's 3
   std::optional<solver::LinearSolverKind> linear_solver;
   // Output.
   int vtu_every = 0;

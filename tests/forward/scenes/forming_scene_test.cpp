@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 namespace fs = std::filesystem;
 
@@ -121,6 +122,33 @@ TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
   const std::string spin = error_of(head + "[tool]\nspin = 1e9\n");
   EXPECT_NE(spin.find("spin"), std::string::npos) << spin;
   EXPECT_NE(spin.find("rev/min"), std::string::npos) << spin;
+}
+
+// [solver] divergence_after reaches the forming scene (the solver's 3 when absent) and an
+// out-of-range value names the key.
+TEST(FormingScene, ReaderTakesDivergenceAfter) {
+  std::ifstream in(src("experiments/aa3003o/scenes/indent.toml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string rel = "\"../../../materials/";
+  ASSERT_NE(text.find(rel), std::string::npos);
+  text.replace(text.find(rel), rel.size(), "\"" + src("materials/"));
+  const fs::path f = fs::temp_directory_path() / ("spifit_forming_div_" + std::to_string(::getpid()) + ".toml");
+  auto with = [&](const std::string& line) {
+    std::string t = text;
+    t.replace(t.find("[solver]\n"), 9, "[solver]\n" + line);
+    std::ofstream(f) << t;
+    return f.string();
+  };
+  EXPECT_EQ(read_forming_scene(with("")).divergence_after, 3);
+  EXPECT_EQ(read_forming_scene(with("divergence_after = 7\n")).divergence_after, 7);
+  try {
+    read_forming_scene(with("divergence_after = 2000\n"));
+    ADD_FAILURE() << "no error for divergence_after = 2000";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.key(), "solver.divergence_after") << e.what();
+    EXPECT_EQ(e.value(), "2000") << e.what();
+  }
+  fs::remove(f);
 }
 
 // Tool spin acts through friction only: without friction the indent is bitwise the same;
