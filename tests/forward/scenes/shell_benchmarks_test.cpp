@@ -71,6 +71,13 @@ TEST(ShellBenchmarks, RotationFramesSolveTheSameStepsWithFewerUnknowns) {
       ShellBenchmarkSetup setup{name, 0, 0, element::ThicknessRuleKind::gauss};
       setup.rotation_frames = framed == 1;
       ShellBenchmark b = make_shell_benchmark(setup);
+      // The roll-up's relative residual bottoms out at about 1e-10 (rounding), where the
+      // solver's "1000 x below the force tolerance" acceptance (1e-10 with the default 1e-7)
+      // lies: whether an increment takes 8 or 9 iterations, and so how the next one grows, was
+      // decided by rounding (increment 8: 9.9e-11 with six unknowns, 1.1e-10 with frames, on
+      // OpenBLAS 0.3.21 on a 2026-11 AMD EPYC; equal on the machine before). 1e-6 puts that
+      // threshold a decade above the floor, so the comparison is of the Newton steps.
+      if (std::string(name) == "rollup") b.solver.force_tolerance = 1e-6;
       solver::NewtonSolver solver(*b.model, *b.constraints, b.solver);
       const solver::NewtonSummary summary = solver.solve();
       ASSERT_TRUE(summary.converged) << name << (framed ? " framed: " : ": ") << summary.message;
