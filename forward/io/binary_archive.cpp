@@ -81,7 +81,9 @@ std::string BinaryWriter::finish() {
   return std::move(bytes_);
 }
 
-BinaryReader::BinaryReader(std::string bytes, const std::string& kind, std::uint32_t kind_version) : bytes_(std::move(bytes)) {
+BinaryReader::BinaryReader(std::string bytes, const std::string& kind, std::uint32_t kind_version, std::uint32_t oldest_kind_version)
+    : bytes_(std::move(bytes)) {
+  if (oldest_kind_version == 0) oldest_kind_version = kind_version;
   if (bytes_.size() < sizeof kMagic || std::memcmp(bytes_.data(), kMagic, sizeof kMagic) != 0)
     throw ArchiveError("not a spifit state archive (no SPIFITAR header)");
   if (bytes_.size() < sizeof kMagic + 4 + 8 + 4 + 8) throw ArchiveError("truncated archive (" + std::to_string(bytes_.size()) + " bytes)");
@@ -97,8 +99,11 @@ BinaryReader::BinaryReader(std::string bytes, const std::string& kind, std::uint
   const std::string k = string();
   if (k != kind) throw ArchiveError("holds a \"" + k + "\", expected a \"" + kind + "\"");
   const std::uint32_t v = u32();
-  if (v != kind_version)
-    throw ArchiveError("\"" + kind + "\" layout version " + std::to_string(v) + ", this spifit reads version " + std::to_string(kind_version));
+  if (v < oldest_kind_version || v > kind_version)
+    throw ArchiveError("\"" + kind + "\" layout version " + std::to_string(v) + ", this spifit reads version " +
+                       (oldest_kind_version == kind_version ? std::to_string(kind_version)
+                                                            : std::to_string(oldest_kind_version) + " to " + std::to_string(kind_version)));
+  kind_version_ = v;
 }
 
 void BinaryReader::raw(void* p, std::size_t n) {

@@ -56,8 +56,11 @@ class BinaryWriter {
 
 class BinaryReader {
  public:
-  // Checks magic, checksum (truncation, corruption), format version, kind and kind version.
-  BinaryReader(std::string bytes, const std::string& kind, std::uint32_t kind_version);
+  // Checks magic, checksum (truncation, corruption), format version, kind and kind version
+  // (which must be within [oldest_kind_version, kind_version]; by default exactly kind_version).
+  BinaryReader(std::string bytes, const std::string& kind, std::uint32_t kind_version, std::uint32_t oldest_kind_version = 0);
+  // The layout version the archive was written with.
+  std::uint32_t kind_version() const { return kind_version_; }
 
   std::uint32_t u32();
   std::int64_t i64();
@@ -77,6 +80,7 @@ class BinaryReader {
  private:
   std::string bytes_;
   std::size_t pos_ = 0, end_ = 0;  // end_: start of the checksum
+  std::uint32_t kind_version_ = 0;
   void raw(void* p, std::size_t n);
   std::size_t count(std::size_t item_bytes);
 };

@@ -17,8 +17,11 @@ constexpr char kKind[] = "cone-checkpoint";
 // shortened by ConeLoadMap, so a load factor of layout 1 is another point of the path; 3: the
 // model's external work and the contact's frictional dissipation, ModelEnergies; 4: force rows
 // with surface_penetration and the run's largest; 5: the solver's predictor carries the
-// rotations of framed nodes in their nodal frames, ShellModel::use_nodal_rotation_frames).
-constexpr std::uint32_t kLayout = 5;
+// rotations of framed nodes in their nodal frames, ShellModel::use_nodal_rotation_frames; 6: the
+// solver's stabilisation state, NewtonState). Layout 5 is still read: it differs only by the
+// stabilisation state, absent there (off).
+constexpr std::uint32_t kLayout = 6;
+constexpr std::uint32_t kOldestLayout = 5;
 
 void save_rows(io::BinaryWriter& w, const std::vector<std::vector<double>>& rows) {
   w.i64(static_cast<std::int64_t>(rows.size()));
@@ -146,7 +149,7 @@ void read_cone_checkpoint(const io::OutputDirectory& out, const ConeInputs& inpu
   if (!std::filesystem::is_regular_file(file, ec))
     refuse(file, "no checkpoint in " + out.path().string() + " (written after every [output] checkpoint_every completed contours)");
   try {
-    io::BinaryReader r(io::read_binary_file(file), kKind, kLayout);
+    io::BinaryReader r(io::read_binary_file(file), kKind, kLayout, kOldestLayout);
     r.section("inputs");
     const std::string version = r.string();
     const std::string scene_file = r.string(), scene_text = r.string();
@@ -159,7 +162,7 @@ void read_cone_checkpoint(const io::OutputDirectory& out, const ConeInputs& inpu
                        " when the run started; start afresh with --force");
     (void)version;  // informative (a checkpoint of another build with the same layout is accepted)
     model->load_state(r);
-    *newton = solver::load_newton_state(r);
+    *newton = solver::load_newton_state(r, r.kind_version() >= 6);
     if (newton->last_increment.size() != 0 && newton->last_increment.size() != model->num_dofs())
       throw io::ArchiveError("Newton predictor of another model size");
     *log = load_log(r);

@@ -186,7 +186,8 @@ void read_history_element(const TomlTable& h, ConeScene& s) {
 void read_solver_and_output(const TomlTable& root, ConeScene& s) {
   if (const auto so = root.table("solver")) {
     read_solver_table(*so, {s.travel_per_increment, s.max_iterations, s.linear_solver, s.extrapolate, s.line_search,
-                            s.force_tolerance, s.displacement_tolerance, s.divergence_after, &s.move_increments, &s.estimate_next_correction});
+                            s.force_tolerance, s.displacement_tolerance, s.divergence_after, &s.move_increments, &s.estimate_next_correction,
+                            &s.stabilisation});
   }
   if (const auto o = root.table("output")) {
     o->allow_only({"vtu_every", "checkpoint_every", "history_element", "steady_state"});

@@ -65,6 +65,9 @@ struct ConeScene {
   // NewtonOptions::estimate_next_correction: about 10 % fewer iterations, off by default
   // (docs/cone-scene.md, speed: the vwall run then failed in its last contour).
   bool estimate_next_correction = false;
+  // NewtonOptions::stabilisation: damping factor of the viscous forces of an increment that
+  // failed at the minimum increment (where the run would end); up to 100 x it if needed. 0: off.
+  double stabilisation = 1e-4;
   std::optional<solver::LinearSolverKind> linear_solver;
   // Output.
   int vtu_every = 0;

@@ -103,7 +103,8 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const Cone
                   {"surface", s.contact.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"}};
   j["solver"] = {{"travel_per_increment", s.travel_per_increment}, {"move_increments", s.move_increments},
                  {"line_search", s.line_search},                   {"extrapolate", s.extrapolate},
-                 {"estimate_next_correction", s.estimate_next_correction}, {"divergence_after", s.divergence_after}};
+                 {"estimate_next_correction", s.estimate_next_correction}, {"divergence_after", s.divergence_after},
+                 {"stabilisation", s.stabilisation}};
   j["warnings"] = warnings;
   j["status"] = "running";
   return j;
@@ -205,6 +206,12 @@ void finish_summary(json& j, const solver::NewtonSummary& r, int increments, con
   j["factorisations"] = r.factorisations;
   j["factorisations_by_solver"] = {{"cholmod", r.cholmod_factorisations}, {"umfpack", r.umfpack_factorisations}};
   j["profile_seconds"] = {{"elements", r.element_seconds}, {"assembly", r.scatter_seconds}, {"linear_solver", r.linear_seconds}};
+  // Increments accepted with viscous forces (NewtonOptions::stabilisation): their dissipated
+  // work against the tool's work, and the largest out-of-balance one was accepted with.
+  j["stabilised"] = {{"increments", r.stabilised_increments},
+                     {"viscous_work", r.viscous_work},
+                     {"viscous_work_over_tool_work", model.energies().external_work > 0.0 ? r.viscous_work / model.energies().external_work : 0.0},
+                     {"max_viscous_force", r.max_viscous_force}};
   j["travel_reached"] = map.travel(r.lambda);
   j["contours_total"] = track.contours().size();
   j["contours_completed"] = track.completed(map.travel(r.lambda));
@@ -247,6 +254,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   const solver::DofConstraints c = cone_constraints(scene, mesh, &model);
   solver::NewtonOptions newton_options = tool_newton_options(scene, map.effective_length());
   newton_options.estimate_next_correction = scene.estimate_next_correction;
+  newton_options.stabilisation = scene.stabilisation;
   newton_options.breakpoints = map.breakpoints();
   solver::NewtonSolver solver(model, c, newton_options);
 
@@ -316,6 +324,10 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
     if (progress && ir.force_only)
       std::fprintf(stderr, "  increment %d at travel %.6f mm accepted on the force test alone at the minimum increment (relative residual %.3g)\n",
                    ir.index, travel, ir.residual_norms.empty() ? 0.0 : ir.residual_norms.back());
+    if (progress && ir.damping > 0.0)
+      std::fprintf(stderr,
+                   "  increment %d at travel %.6f mm stabilised (damping factor %.3g): viscous work %.3g N mm, viscous force %.3g of the force scale\n",
+                   ir.index, travel, ir.damping, ir.viscous_work, ir.viscous_force);
     const int now_done = track.completed(travel);
     const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
     const bool contour_ended = done < now_done;

@@ -35,7 +35,13 @@ void read_solver_table(const io::TomlTable& so, const SolverFields& f) {
                                  "force_tolerance", "displacement_tolerance", "divergence_after"};
   if (f.move_increments) keys.push_back("move_increments");
   if (f.estimate_next_correction) keys.push_back("estimate_next_correction");
+  if (f.stabilisation) keys.push_back("stabilisation");
   so.allow_only(keys);
+  if (f.stabilisation) {
+    *f.stabilisation = so.number("stabilisation", *f.stabilisation);
+    if (!(*f.stabilisation >= 0.0 && *f.stabilisation <= 1.0))
+      so.fail("stabilisation", "must be in [0, 1] (damping factor of an increment that failed at the minimum increment, x |diag K|; 0: off)");
+  }
   if (f.move_increments) {
     *f.move_increments = so.integer("move_increments", *f.move_increments);
     if (*f.move_increments < 0 || *f.move_increments > 1000)

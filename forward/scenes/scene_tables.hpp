@@ -37,10 +37,11 @@ struct SolverFields {
   int& divergence_after;
   int* move_increments = nullptr;  // cone scenes only: the key move_increments (>= 0)
   bool* estimate_next_correction = nullptr;  // cone scenes only: NewtonOptions::estimate_next_correction
+  double* stabilisation = nullptr;  // cone scenes only: NewtonOptions::stabilisation, in [0, 1]
 };
 // travel_per_increment, max_iterations, linear_solver, extrapolate, line_search,
-// force_tolerance, displacement_tolerance, divergence_after, and move_increments and estimate_next_correction where
-// bound (and no other key).
+// force_tolerance, displacement_tolerance, divergence_after, and move_increments,
+// estimate_next_correction and stabilisation where bound (and no other key).
 void read_solver_table(const io::TomlTable& so, const SolverFields& f);
 
 // Newton options of a tool scene (any type with the SolverFields members) whose path is

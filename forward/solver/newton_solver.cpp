@@ -29,6 +29,10 @@ std::string NewtonOptions::validate() const {
   if (!(force_tolerance > 0.0) || !(displacement_tolerance > 0.0)) return "tolerances must be > 0";
   if (max_line_search < 0) return "max_line_search must be >= 0";
   if (element_chunk < 1) return "element_chunk must be >= 1";
+  if (!(stabilisation >= 0.0 && std::isfinite(stabilisation))) return "stabilisation must be >= 0";
+  if (!(max_stabilisation == 0.0 || (std::isfinite(max_stabilisation) && max_stabilisation >= stabilisation)))
+    return "max_stabilisation must be 0 or >= stabilisation";
+  if (stabilised_increments < 1) return "stabilised_increments must be >= 1";
   for (std::size_t i = 0; i < breakpoints.size(); ++i)
     if (!std::isfinite(breakpoints[i]) || (i > 0 && !(breakpoints[i] > breakpoints[i - 1]))) return "breakpoints must be finite and increasing";
   return {};
@@ -154,13 +158,33 @@ bool NewtonSolver::solve_with_last_factor(const Eigen::VectorXd& rhs, Eigen::Vec
   return ok;
 }
 
-bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* report, ElementEvaluation* failure) {
+Eigen::VectorXd NewtonSolver::tangent_diagonal() {
+  const SparsePattern& p = k_->pattern();
+  if (diagonal_.empty()) {
+    diagonal_.resize(static_cast<std::size_t>(p.rows));
+    for (int i = 0; i < p.rows; ++i) {
+      diagonal_[static_cast<std::size_t>(i)] = p.find(i, i);
+      if (diagonal_[static_cast<std::size_t>(i)] < 0) throw std::logic_error("tangent pattern without a diagonal entry");
+    }
+  }
+  Eigen::VectorXd d(p.rows);
+  for (int i = 0; i < p.rows; ++i) d(i) = std::abs(k_->values()[static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])]);
+  return d;
+}
+
+void NewtonSolver::add_to_diagonal(const Eigen::VectorXd& d) {
+  for (Eigen::Index i = 0; i < d.size(); ++i) k_->values()[static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])] += d(i);
+}
+
+bool NewtonSolver::increment(double lambda0, double lambda1, double damping, IncrementReport* report, ElementEvaluation* failure) {
   problem_.revert();
   problem_.begin_increment(lambda0, lambda1);
   const Eigen::VectorXd f_ext = constraints_.reduce(problem_.external_forces(lambda1));
   const Eigen::VectorXd dg = constraints_.prescribed_values(lambda1 - lambda0);
   const bool has_dg = dg.squaredNorm() > 0.0;
-  const bool try_predictor = options_.extrapolate && last_dl_ > 0.0 && last_increment_.size() == problem_.num_dofs();
+  // A stabilised increment starts from the committed state (its viscous forces act on the
+  // displacement from there).
+  const bool try_predictor = damping == 0.0 && options_.extrapolate && last_dl_ > 0.0 && last_increment_.size() == problem_.num_dofs();
   // With a predictor to try (and no prescribed increment, whose load needs the tangent), the
   // committed state's residual is only compared with the predicted one: no tangent for it.
   Assembly a = assemble(lambda1, !try_predictor || has_dg, has_dg ? &dg : nullptr);
@@ -194,12 +218,32 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
   const double r0 = a.residual.norm() / std::max({f_ext.norm(), a.reaction_norm, a.residual.norm(), 1e-300});
   report->residual_norms.push_back(r0);
   Eigen::VectorXd r = a.residual;
+  // Stabilised: viscous forces c |diag K| du_bar on the reduced displacement of the increment
+  // (du_bar, the sum of the accepted corrections; the prescribed part is not a reduced unknown),
+  // with |diag K| of the committed state's tangent, fixed for the increment. r holds the
+  // residual with them, the tangent gets c |diag K| on its diagonal before every solve.
+  Eigen::VectorXd viscosity, du_bar;
+  if (damping > 0.0) {
+    viscosity = damping * tangent_diagonal();
+    du_bar = Eigen::VectorXd::Zero(r.size());
+  }
+  double force_scale = 1e-300;
+  auto accept = [&]() {
+    if (damping > 0.0) {
+      const Eigen::VectorXd v = viscosity.cwiseProduct(du_bar);
+      report->damping = damping;
+      report->viscous_work = du_bar.dot(v);
+      report->viscous_force = v.norm() / force_scale;
+    }
+    return true;
+  };
   // At the minimum increment a failure ends the run: the force test alone decides there, and
   // no divergence cut-back is taken (there is nothing smaller to cut back to).
   const bool final_size = options_.force_only_at_minimum && dl_ <= options_.min_increment * (1.0 + 1e-12);
   for (int it = 1; it <= options_.max_iterations; ++it) {
     Eigen::VectorXd du;
     std::string error;
+    if (damping > 0.0) add_to_diagonal(viscosity);
     if (!solve_linear(-r, &du, &error)) {
       failure->ok = false;
       failure->reason = "linear solver: " + error;
@@ -223,6 +267,7 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     for (int ls = 0;; ++ls) {
       problem_.set_trial(first && has_dg ? Eigen::VectorXd(alpha * dfree + dg) : Eigen::VectorXd(alpha * dfree), 1.0);
       trial = assemble(lambda1, true, nullptr);
+      if (damping > 0.0 && trial.failure.ok) trial.residual += viscosity.cwiseProduct(du_bar + alpha * du);
       if (!trial.failure.ok) {
         if (ls < options_.max_line_search && alpha > 0.1) {  // a failed trial: try a shorter step first
           alpha *= 0.5;
@@ -243,8 +288,10 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     problem_.accept_trial();
     first = false;
     r = trial.residual;
+    if (damping > 0.0) du_bar += alpha * du;
     report->iterations = it;
-    const double rel = r.norm() / std::max({f_ext.norm(), trial.reaction_norm, 1e-300});
+    force_scale = std::max({f_ext.norm(), trial.reaction_norm, 1e-300});
+    const double rel = r.norm() / force_scale;
     report->residual_norms.push_back(rel);
     if (!std::isfinite(rel) || rel > 1e10) {
       failure->ok = false;
@@ -259,7 +306,7 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
     report->correction_norms.push_back(step);
     if (rel <= options_.force_tolerance && (step <= options_.displacement_tolerance * std::max(inc, 1e-300) ||
                                             rel <= 1e-3 * options_.force_tolerance))
-      return true;
+      return accept();
     // The force test passed but the last correction was large (it came from a worse iterate):
     // the next correction, estimated with the factorisation already at hand (one back-
     // substitution, no assembly), decides instead of a further iteration.
@@ -267,12 +314,12 @@ bool NewtonSolver::increment(double lambda0, double lambda1, IncrementReport* re
       Eigen::VectorXd next;
       if (solve_with_last_factor(-r, &next) && next.norm() <= options_.displacement_tolerance * std::max(inc, 1e-300)) {
         report->estimated = true;
-        return true;
+        return accept();
       }
     }
     if (final_size && rel <= options_.force_tolerance) {
       report->force_only = true;
-      return true;
+      return accept();
     }
     if (!final_size && options_.divergence_after > 0 && it >= options_.divergence_after && rel > r0) {
       char buf[160];
@@ -301,6 +348,9 @@ NewtonSummary NewtonSolver::solve(double lambda_start, double lambda_end, const 
   dl_ = options_.linear ? lambda_end - lambda_start : options_.initial_increment;
   ceiling_ = options_.max_increment;
   increments_ = iterations_ = cutbacks_ = 0;
+  damping_ = 0.0;
+  stabilised_left_ = stabilised_ = 0;
+  viscous_work_ = max_viscous_force_ = 0.0;
   return run(lambda_end, callback);
 }
 
@@ -320,6 +370,11 @@ NewtonState NewtonSolver::state() const {
   s.element_seconds = element_seconds_;
   s.scatter_seconds = scatter_seconds_;
   s.linear_seconds = linear_seconds_;
+  s.damping = damping_;
+  s.stabilised_left = stabilised_left_;
+  s.stabilised_increments = stabilised_;
+  s.viscous_work = viscous_work_;
+  s.max_viscous_force = max_viscous_force_;
   return s;
 }
 
@@ -341,6 +396,11 @@ void NewtonSolver::set_state(const NewtonState& s) {
   element_seconds_ = s.element_seconds;
   scatter_seconds_ = s.scatter_seconds;
   linear_seconds_ = s.linear_seconds;
+  damping_ = s.damping;
+  stabilised_left_ = s.stabilised_left;
+  stabilised_ = s.stabilised_increments;
+  viscous_work_ = s.viscous_work;
+  max_viscous_force_ = s.max_viscous_force;
 }
 
 NewtonSummary NewtonSolver::resume(double lambda_end, const IncrementCallback& callback) {
@@ -350,6 +410,8 @@ NewtonSummary NewtonSolver::resume(double lambda_end, const IncrementCallback& c
 
 NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& callback) {
   NewtonSummary summary;
+  double first_failed = 0.0;  // size of the first failed attempt since the last converged increment
+  const double max_damping = options_.max_stabilisation > 0.0 ? options_.max_stabilisation : 100.0 * options_.stabilisation;
   while (lambda_ < lambda_end - 1e-12) {
     const double lambda = lambda_;
     double lambda1 = std::min(lambda + dl_, lambda_end);
@@ -363,9 +425,16 @@ NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& call
     report.lambda = lambda1;
     report.increment = lambda1 - lambda;
     ElementEvaluation failure;
-    const bool ok = increment(lambda, lambda1, &report, &failure);
+    const bool ok = increment(lambda, lambda1, damping_, &report, &failure);
     iterations_ += report.iterations;
     if (ok) {
+      first_failed = 0.0;
+      if (report.damping > 0.0) {
+        ++stabilised_;
+        viscous_work_ += report.viscous_work;
+        max_viscous_force_ = std::max(max_viscous_force_, report.viscous_force);
+        if (--stabilised_left_ <= 0) damping_ = 0.0;
+      }
       if (options_.extrapolate) {
         last_increment_ = problem_.increment_from_committed() - constraints_.prescribed_values(lambda1 - lambda);
         last_dl_ = lambda1 - lambda;
@@ -387,11 +456,26 @@ NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& call
     ceiling_ = std::max(options_.min_increment, 0.75 * (lambda1 - lambda));
     problem_.revert();
     ++cutbacks_;
+    if (first_failed == 0.0) first_failed = lambda1 - lambda;
     const double s = std::min(options_.cutback, failure.suggested_scale);
     if (dl_ <= options_.min_increment * (1.0 + 1e-12)) {
+      if (options_.stabilisation > 0.0 && damping_ < max_damping * (1.0 - 1e-12)) {
+        // Where the run would end: retry from the size that first failed, with viscous forces
+        // (or ten times stronger ones), for the next stabilised_increments converged increments.
+        damping_ = damping_ > 0.0 ? std::min(max_damping, 10.0 * damping_) : options_.stabilisation;
+        stabilised_left_ = options_.stabilised_increments;
+        dl_ = std::max(options_.min_increment, first_failed);
+        ceiling_ = std::max(ceiling_, dl_);
+        first_failed = 0.0;
+        continue;
+      }
       char buf[200];
       std::snprintf(buf, sizeof buf, "increment from load factor %.6g failed at the minimum increment %.3g: ", lambda, dl_);
       summary.message = buf + failure.reason + (failure.where.empty() ? "" : " (" + failure.where + ")");
+      if (damping_ > 0.0) {
+        std::snprintf(buf, sizeof buf, " (stabilised with damping factor %.3g, the largest allowed)", damping_);
+        summary.message += buf;
+      }
       break;
     }
     dl_ = std::max(options_.min_increment, dl_ * s);
@@ -410,6 +494,9 @@ NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& call
   summary.scatter_seconds = st.scatter_seconds;
   summary.linear_seconds = st.linear_seconds;
   summary.symbolic_analyses = st.symbolic_analyses;
+  summary.stabilised_increments = st.stabilised_increments;
+  summary.viscous_work = st.viscous_work;
+  summary.max_viscous_force = st.max_viscous_force;
   return summary;
 }
 

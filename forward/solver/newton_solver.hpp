@@ -52,6 +52,18 @@ struct NewtonOptions {
   // displacement tolerance, and on the vwall pie that was enough for the run to fail in its last
   // contour at a node that stops the fine cone70 too (docs/cone-scene.md, speed).
   bool estimate_next_correction = false;
+  // Stabilised increments (docs/numerics-shell.md, "Stabilised increments"): when an increment
+  // fails at the minimum increment, where the run would end, it is retried from the size that
+  // first failed with viscous forces c |diag K| du (du: the increment's reduced displacement,
+  // |diag K| the tangent's diagonal at the committed state; the tangent gains c |diag K| on its
+  // diagonal), and the increments that follow keep them until `stabilised_increments` have
+  // converged. The accepted state then carries the viscous force as an out-of-balance, which the
+  // next increments remove; the dissipated work du . c |diag K| du is reported per increment and
+  // in the summary. If a stabilised increment fails at the minimum increment too, c grows x10 up
+  // to `max_stabilisation`. 0 (the default): off, the run ends there.
+  double stabilisation = 0.0;
+  double max_stabilisation = 0.0;  // 0: stabilisation x 100
+  int stabilised_increments = 10;
   // Load factors that no increment steps over (increasing): an increment reaching past one
   // ends there instead, as at lambda_end; the increment size is not reduced by this.
   std::vector<double> breakpoints{};
@@ -72,6 +84,12 @@ struct IncrementReport {
   bool extrapolated = false;  // started from the extrapolated predictor
   bool force_only = false;    // accepted on the force test alone at the minimum increment
   bool estimated = false;     // the displacement test passed on the estimated next correction
+  // Stabilised increment: the damping factor c (0: none), the work of the viscous forces over the
+  // increment (du . c |diag K| du) and their norm relative to the force scale of the convergence
+  // test (the out-of-balance the accepted state carries).
+  double damping = 0.0;
+  double viscous_work = 0.0;
+  double viscous_force = 0.0;
   std::vector<double> residual_norms;  // relative, one per iteration (first: before the first correction)
   std::vector<double> correction_norms;  // |alpha du| of each iteration (reduced unknowns)
 };
@@ -83,6 +101,10 @@ struct NewtonSummary {
   int factorisations = 0, symbolic_analyses = 0;
   int cholmod_factorisations = 0, umfpack_factorisations = 0;
   std::string message;            // why it stopped (failure: where and why)
+  // Stabilised increments (NewtonOptions::stabilisation): how many, the viscous work they
+  // dissipated in all, and the largest relative out-of-balance one of them was accepted with.
+  int stabilised_increments = 0;
+  double viscous_work = 0.0, max_viscous_force = 0.0;
   std::vector<IncrementReport> history;
   // Wall seconds by phase (profiling aid for the benchmarks; not part of any result).
   double element_seconds = 0.0;   // parallel element evaluation
@@ -135,6 +157,11 @@ class NewtonSolver {
   // Stepping state: committed load factor, next increment, growth ceiling, totals.
   double lambda_ = 0.0, dl_ = 0.0, ceiling_ = 0.0;
   int increments_ = 0, iterations_ = 0, cutbacks_ = 0;
+  // Stabilisation: current damping factor (0: off), converged increments it still lasts, totals.
+  double damping_ = 0.0;
+  int stabilised_left_ = 0, stabilised_ = 0;
+  double viscous_work_ = 0.0, max_viscous_force_ = 0.0;
+  std::vector<long> diagonal_;  // positions of the reduced tangent's diagonal entries
   // Factorisations and analyses of earlier solver objects (a restored state's).
   int prior_cholmod_ = 0, prior_umfpack_ = 0, prior_symbolic_ = 0;
   // Free part of the last converged increment (full DOF vector) and its load-factor size.
@@ -150,7 +177,10 @@ class NewtonSolver {
   // The increment loop from the stepping state to lambda_end (solve and resume).
   NewtonSummary run(double lambda_end, const IncrementCallback& callback);
   // Returns false (with a message) when the increment fails.
-  bool increment(double lambda0, double lambda1, IncrementReport* report, ElementEvaluation* failure);
+  bool increment(double lambda0, double lambda1, double damping, IncrementReport* report, ElementEvaluation* failure);
+  // |diagonal| of the assembled tangent (reduced) and adding a vector to that diagonal.
+  Eigen::VectorXd tangent_diagonal();
+  void add_to_diagonal(const Eigen::VectorXd& d);
 };
 
 }  // namespace spifit::solver

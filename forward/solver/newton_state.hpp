@@ -24,10 +24,16 @@ struct NewtonState {
   int increments = 0, iterations = 0, cutbacks = 0;
   int cholmod_factorisations = 0, umfpack_factorisations = 0, symbolic_analyses = 0;
   double element_seconds = 0.0, scatter_seconds = 0.0, linear_seconds = 0.0;
+  // Stabilisation (NewtonOptions::stabilisation): the damping factor in force (0: off), the
+  // converged increments it still lasts, and its totals.
+  double damping = 0.0;
+  int stabilised_left = 0, stabilised_increments = 0;
+  double viscous_work = 0.0, max_viscous_force = 0.0;
 };
 
-// Bit-exact (forward/io/binary_archive.hpp); load throws io::ArchiveError.
+// Bit-exact (forward/io/binary_archive.hpp); load throws io::ArchiveError. Archives written
+// before the stabilisation existed (with_stabilisation = false) hold none: it is off.
 void save_newton_state(io::BinaryWriter& w, const NewtonState& s);
-NewtonState load_newton_state(io::BinaryReader& r);
+NewtonState load_newton_state(io::BinaryReader& r, bool with_stabilisation = true);
 
 }  // namespace spifit::solver

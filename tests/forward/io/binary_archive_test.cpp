@@ -121,6 +121,21 @@ TEST(BinaryArchive, DamagedOrForeignArchivesAreRefused) {
   EXPECT_NE(error_of(good, "test", 4).find("layout version 3"), std::string::npos) << error_of(good, "test", 4);
 }
 
+// A reader may accept older layouts (cone checkpoints of layout 5 after the solver's
+// stabilisation state was added in 6) and says which one it read.
+TEST(BinaryArchive, AReaderAcceptsARangeOfLayoutsAndNamesIt) {
+  const std::string v3 = sample_archive();  // layout 3
+  EXPECT_EQ(BinaryReader(v3, "test", 4, 3).kind_version(), 3u);
+  EXPECT_EQ(BinaryReader(v3, "test", 3).kind_version(), 3u);
+  try {
+    BinaryReader r(v3, "test", 6, 4);
+    ADD_FAILURE() << "layout 3 accepted by a 4-6 reader";
+  } catch (const ArchiveError& e) {
+    EXPECT_NE(std::string(e.what()).find("layout version 3, this spifit reads version 4 to 6"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(BinaryReader(v3, "test", 2, 1), ArchiveError);  // newer than the reader
+}
+
 TEST(BinaryArchive, ReadingOutOfStepIsCaught) {
   BinaryWriter w("test", 1);
   w.section("a");

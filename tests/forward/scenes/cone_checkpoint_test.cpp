@@ -75,7 +75,7 @@ void expect_same_outputs(const fs::path& ref, const ConeReport& ref_report, cons
   const auto& b = report.summary;
   for (const char* k : {"status", "increments", "newton_iterations", "cutbacks", "factorisations", "factorisations_by_solver",
                         "travel_reached", "contours_completed", "peak_force", "peak_polar_force", "final_force", "final_polar_force",
-                        "max_penetration", "max_surface_penetration", "model", "path", "warnings", "observables"})
+                        "max_penetration", "max_surface_penetration", "model", "path", "warnings", "observables", "stabilised"})
     EXPECT_EQ(b[k], a[k]) << k;
   EXPECT_EQ(b["contour_wall_seconds"].size(), a["contour_wall_seconds"].size());
 }

@@ -56,6 +56,8 @@ TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
               s["peak_polar_force"][2].get<double>());
   EXPECT_EQ(s["status"], "ok");
   EXPECT_EQ(s["contours_completed"].get<int>(), 1);
+  EXPECT_EQ(s["stabilised"]["increments"].get<int>(), 0);  // none needed here
+  EXPECT_EQ(s["stabilised"]["viscous_work"].get<double>(), 0.0);
   EXPECT_EQ(s["model"]["virtual_tools_deg"].size(), 2u);
   EXPECT_GT(s["peak_force"][2].get<double>(), 0.0);  // the sheet pushes the tool up
   const auto rows = read_rows(dir / "force.csv");
@@ -129,9 +131,14 @@ TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
   EXPECT_EQ(s.divergence_after, 3);
   const fs::path d = write_scene("divergence", "[cone]\npreset = \"cone70\"\n[solver]\ndivergence_after = 4\n");
   EXPECT_EQ(read_cone_scene(d.string()).divergence_after, 4);
+  // Stabilised increments where a run would end: on by default for cones (1e-4), 0 turns them off.
+  EXPECT_EQ(s.stabilisation, 1e-4);
+  const fs::path z = write_scene("stabilisation", "[cone]\npreset = \"cone70\"\n[solver]\nstabilisation = 0\n");
+  EXPECT_EQ(read_cone_scene(z.string()).stabilisation, 0.0);
   fs::remove(f);
   fs::remove(v);
   fs::remove(d);
+  fs::remove(z);
 }
 
 // The load map of a cone70 pie path: linear with slope = effective length except on the moves,
@@ -275,6 +282,7 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
       {"[cone]\npreset = \"cone70\"\n[solver]\nmove_increments = -1\n", "solver.move_increments", "-1", "[0, 1000]"},
       {"[cone]\npreset = \"cone70\"\n[solver]\nestimate_next_correction = 1\n", "solver.estimate_next_correction", "1", "true or false"},
       {"[cone]\npreset = \"cone70\"\n[solver]\ndivergence_after = -1\n", "solver.divergence_after", "-1", "[0, 1000]"},
+      {"[cone]\npreset = \"cone70\"\n[solver]\nstabilisation = 2.0\n", "solver.stabilisation", "2", "[0, 1]"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"lobatto\"\n", "sheet.thickness_rule", "\"lobatto\"", "\"surface\""},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"surface\"\nthickness_points = 4\n", "sheet.thickness_rule", "", "odd number"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nmax_sector_deg = 60.0\n", "sheet.max_sector_deg", "60", "45 or 90"},
