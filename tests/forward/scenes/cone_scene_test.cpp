@@ -131,10 +131,10 @@ TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
   EXPECT_EQ(s.divergence_after, 3);
   const fs::path d = write_scene("divergence", "[cone]\npreset = \"cone70\"\n[solver]\ndivergence_after = 4\n");
   EXPECT_EQ(read_cone_scene(d.string()).divergence_after, 4);
-  // Stabilised increments where a run would end: on by default for cones (1e-4), 0 turns them off.
-  EXPECT_EQ(s.stabilisation, 1e-4);
-  const fs::path z = write_scene("stabilisation", "[cone]\npreset = \"cone70\"\n[solver]\nstabilisation = 0\n");
-  EXPECT_EQ(read_cone_scene(z.string()).stabilisation, 0.0);
+  // Stabilised increments where a run would end: off by default, [solver] stabilisation sets the factor.
+  EXPECT_EQ(s.stabilisation, 0.0);
+  const fs::path z = write_scene("stabilisation", "[cone]\npreset = \"cone70\"\n[solver]\nstabilisation = 1e-4\n");
+  EXPECT_EQ(read_cone_scene(z.string()).stabilisation, 1e-4);
   fs::remove(f);
   fs::remove(v);
   fs::remove(d);
