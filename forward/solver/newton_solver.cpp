@@ -158,24 +158,6 @@ bool NewtonSolver::solve_with_last_factor(const Eigen::VectorXd& rhs, Eigen::Vec
   return ok;
 }
 
-Eigen::VectorXd NewtonSolver::tangent_diagonal() {
-  const SparsePattern& p = k_->pattern();
-  if (diagonal_.empty()) {
-    diagonal_.resize(static_cast<std::size_t>(p.rows));
-    for (int i = 0; i < p.rows; ++i) {
-      diagonal_[static_cast<std::size_t>(i)] = p.find(i, i);
-      if (diagonal_[static_cast<std::size_t>(i)] < 0) throw std::logic_error("tangent pattern without a diagonal entry");
-    }
-  }
-  Eigen::VectorXd d(p.rows);
-  for (int i = 0; i < p.rows; ++i) d(i) = std::abs(k_->values()[static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])]);
-  return d;
-}
-
-void NewtonSolver::add_to_diagonal(const Eigen::VectorXd& d) {
-  for (Eigen::Index i = 0; i < d.size(); ++i) k_->values()[static_cast<std::size_t>(diagonal_[static_cast<std::size_t>(i)])] += d(i);
-}
-
 bool NewtonSolver::increment(double lambda0, double lambda1, double damping, IncrementReport* report, ElementEvaluation* failure) {
   problem_.revert();
   problem_.begin_increment(lambda0, lambda1);
@@ -224,7 +206,7 @@ bool NewtonSolver::increment(double lambda0, double lambda1, double damping, Inc
   // residual with them, the tangent gets c |diag K| on its diagonal before every solve.
   Eigen::VectorXd viscosity, du_bar;
   if (damping > 0.0) {
-    viscosity = damping * tangent_diagonal();
+    viscosity = damping * k_->diagonal().cwiseAbs();
     du_bar = Eigen::VectorXd::Zero(r.size());
   }
   double force_scale = 1e-300;
@@ -243,7 +225,7 @@ bool NewtonSolver::increment(double lambda0, double lambda1, double damping, Inc
   for (int it = 1; it <= options_.max_iterations; ++it) {
     Eigen::VectorXd du;
     std::string error;
-    if (damping > 0.0) add_to_diagonal(viscosity);
+    if (damping > 0.0) k_->add_to_diagonal(viscosity);
     if (!solve_linear(-r, &du, &error)) {
       failure->ok = false;
       failure->reason = "linear solver: " + error;

@@ -161,7 +161,6 @@ class NewtonSolver {
   double damping_ = 0.0;
   int stabilised_left_ = 0, stabilised_ = 0;
   double viscous_work_ = 0.0, max_viscous_force_ = 0.0;
-  std::vector<long> diagonal_;  // positions of the reduced tangent's diagonal entries
   // Factorisations and analyses of earlier solver objects (a restored state's).
   int prior_cholmod_ = 0, prior_umfpack_ = 0, prior_symbolic_ = 0;
   // Free part of the last converged increment (full DOF vector) and its load-factor size.
@@ -178,9 +177,7 @@ class NewtonSolver {
   NewtonSummary run(double lambda_end, const IncrementCallback& callback);
   // Returns false (with a message) when the increment fails.
   bool increment(double lambda0, double lambda1, double damping, IncrementReport* report, ElementEvaluation* failure);
-  // |diagonal| of the assembled tangent (reduced) and adding a vector to that diagonal.
-  Eigen::VectorXd tangent_diagonal();
-  void add_to_diagonal(const Eigen::VectorXd& d);
+
 };
 
 }  // namespace spifit::solver

@@ -35,6 +35,8 @@ SparsePattern build_pattern(int num_dofs, const std::vector<std::vector<int>>& e
   p.mirror.resize(p.cols.size());
   for (int r = 0; r < num_dofs; ++r)
     for (long k = p.row_ptr[r]; k < p.row_ptr[r + 1]; ++k) p.mirror[static_cast<std::size_t>(k)] = p.find(static_cast<int>(p.cols[k]), r);
+  p.diagonal.resize(static_cast<std::size_t>(num_dofs));
+  for (int r = 0; r < num_dofs; ++r) p.diagonal[static_cast<std::size_t>(r)] = p.find(r, r);  // present: each dof couples to itself
   return p;
 }
 
@@ -74,6 +76,19 @@ Eigen::VectorXd SparseMatrix::multiply(const Eigen::VectorXd& x) const {
     y(r) = s;
   }
   return y;
+}
+
+Eigen::VectorXd SparseMatrix::diagonal() const {
+  const auto& p = *pattern_;
+  Eigen::VectorXd d(p.rows);
+  for (int r = 0; r < p.rows; ++r) d(r) = values_[static_cast<std::size_t>(p.diagonal[static_cast<std::size_t>(r)])];
+  return d;
+}
+
+void SparseMatrix::add_to_diagonal(const Eigen::VectorXd& d) {
+  const auto& p = *pattern_;
+  if (d.size() != p.rows) throw std::invalid_argument("add_to_diagonal: one value per row expected");
+  for (int r = 0; r < p.rows; ++r) values_[static_cast<std::size_t>(p.diagonal[static_cast<std::size_t>(r)])] += d(r);
 }
 
 bool SparseMatrix::is_symmetric(double tol) const {

@@ -14,6 +14,7 @@ struct SparsePattern {
   std::vector<long> row_ptr;  // size rows + 1
   std::vector<long> cols;     // column indices, sorted within each row
   std::vector<long> mirror;   // mirror[k] = position of (cols[k], row of k), -1 if absent; set by build_pattern
+  std::vector<long> diagonal; // diagonal[r] = position of (r, r) (every row has one); set by build_pattern
   long nonzeros() const { return static_cast<long>(cols.size()); }
   long find(int row, int col) const;  // -1 when (row, col) is not in the pattern
 };
@@ -37,6 +38,8 @@ class SparseMatrix {
   void add_element(const std::vector<long>& positions, const Eigen::MatrixXd& ke);
   void add(int row, int col, double v);  // must be in the pattern
   Eigen::VectorXd multiply(const Eigen::VectorXd& x) const;
+  Eigen::VectorXd diagonal() const;
+  void add_to_diagonal(const Eigen::VectorXd& d);  // d: one value per row
   bool is_symmetric(double relative_tolerance) const;
 
  private:

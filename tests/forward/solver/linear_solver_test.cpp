@@ -29,6 +29,17 @@ TEST(SparsePattern, BuildAndFind) {
   EXPECT_EQ(p.nonzeros(), 10);  // tridiagonal 4 x 4
   EXPECT_GE(p.find(1, 2), 0);
   EXPECT_EQ(p.find(0, 3), -1);
+  // The diagonal's positions (stabilised increments add to it, NewtonOptions::stabilisation).
+  ASSERT_EQ(p.diagonal.size(), 4u);
+  for (int r = 0; r < 4; ++r) EXPECT_EQ(p.diagonal[static_cast<std::size_t>(r)], p.find(r, r));
+  SparseMatrix a(p);
+  a.add(1, 1, 2.0);
+  a.add(1, 2, -1.0);
+  a.add(2, 1, -1.0);
+  a.add_to_diagonal(Eigen::Vector4d(0.5, 0.25, 0.125, 1.0));
+  EXPECT_EQ(a.diagonal(), Eigen::Vector4d(0.5, 2.25, 0.125, 1.0));
+  EXPECT_EQ(a.multiply(Eigen::Vector4d(0.0, 0.0, 1.0, 0.0)), Eigen::Vector4d(0.0, -1.0, 0.125, 0.0));  // off-diagonal untouched
+  EXPECT_THROW(a.add_to_diagonal(Eigen::Vector2d(1.0, 1.0)), std::invalid_argument);
 }
 
 TEST(LinearSolver, BarAgainstExactSolutionBothSolvers) {
