@@ -5,8 +5,10 @@
 // completed contours, seconds per contour and where the time went (elements, assembly, linear
 // solver). Error against a reference: the steady-state Fz is only defined for the 100-contour
 // cone70 (docs/cone-scene.md), so the line reports the last contour's central-third mean Fz
-// for comparison by eye with the tables there. Only cone70_short (3 contours, about a minute)
-// runs by default: the others take hours and are selected with --benchmark_filter.
+// for comparison by eye with the tables there (read from the run's contours.csv). Only
+// cone70_short (3 contours, about a minute) runs by default: the others take minutes to hours
+// and are selected with --benchmark_filter; --benchmark_filter=cone50_ runs the pie trade (the
+// first 10 contours of cone50 on the 45, 90 and 360 degree meshes of one layout).
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
@@ -19,6 +21,8 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -36,13 +40,39 @@ struct Case {
 const Case kCases[] = {
     {"cone70_short", "experiments/aa3003o/scenes/cone70_pie45_short.toml", 1, true},
     {"cone50_pie45_10", "experiments/aa3003o/scenes/cone50_pie45_10.toml", 1, false},
+    {"cone50_pie90_10", "experiments/aa3003o/scenes/cone50_pie90_10.toml", 1, false},
+    {"cone50_disc360_10", "experiments/aa3003o/scenes/cone50_disc360_10.toml", 1, false},
     {"cone70_fine_60", "experiments/aa3003o/scenes/cone70_pie45_fine.toml", 1, false},
     {"vwall_pie45", "experiments/aa3003o/scenes/vwall_pie45.toml", 1, false},
 };
 
+// The last row of DIR/contours.csv (stage, contour, samples, Fx, Fy, Fz, Fr, Ftheta; the
+// central-third means of the last completed contour) as {contour, Fz, Fr}; contour 0 if none.
+struct LastContour {
+  int contour = 0;
+  double fz = 0.0, fr = 0.0;
+};
+LastContour last_contour(const std::filesystem::path& csv) {
+  std::ifstream in(csv);
+  std::string line, last;
+  while (std::getline(in, line))
+    if (!line.empty() && line[0] != '#' && line.rfind("stage", 0) != 0) last = line;
+  LastContour out;
+  std::vector<double> v;
+  std::stringstream ss(last);
+  for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+  if (v.size() >= 7) out = {static_cast<int>(v[1]), v[5], v[6]};
+  return out;
+}
+
 void cone_scene(benchmark::State& state, const Case& c) {
   const scene::ConeScene s = scene::read_cone_scene(std::string(SPIFIT_SOURCE_DIR) + "/" + c.file);
-  const bench::SceneRuns runs = bench::run_scene_repeatedly(state, c.name, [&](const io::OutputDirectory& out) { return scene::run_cone_scene(s, out); });
+  LastContour lc;
+  const bench::SceneRuns runs = bench::run_scene_repeatedly(state, c.name, [&](const io::OutputDirectory& out) {
+    auto report = scene::run_cone_scene(s, out);
+    lc = last_contour(out.path() / "contours.csv");  // before the directory is removed
+    return report;
+  });
   if (runs.walls.empty()) return;
   const nlohmann::json& last = runs.last;
   const std::size_t k = runs.walls.size();
@@ -58,9 +88,12 @@ void cone_scene(benchmark::State& state, const Case& c) {
   state.counters["elements_s"] = last["profile_seconds"]["elements"].get<double>();
   state.counters["linear_s"] = last["profile_seconds"]["linear_solver"].get<double>();
   state.counters["threads"] = omp_get_max_threads();
-  std::printf("# %-16s median %.1f s over %zu run(s): %d elements, %d contours (%.1f s each), %d increments, %d Newton iterations, %d cut-backs\n",
+  state.counters["last_Fz_N"] = lc.fz;
+  std::printf("# %-16s median %.1f s over %zu run(s): %d elements, %d contours (%.1f s each), %d increments, %d Newton iterations, %d cut-backs;"
+              " contour %d mean Fz %.1f N, Fr/Fz %.3f\n",
               c.name, median, k, last["model"]["elements"].get<int>(), contours, median / std::max(contours, 1),
-              last["increments"].get<int>(), last["newton_iterations"].get<int>(), last["cutbacks"].get<int>());
+              last["increments"].get<int>(), last["newton_iterations"].get<int>(), last["cutbacks"].get<int>(), lc.contour, lc.fz,
+              lc.fz != 0.0 ? lc.fr / lc.fz : 0.0);
 }
 
 }  // namespace
