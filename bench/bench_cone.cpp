@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -60,7 +61,11 @@ LastContour last_contour(const std::filesystem::path& csv) {
   LastContour out;
   std::vector<double> v;
   std::stringstream ss(last);
-  for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+  try {
+    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+  } catch (const std::exception&) {
+    return out;  // a malformed row: no contour to report
+  }
   if (v.size() >= 7) out = {static_cast<int>(v[1]), v[5], v[6]};
   return out;
 }
