@@ -13,6 +13,7 @@
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
 #include "forward/scenes/cone_scene.hpp"
+#include "inverse/measurement.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -22,8 +23,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -47,26 +46,22 @@ const Case kCases[] = {
     {"vwall_pie45", "experiments/aa3003o/scenes/vwall_pie45.toml", 1, false},
 };
 
-// The last row of DIR/contours.csv (stage, contour, samples, Fx, Fy, Fz, Fr, Ftheta; the
-// central-third means of the last completed contour) as {contour, Fz, Fr}; contour 0 if none.
+// The last row of DIR/contours.csv (the central-third means of the last completed contour),
+// read with the project's CSV reader; contour 0 if the file has no rows or cannot be read.
 struct LastContour {
   int contour = 0;
   double fz = 0.0, fr = 0.0;
 };
 LastContour last_contour(const std::filesystem::path& csv) {
-  std::ifstream in(csv);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty() && line[0] != '#' && line.rfind("stage", 0) != 0) last = line;
   LastContour out;
-  std::vector<double> v;
-  std::stringstream ss(last);
   try {
-    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+    const inverse::MeasurementTable t = inverse::read_measurement_csv(csv.string());
+    if (t.rows() == 0) return out;
+    const std::size_t last = t.rows() - 1;
+    out = {static_cast<int>(t.column("contour")[last]), t.column("Fz")[last], t.column("Fr")[last]};
   } catch (const std::exception&) {
-    return out;  // a malformed row: no contour to report
+    // no contour to report
   }
-  if (v.size() >= 7) out = {static_cast<int>(v[1]), v[5], v[6]};
   return out;
 }
 
