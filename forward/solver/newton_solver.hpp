@@ -177,7 +177,6 @@ class NewtonSolver {
   NewtonSummary run(double lambda_end, const IncrementCallback& callback);
   // Returns false (with a message) when the increment fails.
   bool increment(double lambda0, double lambda1, double damping, IncrementReport* report, ElementEvaluation* failure);
-
 };
 
 }  // namespace spifit::solver
