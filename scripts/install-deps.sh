@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake
-  libeigen3-dev libceres-dev libnlopt-cxx-dev libsuitesparse-dev libopenblas0-serial libomp-dev
+  libeigen3-dev libceres-dev libnlopt-cxx-dev libsuitesparse-dev libopenblas0-openmp libomp-dev
   libcli11-dev libtoml11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox calculix-ccx

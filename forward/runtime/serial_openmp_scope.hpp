@@ -9,6 +9,11 @@
 // every parallel region the calling thread opens runs on that thread alone; the element loops of
 // spifit, outside the scope, keep all threads. Use it from serial code only (the ICV is global in
 // libgomp).
+//
+// The scope also sets the calling thread's team size to 1: the OpenMP build of OpenBLAS
+// (libopenblas0-openmp) sizes its own teams by omp_get_max_threads() and then waits for the
+// partners of a split dgemm, which never come when max-active-levels is 0 -- a deadlock
+// (docs/dependencies.md, BLAS).
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -19,20 +24,23 @@ class SerialOpenMpScope {
  public:
   SerialOpenMpScope() {
 #ifdef _OPENMP
-    saved_ = omp_get_max_active_levels();
+    saved_levels_ = omp_get_max_active_levels();
+    saved_threads_ = omp_get_max_threads();
     omp_set_max_active_levels(0);
+    omp_set_num_threads(1);
 #endif
   }
   ~SerialOpenMpScope() {
 #ifdef _OPENMP
-    omp_set_max_active_levels(saved_);
+    omp_set_num_threads(saved_threads_);
+    omp_set_max_active_levels(saved_levels_);
 #endif
   }
   SerialOpenMpScope(const SerialOpenMpScope&) = delete;
   SerialOpenMpScope& operator=(const SerialOpenMpScope&) = delete;
 
  private:
-  int saved_ = 1;
+  int saved_levels_ = 1, saved_threads_ = 1;
 };
 
 }  // namespace spifit::runtime

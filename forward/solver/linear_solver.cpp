@@ -4,6 +4,7 @@
 #include <umfpack.h>
 
 #include "forward/runtime/serial_openmp_scope.hpp"
+#include "forward/solver/split_cholmod.hpp"
 
 namespace spifit::solver {
 
@@ -189,8 +190,10 @@ bool linear_solver_from_string(const std::string& s, LinearSolverKind* kind) {
 }
 
 std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind) {
-  if (kind == LinearSolverKind::cholmod) return std::make_unique<Cholmod>();
+  if (kind == LinearSolverKind::cholmod) return make_split_cholmod();
   return std::make_unique<Umfpack>();
 }
+
+std::unique_ptr<LinearSolver> make_one_piece_cholmod() { return std::make_unique<Cholmod>(); }
 
 }  // namespace spifit::solver

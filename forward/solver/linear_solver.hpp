@@ -19,6 +19,9 @@ class LinearSolver {
   const std::string& error() const { return error_; }
   int symbolic_analyses() const { return symbolic_; }
   int numeric_factorisations() const { return numeric_; }
+  // How the last analysed matrix is factorised (e.g. the split's domain and separator sizes);
+  // empty when there is nothing to add to the solver's name.
+  virtual std::string layout() const { return {}; }
 
  protected:
   std::string error_;
@@ -31,7 +34,10 @@ enum class LinearSolverKind { automatic, umfpack, cholmod };
 const char* to_string(LinearSolverKind kind);
 // "auto", "umfpack" or "cholmod"; false otherwise.
 bool linear_solver_from_string(const std::string& s, LinearSolverKind* kind);
-// umfpack or cholmod (automatic gives UMFPACK).
+// umfpack or cholmod (automatic gives UMFPACK). CHOLMOD splits large systems in two halves
+// factorised side by side (split_cholmod.hpp).
 std::unique_ptr<LinearSolver> make_linear_solver(LinearSolverKind kind);
+// CHOLMOD on the whole matrix at once (what the split uses below its size threshold).
+std::unique_ptr<LinearSolver> make_one_piece_cholmod();
 
 }  // namespace spifit::solver
