@@ -4,6 +4,7 @@
 #include <umfpack.h>
 
 #include "forward/runtime/serial_openmp_scope.hpp"
+#include "forward/solver/cholmod_views.hpp"
 #include "forward/solver/split_cholmod.hpp"
 
 namespace spifit::solver {
@@ -118,15 +119,7 @@ class Cholmod final : public LinearSolver {
   }
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) override {
     if (!factor_) return fail("solve before factorize");
-    cholmod_dense B;
-    B.nrow = n_;
-    B.ncol = 1;
-    B.nzmax = n_;
-    B.d = n_;
-    B.x = const_cast<double*>(b.data());
-    B.z = nullptr;
-    B.xtype = CHOLMOD_REAL;
-    B.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense B = column_view(b.data(), n_);
     cholmod_dense* X = nullptr;
     {
       const runtime::SerialOpenMpScope serial;
@@ -141,23 +134,9 @@ class Cholmod final : public LinearSolver {
   }
 
  private:
-  cholmod_sparse view(const SparseMatrix& a) {
+  static cholmod_sparse view(const SparseMatrix& a) {
     const auto& p = a.pattern();
-    cholmod_sparse A;
-    A.nrow = A.ncol = p.rows;
-    A.nzmax = p.nonzeros();
-    A.p = const_cast<long*>(p.row_ptr.data());
-    A.i = const_cast<long*>(p.cols.data());
-    A.nz = nullptr;
-    A.x = const_cast<double*>(a.values().data());
-    A.z = nullptr;
-    A.stype = 1;
-    A.itype = CHOLMOD_LONG;
-    A.xtype = CHOLMOD_REAL;
-    A.dtype = CHOLMOD_DOUBLE;
-    A.sorted = 1;
-    A.packed = 1;
-    return A;
+    return symmetric_csc_view(p.rows, p.row_ptr.data(), p.cols.data(), a.values().data());
   }
   bool fail(const std::string& m) {
     error_ = m;

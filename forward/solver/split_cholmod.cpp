@@ -17,6 +17,7 @@
 
 #include "forward/runtime/blas_threads.hpp"
 #include "forward/runtime/serial_openmp_scope.hpp"
+#include "forward/solver/cholmod_views.hpp"
 
 namespace spifit::solver {
 
@@ -42,37 +43,6 @@ void for_both_halves(Fn&& fn) {
   const runtime::SerialOpenMpScope serial;
   fn(0);
   fn(1);
-}
-
-cholmod_sparse csc_view(long n, std::vector<long>& ptr, std::vector<long>& idx, std::vector<double>& values) {
-  cholmod_sparse A;
-  A.nrow = A.ncol = static_cast<std::size_t>(n);
-  A.nzmax = idx.size();
-  A.p = ptr.data();
-  A.i = idx.data();
-  A.nz = nullptr;
-  A.x = values.data();
-  A.z = nullptr;
-  A.stype = 1;  // both triangles are stored (symmetric CSR read as CSC); the upper one is used
-  A.itype = CHOLMOD_LONG;
-  A.xtype = CHOLMOD_REAL;
-  A.dtype = CHOLMOD_DOUBLE;
-  A.sorted = 1;
-  A.packed = 1;
-  return A;
-}
-
-cholmod_dense dense_view(Eigen::VectorXd& v) {
-  cholmod_dense B;
-  B.nrow = static_cast<std::size_t>(v.size());
-  B.ncol = 1;
-  B.nzmax = B.nrow;
-  B.d = B.nrow;
-  B.x = v.data();
-  B.z = nullptr;
-  B.xtype = CHOLMOD_REAL;
-  B.dtype = CHOLMOD_DOUBLE;
-  return B;
 }
 
 // One half K_h = K[D_h + S, D_h + S]: its own pattern, CHOLMOD workspace and factor.
@@ -109,7 +79,7 @@ struct Half {
     return substitute(CHOLMOD_L, &y, w);
   }
   bool substitute(int system, Eigen::VectorXd* rhs, Eigen::VectorXd* out) {
-    cholmod_dense B = dense_view(*rhs);
+    cholmod_dense B = column_view(rhs->data(), rhs->size());
     cholmod_dense* X = cholmod_l_solve(system, factor, &B, &common);
     if (!X) return false;
     const double* xv = static_cast<const double*>(X->x);
@@ -148,7 +118,7 @@ class SplitCholmod final : public LinearSolver {
     for_both_halves([&](int h) {
       Half& half = *halves_[static_cast<std::size_t>(h)];
       for (std::size_t k = 0; k < half.gather.size(); ++k) half.values[k] = kv[static_cast<std::size_t>(half.gather[k])];
-      cholmod_sparse A = csc_view(half.n, half.ptr, half.idx, half.values);
+      cholmod_sparse A = symmetric_csc_view(half.n, half.ptr.data(), half.idx.data(), half.values.data());
       const int st = cholmod_l_factorize(&A, half.factor, &half.common);
       ok[static_cast<std::size_t>(h)] = st && half.common.status != CHOLMOD_NOT_POSDEF;
       if (!ok[static_cast<std::size_t>(h)]) return;
@@ -160,8 +130,7 @@ class SplitCholmod final : public LinearSolver {
     if (!ok[0] || !ok[1]) return fail("matrix not positive definite (CHOLMOD); use UMFPACK for this tangent");
     // Schur complement on the separator: G_0 + G_1 - C (lower part), in separator order.
     Eigen::MatrixXd s = Eigen::MatrixXd::Zero(ns_, ns_);
-    for (const auto& [i, j, k] : separator_entries_)
-      if (i >= j) s(i, j) -= kv[static_cast<std::size_t>(k)];
+    for (const auto& [i, j, k] : separator_entries_) s(i, j) -= kv[static_cast<std::size_t>(k)];
     for (const auto& hp : halves_) {
       const Half& half = *hp;
       for (long c = 0; c < ns_; ++c) {
@@ -244,9 +213,7 @@ class SplitCholmod final : public LinearSolver {
       whole_ = make_one_piece_cholmod();
       return true;
     }
-    std::vector<long> ptr(p.row_ptr.begin(), p.row_ptr.end()), idx(p.cols.begin(), p.cols.end());
-    std::vector<double> ones(idx.size(), 1.0);
-    cholmod_sparse A = csc_view(n, ptr, idx, ones);
+    cholmod_sparse A = symmetric_csc_view(n, p.row_ptr.data(), p.cols.data(), nullptr);  // the pattern
     std::vector<long> part(static_cast<std::size_t>(n), 0);
     long ns = -1;
     {
@@ -277,7 +244,7 @@ class SplitCholmod final : public LinearSolver {
       const long r = separator_[static_cast<std::size_t>(i)];
       for (long k = p.row_ptr[static_cast<std::size_t>(r)]; k < p.row_ptr[static_cast<std::size_t>(r) + 1]; ++k) {
         const long j = sep_index[static_cast<std::size_t>(p.cols[static_cast<std::size_t>(k)])];
-        if (j >= 0) separator_entries_.push_back({i, j, k});
+        if (j >= 0 && j <= i) separator_entries_.push_back({i, j, k});  // lower triangle
       }
     }
     for (int h = 0; h < 2; ++h) {
@@ -318,7 +285,7 @@ class SplitCholmod final : public LinearSolver {
     }
     half->values.assign(half->idx.size(), 1.0);
     // Ordering: constrained AMD with the separator last, then CHOLMOD's analysis of it.
-    cholmod_sparse A = csc_view(half->n, half->ptr, half->idx, half->values);
+    cholmod_sparse A = symmetric_csc_view(half->n, half->ptr.data(), half->idx.data(), half->values.data());
     std::vector<long> member(static_cast<std::size_t>(half->n), 0), perm(static_cast<std::size_t>(half->n), 0);
     for (long i = half->nd; i < half->n; ++i) member[static_cast<std::size_t>(i)] = 1;
     const runtime::SerialOpenMpScope serial;
@@ -370,7 +337,7 @@ class SplitCholmod final : public LinearSolver {
   std::unique_ptr<LinearSolver> whole_;
   std::array<std::unique_ptr<Half>, 2> halves_;
   std::vector<long> separator_;                       // separator index -> unknown of K
-  std::vector<std::array<long, 3>> separator_entries_;  // (i, j, position in K) inside C
+  std::vector<std::array<long, 3>> separator_entries_;  // (i, j, position in K), i >= j, inside C
   Eigen::LLT<Eigen::MatrixXd> schur_;
   bool factored_ = false;
 };
