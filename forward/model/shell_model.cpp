@@ -23,6 +23,16 @@ void corner_vectors(const mesh::Quad& q, const std::vector<Eigen::Vector3d>& xs,
   }
 }
 
+// The axis a = (a_r, a_theta, a_z) read in the polar frame (e_r, e_theta, z) at the centroid of
+// the corners X (ShellModelOptions::material_axes = polar); a itself at a centroid on the z axis.
+Eigen::Vector3d polar_axis(const element::NodeVectors& X, const Eigen::Vector3d& a) {
+  const Eigen::Vector3d c = 0.25 * (X[0] + X[1] + X[2] + X[3]);
+  const double r = std::hypot(c.x(), c.y());
+  if (!(r > 1e-12 * (1.0 + c.norm()))) return a;
+  const Eigen::Vector3d er(c.x() / r, c.y() / r, 0.0), et(-er.y(), er.x(), 0.0);
+  return a.x() * er + a.y() * et + a.z() * Eigen::Vector3d::UnitZ();
+}
+
 // A unit vector normal to the unit vector d: the global axis least aligned with d, made normal
 // to it (x for d = +-z).
 Eigen::Vector3d least_aligned_normal(const Eigen::Vector3d& d) {
@@ -84,6 +94,7 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
     d0_[static_cast<std::size_t>(i)] /= len;
   }
   elements_.reserve(static_cast<std::size_t>(ne));
+  material_axes_.reserve(static_cast<std::size_t>(ne));
   element_dofs_.resize(static_cast<std::size_t>(ne));
   for (int e = 0; e < ne; ++e) {
     const auto& q = mesh.quads[static_cast<std::size_t>(e)];
@@ -92,8 +103,11 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
       X[static_cast<std::size_t>(i)] = mesh.nodes[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])];
       D[static_cast<std::size_t>(i)] = d0_[static_cast<std::size_t>(q[static_cast<std::size_t>(i)])];
     }
+    element::ShellOptions shell = options.shell;
+    if (options.material_axes == ShellModelOptions::MaterialAxes::polar) shell.material_axis = polar_axis(X, options.shell.material_axis);
+    material_axes_.push_back(shell.material_axis);
     try {
-      elements_.emplace_back(X, D, thickness, law_, rule_, options.shell);
+      elements_.emplace_back(X, D, thickness, law_, rule_, shell);
     } catch (const std::invalid_argument& err) {
       throw std::invalid_argument("element " + std::to_string(e) + ": " + err.what());
     }

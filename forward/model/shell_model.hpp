@@ -24,6 +24,13 @@ struct ShellModelOptions {
   // error above max_... (the thesis's fine cone mesh has t/l = 1.7).
   double warn_thickness_over_length = 1.0;
   double max_thickness_over_length = 3.0;
+  // Material axes of the elements. `fixed` (default): the rolling direction is
+  // shell.material_axis everywhere, as in a rolled sheet. `polar`: shell.material_axis is read in
+  // each element's polar frame (e_r, e_theta, z) at its reference centroid, so the rolling
+  // direction turns with the polar angle; the material is then the same in every pie of a disc,
+  // which is what the cyclic ties of a pie model assume (docs/cone-scene.md, "Material axes").
+  enum class MaterialAxes { fixed, polar };
+  MaterialAxes material_axes = MaterialAxes::fixed;
 };
 
 // Energy account of the committed state [N mm] (SPEC §4: checks). Static implicit solution:
@@ -145,6 +152,8 @@ class ShellModel final : public solver::NonlinearProblem {
   const Eigen::Vector3d& reference_director(int node) const { return d0_[static_cast<std::size_t>(node)]; }
   double load_factor() const { return lambda_; }
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
+  // Rolling direction given to element e (ShellModelOptions::material_axes).
+  const Eigen::Vector3d& material_axis(int e) const { return material_axes_[static_cast<std::size_t>(e)]; }
   std::vector<double> nodal_thickness() const;
   ModelEnergies energies() const;
   // Lumped mass per node, Jetteur's diagonal matrix (thesis eqs. 6.61-6.62): translational
@@ -166,6 +175,7 @@ class ShellModel final : public solver::NonlinearProblem {
   element::ThicknessRule rule_;
   double thickness_;
   std::vector<element::ShellQ4> elements_;
+  std::vector<Eigen::Vector3d> material_axes_;  // per element (rolling direction)
   std::vector<std::vector<int>> element_dofs_;
   std::vector<Eigen::Vector3d> d0_;
   std::vector<Eigen::Vector3d> x_, d_;            // committed

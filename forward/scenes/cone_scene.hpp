@@ -10,6 +10,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/mesh/disc_mesh.hpp"
+#include "forward/model/shell_model.hpp"
 #include "forward/scenes/cone_observables.hpp"
 #include "forward/solver/newton_solver.hpp"
 #include "forward/toolpath/cone_path.hpp"
@@ -36,6 +37,10 @@ struct ConeScene {
   bool clamp_rotations = false;    // thesis: translations only
   mesh::DiscOptions mesh;          // radius and angle follow clamp_radius and pie_angle
   int thickness_points = 5;
+  // [sheet] material_axes: "fixed" (default; rolling direction = x everywhere, a rolled sheet) or
+  // "polar" (rolling direction = the radial direction of each element: the same material in every
+  // pie, as the cyclic ties of a pie assume; docs/cone-scene.md, "Material axes").
+  model::ShellModelOptions::MaterialAxes material_axes = model::ShellModelOptions::MaterialAxes::fixed;
   // Gauss (default) or "surface" (Simpson per half, with the surface points: integrates the
   // fully plastic moment exactly; 5 Gauss points miss 5.5 % of it, docs/numerics-shell.md).
   element::ThicknessRuleKind thickness_rule = element::ThicknessRuleKind::gauss;

@@ -90,6 +90,7 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const Cone
                 {"clamp_rotations", s.clamp_rotations},   {"thickness", s.thickness},
                 {"thickness_points", s.thickness_points}, {"thickness_rule", element::to_string(s.thickness_rule)},
                 {"elements_per_45deg", s.mesh.elements_per_45deg},
+                {"material_axes", s.material_axes == model::ShellModelOptions::MaterialAxes::polar ? "polar" : "fixed"},
                 {"virtual_tools_deg", model.tool_copies_deg()}};
   json stages = json::array();
   for (const auto& o : s.stages)
@@ -241,6 +242,7 @@ ConeReport run_cone_scene(const ConeScene& scene, const io::OutputDirectory& out
   model::ShellModelOptions mo;
   mo.shell.thickness_points = scene.thickness_points;
   mo.shell.thickness_rule = scene.thickness_rule;
+  mo.material_axes = scene.material_axes;
   model::ShellModel model(mesh, scene.thickness, scene.card.params, mo);
   const ConeTrack track(cone_scene_path(scene));
   const toolpath::ToolPath& path = track.path().path;

@@ -90,8 +90,8 @@ double von_mises_plane_stress(const Eigen::Vector3d& s) {
   return std::sqrt(std::max(0.0, s(0) * s(0) - s(0) * s(1) + s(1) * s(1) + 3.0 * s(2) * s(2)));
 }
 
-ElementHistoryRow element_history_row(const model::ShellModel& model, int e, const element::ThicknessRule& rule,
-                                      const Eigen::Vector3d& material_axis) {
+ElementHistoryRow element_history_row(const model::ShellModel& model, int e, const element::ThicknessRule& rule) {
+  const Eigen::Vector3d& material_axis = model.material_axis(e);
   const auto& q = model.mesh().quads.at(static_cast<std::size_t>(e));
   element::NodeVectors X, D, x, d;
   for (std::size_t i = 0; i < 4; ++i) {

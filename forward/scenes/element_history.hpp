@@ -78,10 +78,10 @@ struct ElementHistoryRow {
   double von_mises_mean = 0.0;       // through-thickness mean of the layers' von Mises stress
 };
 
-// The committed state of element e of the model. rule: the model's through-thickness rule;
-// material_axis: the rolling direction of the model's shells (ShellOptions::material_axis).
-ElementHistoryRow element_history_row(const model::ShellModel& model, int e, const element::ThicknessRule& rule,
-                                      const Eigen::Vector3d& material_axis = Eigen::Vector3d::UnitX());
+// The committed state of element e of the model. rule: the model's through-thickness rule. The
+// layer stresses are turned from the element's material frame (its rolling direction,
+// ShellModel::material_axis) into e_r, e_theta.
+ElementHistoryRow element_history_row(const model::ShellModel& model, int e, const element::ThicknessRule& rule);
 
 // history.csv columns and one row (docs/file-formats.md "Cone scene").
 std::vector<std::string> element_history_columns(int layers);

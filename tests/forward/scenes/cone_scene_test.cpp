@@ -119,7 +119,11 @@ TEST(ConeScene, PresetsFillTheGeometryAndTheClampRadius) {
   EXPECT_DOUBLE_EQ(s.thickness, 1.2);
   EXPECT_DOUBLE_EQ(s.clamp_radius, 91.5);
   EXPECT_EQ(s.thickness_rule, element::ThicknessRuleKind::surface);
+  EXPECT_EQ(s.material_axes, model::ShellModelOptions::MaterialAxes::fixed);  // rolling direction x
   EXPECT_EQ(cone_scene_mesh(s).node_sets.count("edge_theta1"), 1u);
+  const fs::path polar = write_scene("polar", "[cone]\npreset = \"cone70\"\n[sheet]\nmaterial_axes = \"polar\"\n");
+  EXPECT_EQ(read_cone_scene(polar.string()).material_axes, model::ShellModelOptions::MaterialAxes::polar);
+  fs::remove(polar);
   const fs::path v = write_scene("vwall", "[cone]\npreset = \"vwall\"\nstages = 2\npie_angle = 90.0\n[sheet]\nelements_per_45deg = 8\n");
   const ConeScene w = read_cone_scene(v.string());
   ASSERT_EQ(w.stages.size(), 2u);
@@ -286,6 +290,7 @@ TEST(ConeScene, ReaderErrorsNameFileKeyAndValue) {
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"lobatto\"\n", "sheet.thickness_rule", "\"lobatto\"", "\"surface\""},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nthickness_rule = \"surface\"\nthickness_points = 4\n", "sheet.thickness_rule", "", "odd number"},
       {"[cone]\npreset = \"cone70\"\n[sheet]\nmax_sector_deg = 60.0\n", "sheet.max_sector_deg", "60", "45 or 90"},
+      {"[cone]\npreset = \"cone70\"\n[sheet]\nmaterial_axes = \"radial\"\n", "sheet.material_axes", "\"radial\"", "\"polar\""},
       {"[cone]\npreset = \"vwall\"\n[sheet]\nring_start = 10.0\ncore_radius = 26.0\n", "sheet", "", "ring_start must lie beyond the core"},
   };
   for (const auto& c : cases) {

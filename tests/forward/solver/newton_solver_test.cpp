@@ -257,6 +257,94 @@ TEST(CyclicSymmetry, PieReproducesTheHomogeneousExpansionOfADisc) {
   EXPECT_LT(err, 1e-12);
 }
 
+// The disc (angle 360) or 90 deg pie of an orthotropic Hill sheet (card C.3's F, G, H, N) whose rim
+// is pushed out radially by 2 % (plastic), kept flat; a pie carries the cyclic ties. Returns the
+// displacement of every node, by node number.
+std::vector<Eigen::Vector3d> expand_orthotropic(double angle_deg, model::ShellModelOptions::MaterialAxes axes, mesh::Mesh* out) {
+  mesh::DiscOptions o;
+  o.radius = 10.0;
+  o.angle_deg = angle_deg;
+  o.elements_per_45deg = 4;
+  o.max_sector_deg = 45.0;  // the pie is an exact quarter of the disc
+  *out = mesh::disc_mesh(o);
+  const mesh::Mesh& m = *out;
+  material::MaterialParams<double> p = aluminium(true);
+  p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;
+  model::ShellModelOptions mo;
+  mo.material_axes = axes;
+  ShellModel model(m, 0.5, p, mo);
+  DofConstraints c(model.num_dofs());
+  if (angle_deg < 360.0) model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", angle_deg, &c);
+  for (int n : m.node_sets.at("rim")) {
+    const Eigen::Vector3d& x = m.nodes[static_cast<std::size_t>(n)];
+    if (c.tied(ShellModel::dof(n, 0))) continue;
+    c.prescribe(ShellModel::dof(n, 0), 0.02 * x.x());
+    c.prescribe(ShellModel::dof(n, 1), 0.02 * x.y());
+  }
+  for (int n = 0; n < m.num_nodes(); ++n)
+    if (!c.tied(ShellModel::dof(n, 2)) && !c.prescribed(ShellModel::dof(n, 2))) c.prescribe(ShellModel::dof(n, 2));
+  c.finalize();
+  NewtonOptions no;
+  no.initial_increment = no.max_increment = 0.25;
+  NewtonSolver s(model, c, no);
+  EXPECT_TRUE(s.solve().converged);
+  std::vector<Eigen::Vector3d> u;
+  for (int n = 0; n < m.num_nodes(); ++n) u.push_back(model.displacement(n));
+  return u;
+}
+
+// Largest difference between the pie's displacements and the disc's at the same nodes, over the
+// largest disc displacement.
+double pie_against_disc(model::ShellModelOptions::MaterialAxes axes) {
+  mesh::Mesh pie, disc;
+  const auto up = expand_orthotropic(90.0, axes, &pie);
+  const auto ud = expand_orthotropic(360.0, axes, &disc);
+  double diff = 0.0, scale = 0.0;
+  int matched = 0;
+  for (int a = 0; a < pie.num_nodes(); ++a)
+    for (int b = 0; b < disc.num_nodes(); ++b)
+      if ((pie.nodes[static_cast<std::size_t>(a)] - disc.nodes[static_cast<std::size_t>(b)]).norm() < 1e-9) {
+        diff = std::max(diff, (up[static_cast<std::size_t>(a)] - ud[static_cast<std::size_t>(b)]).norm());
+        ++matched;
+      }
+  for (const auto& v : ud) scale = std::max(scale, v.norm());
+  EXPECT_EQ(matched, pie.num_nodes());
+  return diff / scale;
+}
+
+TEST(CyclicSymmetry, PolarMaterialAxesMakeAPieOfAnOrthotropicSheetEqualToItsDisc) {
+  // The cyclic ties assume the same material in every pie. With the rolling direction x
+  // everywhere (fixed axes) a disc of an orthotropic sheet does not expand axisymmetrically and
+  // its pie cannot follow it; with the rolling direction radial in every element (polar axes)
+  // the disc is the same in every quarter and the pie is exact.
+  const double fixed = pie_against_disc(model::ShellModelOptions::MaterialAxes::fixed);
+  const double polar = pie_against_disc(model::ShellModelOptions::MaterialAxes::polar);
+  std::printf("orthotropic expansion, pie vs disc (relative): fixed axes %.3e, polar axes %.3e\n", fixed, polar);
+  EXPECT_LT(polar, 1e-9);
+  EXPECT_GT(fixed, 1e-3);
+}
+
+TEST(CyclicSymmetry, PolarMaterialAxesAreRadialAtTheElementCentroid) {
+  mesh::DiscOptions o;
+  o.radius = 10.0;
+  o.angle_deg = 90.0;
+  o.elements_per_45deg = 4;
+  const mesh::Mesh m = mesh::disc_mesh(o);
+  model::ShellModelOptions mo;
+  mo.material_axes = model::ShellModelOptions::MaterialAxes::polar;
+  mo.shell.material_axis = Eigen::Vector3d(0.0, 1.0, 0.0);  // rolling direction circumferential
+  const ShellModel polar(m, 0.5, aluminium(true), mo);
+  const ShellModel fixed(m, 0.5, aluminium(true), {});
+  for (int e = 0; e < m.num_elements(); ++e) {
+    const auto& q = m.quads[static_cast<std::size_t>(e)];
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for (int n : q) c += 0.25 * m.nodes[static_cast<std::size_t>(n)];
+    const double t = std::atan2(c.y(), c.x());
+    EXPECT_NEAR((polar.material_axis(e) - Eigen::Vector3d(-std::sin(t), std::cos(t), 0.0)).norm(), 0.0, 1e-14) << "element " << e;
+    EXPECT_EQ(fixed.material_axis(e), Eigen::Vector3d::UnitX());
+  }
+}
+
 TEST(NewtonSolver, StopsAtTheMinimumIncrementAndSaysWhereAndWhy) {
   scene::ShellBenchmark b = scene::make_shell_benchmark({"limit_moment", 4, 5});
   b.solver.max_iterations = 1;  // cannot converge
