@@ -24,6 +24,17 @@ material::MaterialParams<double> aluminium(bool plastic) {
   return p;
 }
 
+// A disc or pie of radius 10 mm, 4 elements per 45 deg (disc_mesh's O-grid of sub-sectors of at
+// most max_sector_deg).
+mesh::Mesh small_disc(double angle_deg, double max_sector_deg = mesh::DiscOptions{}.max_sector_deg) {
+  mesh::DiscOptions o;
+  o.radius = 10.0;
+  o.angle_deg = angle_deg;
+  o.elements_per_45deg = 4;
+  o.max_sector_deg = max_sector_deg;
+  return mesh::disc_mesh(o);
+}
+
 // A thick cantilever strip (10 x 1 x 1, 10 x 2 elements), clamped at one end, with a load of
 // per_node along z on each of its three tip nodes.
 struct Cantilever {
@@ -228,11 +239,7 @@ TEST(DofConstraints, InconsistentConstraintsAreErrors) {
 TEST(CyclicSymmetry, PieReproducesTheHomogeneousExpansionOfADisc) {
   // A 90 deg pie whose second edge is tied to the rotated first edge, rim pushed out by 1 %:
   // the exact solution is the homogeneous equibiaxial expansion u = 0.01 x everywhere.
-  mesh::DiscOptions o;
-  o.radius = 10.0;
-  o.angle_deg = 90.0;
-  o.elements_per_45deg = 4;
-  const mesh::Mesh m = mesh::disc_mesh(o);
+  const mesh::Mesh m = small_disc(90.0);
   ShellModel model(m, 0.5, aluminium(false), {});
   DofConstraints c(model.num_dofs());
   model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", 90.0, &c);
@@ -261,12 +268,7 @@ TEST(CyclicSymmetry, PieReproducesTheHomogeneousExpansionOfADisc) {
 // is pushed out radially by 2 % (plastic), kept flat; a pie carries the cyclic ties. Returns the
 // displacement of every node, by node number.
 std::vector<Eigen::Vector3d> expand_orthotropic(double angle_deg, model::ShellModelOptions::MaterialAxes axes, mesh::Mesh* out) {
-  mesh::DiscOptions o;
-  o.radius = 10.0;
-  o.angle_deg = angle_deg;
-  o.elements_per_45deg = 4;
-  o.max_sector_deg = 45.0;  // the pie is an exact quarter of the disc
-  *out = mesh::disc_mesh(o);
+  *out = small_disc(angle_deg, 45.0);  // 45 deg sub-sectors: the pie is an exact quarter of the disc
   const mesh::Mesh& m = *out;
   material::MaterialParams<double> p = aluminium(true);
   p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;
@@ -325,11 +327,7 @@ TEST(CyclicSymmetry, PolarMaterialAxesMakeAPieOfAnOrthotropicSheetEqualToItsDisc
 }
 
 TEST(CyclicSymmetry, PolarMaterialAxesAreRadialAtTheElementCentroid) {
-  mesh::DiscOptions o;
-  o.radius = 10.0;
-  o.angle_deg = 90.0;
-  o.elements_per_45deg = 4;
-  const mesh::Mesh m = mesh::disc_mesh(o);
+  const mesh::Mesh m = small_disc(90.0);
   model::ShellModelOptions mo;
   mo.material_axes = model::ShellModelOptions::MaterialAxes::polar;
   mo.shell.material_axis = Eigen::Vector3d(0.0, 1.0, 0.0);  // rolling direction circumferential
