@@ -89,7 +89,10 @@ TEST(ElementHistory, TensorRotationAndVonMises) {
   EXPECT_NEAR(von_mises_plane_stress({80.0, 80.0, 0.0}), 80.0, 1e-12);
 }
 
-TEST(ElementHistory, LayerStressesOfAShellModelUnderPrescribedStrain) {
+// The body of the test below, for the model's material axes: the layer stresses are kept in each
+// element's material frame, so the history must turn them with the element's own rolling
+// direction (polar axes: the radial direction, 30 deg from x at the element used).
+void check_layer_stresses_under_prescribed_strain(model::ShellModelOptions::MaterialAxes axes) {
   // A 90 deg pie (radius 10 mm, t = 1 mm, card C.3 + C.4) strained homogeneously: x = X +
   // (a X_x, 0, 0) with (1 + a)^2 = 1 + 2 eps, i.e. E_xx = eps, E_yy = 0 (elastic, eps = 1e-4).
   // Plane stress: S_xx = E eps / (1 - nu^2), S_yy = nu S_xx; in the polar frame at the element's
@@ -102,6 +105,7 @@ TEST(ElementHistory, LayerStressesOfAShellModelUnderPrescribedStrain) {
   const auto card = test::card("aa3003o_c3c4");
   model::ShellModelOptions mo;
   mo.shell.thickness_points = 3;
+  mo.material_axes = axes;
   model::ShellModel model(m, 1.0, card.params, mo);
   const double eps = 1e-4, a = std::sqrt(1.0 + 2.0 * eps) - 1.0;
   Eigen::VectorXd delta = Eigen::VectorXd::Zero(model.num_dofs());
@@ -141,6 +145,14 @@ TEST(ElementHistory, LayerStressesOfAShellModelUnderPrescribedStrain) {
   EXPECT_EQ(vals[0], 12.5);
   EXPECT_EQ(vals[5], row.centre.membrane(0));
   EXPECT_EQ(cols.back(), "L3_eqps");
+}
+
+TEST(ElementHistory, LayerStressesOfAShellModelUnderPrescribedStrain) {
+  check_layer_stresses_under_prescribed_strain(model::ShellModelOptions::MaterialAxes::fixed);
+}
+
+TEST(ElementHistory, LayerStressesWithPolarMaterialAxes) {
+  check_layer_stresses_under_prescribed_strain(model::ShellModelOptions::MaterialAxes::polar);
 }
 
 }  // namespace
