@@ -7,6 +7,8 @@
 
 #include <filesystem>
 #include <fstream>
+#include <system_error>
+#include <vector>
 
 namespace fs = std::filesystem;
 using namespace spifit;
@@ -14,9 +16,20 @@ using namespace spifit;
 namespace {
 std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
 
+// The files this test process wrote, removed when it ends (a test that fails early leaves none).
+struct WrittenFiles {
+  std::vector<fs::path> paths;
+  ~WrittenFiles() {
+    std::error_code ec;
+    for (const fs::path& p : paths) fs::remove(p, ec);
+  }
+};
+
 std::string write(const std::string& name, const std::string& text) {
+  static WrittenFiles written;
   const fs::path p = fs::temp_directory_path() / ("spifit_fitfile_" + std::to_string(::getpid()) + "_" + name);
   std::ofstream(p) << text;
+  written.paths.push_back(p);
   return p.string();
 }
 
