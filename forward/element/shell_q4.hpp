@@ -86,6 +86,8 @@ class ShellQ4 {
   ElementEnergy energy(const NodeVectors& x, const NodeVectors& d) const;
   double reference_area() const;
   const ShellSection& section(int point) const { return sections_[static_cast<std::size_t>(point)]; }
+  // The options the element was built with (its rolling direction among them).
+  const ShellOptions& options() const { return options_; }
   static constexpr int kPoints = 4;
 
  private:

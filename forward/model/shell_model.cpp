@@ -43,6 +43,14 @@ Eigen::Vector3d least_aligned_normal(const Eigen::Vector3d& d) {
 }
 }  // namespace
 
+bool material_axes_from_string(const std::string& s, ShellModelOptions::MaterialAxes* axes) {
+  if (s == "fixed") { *axes = ShellModelOptions::MaterialAxes::fixed; return true; }
+  if (s == "polar") { *axes = ShellModelOptions::MaterialAxes::polar; return true; }
+  return false;
+}
+
+const char* to_string(ShellModelOptions::MaterialAxes axes) { return axes == ShellModelOptions::MaterialAxes::polar ? "polar" : "fixed"; }
+
 ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
                        const ShellModelOptions& options)
     : mesh_(&mesh), options_(options), law_(material), rule_(element::make_thickness_rule(options.shell.thickness_rule, options.shell.thickness_points)),
@@ -94,7 +102,6 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
     d0_[static_cast<std::size_t>(i)] /= len;
   }
   elements_.reserve(static_cast<std::size_t>(ne));
-  material_axes_.reserve(static_cast<std::size_t>(ne));
   element_dofs_.resize(static_cast<std::size_t>(ne));
   for (int e = 0; e < ne; ++e) {
     const auto& q = mesh.quads[static_cast<std::size_t>(e)];
@@ -105,7 +112,6 @@ ShellModel::ShellModel(const mesh::Mesh& mesh, double thickness, const material:
     }
     element::ShellOptions shell = options.shell;
     if (options.material_axes == ShellModelOptions::MaterialAxes::polar) shell.material_axis = polar_axis(X, options.shell.material_axis);
-    material_axes_.push_back(shell.material_axis);
     try {
       elements_.emplace_back(X, D, thickness, law_, rule_, shell);
     } catch (const std::invalid_argument& err) {

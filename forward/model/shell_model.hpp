@@ -33,6 +33,10 @@ struct ShellModelOptions {
   MaterialAxes material_axes = MaterialAxes::fixed;
 };
 
+// "fixed" or "polar"; false otherwise (the [sheet] material_axes key, summary.json).
+bool material_axes_from_string(const std::string& s, ShellModelOptions::MaterialAxes* axes);
+const char* to_string(ShellModelOptions::MaterialAxes axes);
+
 // Energy account of the committed state [N mm] (SPEC §4: checks). Static implicit solution:
 // no kinetic energy. external_work = the tool's (and its copies') work on the sheet, the
 // trapezoidal sum over the increments of (f_old + f_new) / 2 . (change of the tool centre),
@@ -153,7 +157,7 @@ class ShellModel final : public solver::NonlinearProblem {
   double load_factor() const { return lambda_; }
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
   // Rolling direction given to element e (ShellModelOptions::material_axes).
-  const Eigen::Vector3d& material_axis(int e) const { return material_axes_[static_cast<std::size_t>(e)]; }
+  const Eigen::Vector3d& material_axis(int e) const { return elements_[static_cast<std::size_t>(e)].options().material_axis; }
   std::vector<double> nodal_thickness() const;
   ModelEnergies energies() const;
   // Lumped mass per node, Jetteur's diagonal matrix (thesis eqs. 6.61-6.62): translational
@@ -175,7 +179,6 @@ class ShellModel final : public solver::NonlinearProblem {
   element::ThicknessRule rule_;
   double thickness_;
   std::vector<element::ShellQ4> elements_;
-  std::vector<Eigen::Vector3d> material_axes_;  // per element (rolling direction)
   std::vector<std::vector<int>> element_dofs_;
   std::vector<Eigen::Vector3d> d0_;
   std::vector<Eigen::Vector3d> x_, d_;            // committed

@@ -144,12 +144,8 @@ void read_sheet_table(const TomlTable& root, ConeScene& s) {
     if (m.transition_elements < 0 || m.transition_elements > 100000) sh->fail("transition_elements", "must be >= 0 (0: automatic)");
     m.rim_ring_width = sh->number("rim_ring_width", m.rim_ring_width);
     if (!(m.rim_ring_width >= 0.0)) sh->fail("rim_ring_width", "must be >= 0 (0: none)");
-    if (sh->has("material_axes")) {
-      const std::string axes = sh->string("material_axes");
-      if (axes == "fixed") s.material_axes = model::ShellModelOptions::MaterialAxes::fixed;
-      else if (axes == "polar") s.material_axes = model::ShellModelOptions::MaterialAxes::polar;
-      else sh->fail("material_axes", "expected \"fixed\" (rolling direction x) or \"polar\" (rolling direction radial in every element)");
-    }
+    if (sh->has("material_axes") && !model::material_axes_from_string(sh->string("material_axes"), &s.material_axes))
+      sh->fail("material_axes", "expected \"fixed\" (rolling direction x) or \"polar\" (rolling direction radial in every element)");
     s.thickness_points = sh->integer("thickness_points", s.thickness_points);
     if (s.thickness_points < 1 || s.thickness_points > 11) sh->fail("thickness_points", "unsupported number of thickness points (1 to 11)");
     if (sh->has("thickness_rule")) {

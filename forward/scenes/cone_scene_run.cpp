@@ -90,7 +90,7 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const Cone
                 {"clamp_rotations", s.clamp_rotations},   {"thickness", s.thickness},
                 {"thickness_points", s.thickness_points}, {"thickness_rule", element::to_string(s.thickness_rule)},
                 {"elements_per_45deg", s.mesh.elements_per_45deg},
-                {"material_axes", s.material_axes == model::ShellModelOptions::MaterialAxes::polar ? "polar" : "fixed"},
+                {"material_axes", model::to_string(s.material_axes)},
                 {"virtual_tools_deg", model.tool_copies_deg()}};
   json stages = json::array();
   for (const auto& o : s.stages)

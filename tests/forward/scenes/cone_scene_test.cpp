@@ -59,6 +59,7 @@ TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
   EXPECT_EQ(s["stabilised"]["increments"].get<int>(), 0);  // none needed here
   EXPECT_EQ(s["stabilised"]["viscous_work"].get<double>(), 0.0);
   EXPECT_EQ(s["model"]["virtual_tools_deg"].size(), 2u);
+  EXPECT_EQ(s["model"]["material_axes"], "fixed");  // the default (rolling direction x)
   EXPECT_GT(s["peak_force"][2].get<double>(), 0.0);  // the sheet pushes the tool up
   const auto rows = read_rows(dir / "force.csv");
   ASSERT_EQ(static_cast<int>(rows.size()), s["increments"].get<int>());
