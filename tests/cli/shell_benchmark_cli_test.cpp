@@ -73,6 +73,7 @@ TEST(ShellBenchmarkCli, BadSettingsExitTwoNamingFileKeyAndValue) {
     EXPECT_NE(r.err.find(file), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_FALSE(fs::exists(out));
+    fs::remove(file);  // the scene files are written to the shared temp directory
   }
 }
 
@@ -95,6 +96,7 @@ TEST(ShellBenchmarkCli, NonConvergenceStopsWithWhereAndWhyAndKeepsOutputs) {
   EXPECT_TRUE(fs::exists(out / "increments.csv"));
   EXPECT_TRUE(fs::exists(out / "vtu" / "shell.pvd"));
   fs::remove_all(out);
+  fs::remove(file);
 }
 
 }  // namespace
