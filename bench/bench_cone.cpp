@@ -8,7 +8,9 @@
 // for comparison by eye with the tables there (read from the run's contours.csv). Only
 // cone70_short (3 contours, about a minute) runs by default: the others take minutes to hours
 // and are selected with --benchmark_filter; --benchmark_filter=cone50_ runs the pie trade (the
-// first 10 contours of cone50 on the 45, 90 and 360 degree meshes of one layout).
+// first 10 contours of cone50 on the 45, 90 and 360 degree meshes of one layout), and
+// cone70_fine_loose_60 the 60 fine contours with loose Newton tolerances (the speed/accuracy
+// trade of docs/cone-scene.md, "Session 24").
 // --benchmark_repetitions=N repeats a scene N times and adds Google Benchmark's median (the
 // "_median" row) over the repetitions.
 #include "forward/io/output_directory.hpp"
@@ -45,6 +47,7 @@ const Case kCases[] = {
     {"cone50_pie90_10", "experiments/aa3003o/scenes/cone50_pie90_10.toml", 1, false},
     {"cone50_disc360_10", "experiments/aa3003o/scenes/cone50_disc360_10.toml", 1, false},
     {"cone70_fine_60", "experiments/aa3003o/scenes/cone70_pie45_fine.toml", 1, false},
+    {"cone70_fine_loose_60", "experiments/aa3003o/scenes/cone70_pie45_fine_loose.toml", 1, false},
     {"vwall_pie45", "experiments/aa3003o/scenes/vwall_pie45.toml", 1, false},
     {"vwall_pie45_polar", "experiments/aa3003o/scenes/vwall_pie45_polar.toml", 1, false},
 };
