@@ -16,7 +16,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
-#include "forward/scenes/cone_scene.hpp"
+#include "forward/scenes/cone/cone_scene.hpp"
 #include "inverse/measurement.hpp"
 
 #include <benchmark/benchmark.h>

@@ -10,7 +10,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
-#include "forward/scenes/forming_scene.hpp"
+#include "forward/scenes/forming/forming_scene.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>

@@ -2,7 +2,7 @@
 // closed-form Hill 1948 + Swift solution, printed as counters.
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_card.hpp"
-#include "forward/scenes/material_point_test.hpp"
+#include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/closed_form.hpp"  // closed forms shared with the tests
 
 #include <benchmark/benchmark.h>

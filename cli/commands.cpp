@@ -2,10 +2,8 @@
 
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
-#include "forward/scenes/material_point_scene.hpp"
-#include "forward/scenes/cone_scene.hpp"
-#include "forward/scenes/forming_scene.hpp"
-#include "forward/scenes/shell_benchmark_scene.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/scenes/scene_registry.hpp"
 #include "reports/card_export.hpp"
 
 #include <nlohmann/json.hpp>
@@ -100,102 +98,30 @@ void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code)
 void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string scene, out; bool force = false, resume = false; };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json (+ DIR/curve.csv for material points; increments.csv and vtu/ for shell benchmarks; force.csv and vtu/ for forming and cone scenes)");
+  auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json and the scene's outputs (curve.csv for material points; "
+                                        "increments.csv and vtu/ for shell benchmarks; force.csv, energies.csv, sections and vtu/ for FE scenes)");
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
   auto* force = cmd->add_flag("--force", o->force, "replace an existing output directory");
-  cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (cone scenes)")->excludes(force);
+  cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
   cmd->callback([o, &g, &exit_code] {
-    const std::string kind = scene::scene_kind(o->scene);
-    if (o->resume && !scene::is_cone_kind(kind))
-      throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + kind + " (only cone scenes write checkpoints)");
-    if (scene::is_forming_kind(kind)) {
-      const auto fs = scene::read_forming_scene(o->scene);  // input errors before touching --out
-      std::vector<std::string> inputs{fs.file, fs.card.file};
-      if (!fs.gcode.empty()) inputs.push_back(fs.gcode);
-      const auto dir = io::OutputDirectory::prepare(o->out, o->force, inputs);
-      const auto rep = scene::run_forming_scene(fs, dir, g.verbose);
-      const auto& s = rep.summary;
-      if (!rep.ok) {
-        std::cerr << "spifit: " << fs.name << " failed: " << s.value("message", std::string("?")) << "\n";
-        exit_code = 1;
-        return;
-      }
-      if (!g.quiet) {
-        const auto& pk = s["peak_force"];
-        std::printf("%-16s %-12s peak force (%.2f, %.2f, %.2f) N, max penetration %.4f mm  (%d elements, %d increments, %d iterations, %.2f s)\n",
-                    fs.name.c_str(), kind.c_str(), pk[0].get<double>(), pk[1].get<double>(), pk[2].get<double>(),
-                    s["max_penetration"].get<double>(), s["model"]["elements"].get<int>(), s["increments"].get<int>(),
-                    s["newton_iterations"].get<int>(), s["wall_seconds"].get<double>());
-        for (const auto& w : s["warnings"]) std::printf("  warning: %s\n", w.get<std::string>().c_str());
-      }
-      exit_code = 0;
-      return;
-    }
-    if (scene::is_cone_kind(kind)) {
-      const auto cs = scene::read_cone_scene(o->scene);  // input errors before touching --out
-      const auto dir = o->resume ? io::OutputDirectory::existing(o->out) : io::OutputDirectory::prepare(o->out, o->force, {cs.file, cs.card.file});
-      scene::ConeRunOptions ro;
-      ro.progress = g.verbose;
-      ro.resume = o->resume;  // the checkpoint is checked before any output is rewritten
-      const auto rep = scene::run_cone_scene(cs, dir, ro);
-      const auto& s = rep.summary;
-      if (!rep.ok) {
-        std::cerr << "spifit: " << cs.name << " failed: " << s.value("message", std::string("?")) << "\n";
-        exit_code = 1;
-        return;
-      }
-      if (!g.quiet) {
-        const auto& pk = s["peak_force"];
-        const auto& fp = s["final_polar_force"];
-        std::printf("%-16s %-12s peak force (%.2f, %.2f, %.2f) N, final (Fr, Ftheta, Fz) (%.2f, %.2f, %.2f) N, %d/%d contours  (%d elements, %d increments, %d iterations, %.2f s)\n",
-                    cs.name.c_str(), kind.c_str(), pk[0].get<double>(), pk[1].get<double>(), pk[2].get<double>(), fp[0].get<double>(),
-                    fp[1].get<double>(), fp[2].get<double>(), s["contours_completed"].get<int>(), s["contours_total"].get<int>(),
-                    s["model"]["elements"].get<int>(), s["increments"].get<int>(), s["newton_iterations"].get<int>(),
-                    s["wall_seconds"].get<double>());
-        for (const auto& w : s["warnings"]) std::printf("  warning: %s\n", w.get<std::string>().c_str());
-      }
-      exit_code = 0;
-      return;
-    }
-    if (kind == "shell_benchmark") {
-      const auto sb = scene::read_shell_benchmark_scene(o->scene);  // input errors before touching --out
-      const auto dir = io::OutputDirectory::prepare(o->out, o->force, {sb.file});
-      const auto rep = scene::run_shell_benchmark_scene(sb, dir, g.verbose);
-      const auto& s = rep.summary;
-      if (!rep.ok) {
-        std::cerr << "spifit: " << sb.name << " failed: " << s.value("message", std::string("?")) << "\n";
-        exit_code = 1;
-        return;
-      }
-      if (!g.quiet) {
-        std::printf("%-28s %-26s value %.6g  reference %.6g  error %+.3f %%  (%d elements, %d increments, %d iterations, %.3f s)\n",
-                    sb.name.c_str(), s["benchmark"].get<std::string>().c_str(), s["value"].get<double>(),
-                    s["reference"].get<double>(), 100.0 * s["relative_error"].get<double>(), s["mesh"]["elements"].get<int>(),
-                    s["solver"]["increments"].get<int>(), s["solver"]["iterations"].get<int>(), s["wall_seconds"].get<double>());
-        for (const auto& w : s["warnings"]) std::printf("  warning: %s\n", w.get<std::string>().c_str());
-      }
-      exit_code = 0;
-      return;
-    }
-    const auto scene = scene::read_scene_file(o->scene);  // input errors before touching --out
-    const auto dir = io::OutputDirectory::prepare(o->out, o->force, {scene.file, scene.card.file});
-    const auto rep = scene::run_material_point_scene(scene, dir);
-    const auto& s = rep.summary;
-    if (!rep.ok) {
-      std::cerr << "spifit: " << scene.name << " failed: " << s.value("message", std::string("?")) << "\n";
+    const auto scene = scene::read_scene(o->scene);  // input errors before touching --out
+    const scene::SceneKind* kind = scene::find_scene_kind(scene->kind());
+    if (o->resume && !kind->resumable)
+      throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + scene->kind() + " (it writes no checkpoints)");
+    const auto dir = o->resume ? io::OutputDirectory::existing(o->out) : io::OutputDirectory::prepare(o->out, o->force, scene->input_files());
+    scene::RunControl control;
+    control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
+    if (g.verbose) control.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "  %s\n", e.text.c_str()); };
+    const auto result = scene->run(scene::RunFiles(dir), control);
+    if (!result->ok()) {
+      std::cerr << "spifit: " << scene->name() << " failed: " << result->message << "\n";
       exit_code = 1;
       return;
     }
     if (!g.quiet) {
-      std::printf("%-16s %-12s %-14s", scene.name.c_str(), s["kind"].get<std::string>().c_str(), scene.card.name.c_str());
-      if (s.contains("r_value") && !s["r_value"].is_null()) std::printf("  r(%.2f) = %.4f", s["r_value_strain"].get<double>(), s["r_value"].get<double>());
-      if (s.contains("initial_yield_stress")) std::printf("  sigma_y0 = %.3f", s["initial_yield_stress"].get<double>());
-      if (s.contains("yield_stress") && !s["yield_stress"].is_null()) std::printf("  sigma_0.2 = %.3f", s["yield_stress"].get<double>());
-      if (s.contains("reverse_yield_stress")) std::printf("  reverse yield = %.3f", s["reverse_yield_stress"].get<double>());
-      std::printf("  final stress = %.3f MPa at strain %.3f  (%.2f ms, %d increments)\n", s["final_stress"].get<double>(),
-                  s["final_strain"].get<double>(), 1e3 * s["wall_seconds"].get<double>(), s["increments"].get<int>());
-      if (g.verbose) std::printf("  -> %s/summary.json, %s/curve.csv\n", o->out.c_str(), o->out.c_str());
+      std::printf("%s\n", result->brief_report().c_str());
+      for (const auto& w : result->warnings) std::printf("  warning: %s\n", w.c_str());
     }
     exit_code = 0;
   });

@@ -3,6 +3,8 @@
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/material_point/material_point_file.hpp"
+#include "forward/scenes/scene_registry.hpp"
 #include "inverse/ceres_fit.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/fit_output.hpp"
@@ -89,7 +91,12 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
   cmd->add_option("--every", o->syn.every, "keep every k-th increment");
   cmd->add_flag("--force", o->force, "overwrite an existing file");
   cmd->callback([o, &g, &exit_code, command_line] {
-    auto scene = scene::read_scene_file(o->scene);
+    const std::string kind = scene::scene_kind_of_file(o->scene);
+    const scene::SceneKind* k = scene::find_scene_kind(kind);
+    if (!k) throw io::InputError(o->scene, "scene.kind", kind, "unknown scene kind (known: " + scene::scene_kind_names() + ")");
+    if (k->family != "material_point")
+      throw io::InputError(o->scene, "scene.kind", kind, "synth writes the curve of a material-point scene (tensile, shear, bauschinger, plane_strain, biaxial)");
+    auto scene = scene::read_material_point_scene(o->scene);
     if (!o->material.empty()) scene.card = material::load_material_card(o->material);
     if (std::filesystem::exists(o->out) && !o->force) throw io::InputError("", "--out", o->out, "file exists; pass --force to overwrite");
     o->syn.command = command_line;
@@ -146,7 +153,7 @@ reports::SweepTable sweep_table(const inverse::SweepSpec& spec, const inverse::S
 void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string file, out; bool force = false; };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("sweep", "Run a scene over a grid of inputs: DIR/sweep.csv, DIR/sensitivities.csv (forming scenes: DIR/points/NNN/)");
+  auto* cmd = app.add_subcommand("sweep", "Run a scene over a grid of inputs: DIR/sweep.csv, DIR/sensitivities.csv (FE scenes: DIR/points/NNN/)");
   cmd->add_option("SWEEP", o->file, "sweep file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
@@ -157,7 +164,7 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     inverse::SweepRunOptions ro;
     ro.threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     ro.out = &dir;
-    ro.progress = !g.quiet;
+    if (!g.quiet) ro.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "%s\n", e.text.c_str()); };
     const auto r = inverse::run_sweep(spec, ro);
     dir.write_file("sweep.csv", inverse::sweep_csv(spec, r));
     if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));

@@ -1,6 +1,6 @@
 #include "inverse/experiment.hpp"
 
-#include "forward/scenes/curve_columns.hpp"
+#include "forward/scenes/material_point/curve_columns.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // derivatives); black-box FE experiments (later issues) will report supports_jets() = false
 // and be differentiated by central differences.
 #include "forward/material/material_params.hpp"
-#include "forward/scenes/scene_file.hpp"
+#include "forward/scenes/material_point/material_point_file.hpp"
 
 #include <ceres/jet.h>
 

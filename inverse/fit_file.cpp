@@ -1,7 +1,7 @@
 #include "inverse/fit_file.hpp"
 
 #include "forward/io/toml_reader.hpp"
-#include "forward/scenes/curve_columns.hpp"
+#include "forward/scenes/material_point/curve_columns.hpp"
 #include "inverse/measurement.hpp"
 #include "inverse/nlopt_fit.hpp"
 
@@ -146,7 +146,7 @@ FitProblem read_fit_file(const std::string& path) {
     else e.allow_only({"name", "scene", "data", "x", "y", "noise", "weight", "weight_column"});
     const std::string scene_path = resolve(path, e.string("scene"));
     if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
-    auto sc = scene::read_scene_file(scene_path);
+    auto sc = scene::read_material_point_scene(scene_path);
     const std::string name = e.string("name", sc.name);
     // Names become file names (DIR/experiments/NAME.csv): plain and unique.
     const bool plain = !name.empty() && name[0] != '.' &&

@@ -7,39 +7,29 @@
 namespace spifit::inverse {
 
 const std::vector<std::string>& known_parameter_names() {
-  static const std::vector<std::string> names{"elastic.E", "elastic.nu", "hill.F",     "hill.G",  "hill.H",
-                                              "hill.N",    "swift.K",    "swift.eps0", "swift.n", "af.CX",
-                                              "af.Xsat",   "ziegler.CA", "ziegler.GA"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& m : material::material_inputs()) n.push_back(m.info.name);
+    return n;
+  }();
   return names;
 }
 
-bool is_known_parameter(const std::string& name) {
-  const auto& n = known_parameter_names();
-  return std::find(n.begin(), n.end(), name) != n.end();
-}
+bool is_known_parameter(const std::string& name) { return material::find_material_input(name) != nullptr; }
 
 double parameter_value(const material::MaterialCard& card, const std::string& n) {
-  const auto& m = card.params;
-  if (n == "elastic.E") return m.E;
-  if (n == "elastic.nu") return m.nu;
-  if (n == "hill.F") return m.F;
-  if (n == "hill.G") return m.G;
-  if (n == "hill.H") return m.H;
-  if (n == "hill.N") return m.N;
-  if (n == "swift.K") return m.K;
-  if (n == "swift.eps0") return m.eps0;
-  if (n == "swift.n") return m.n;
-  if (n == "af.CX") return m.CX;
-  if (n == "af.Xsat") return m.Xsat;
-  if (n == "ziegler.CA") return m.CA;
-  if (n == "ziegler.GA") return m.GA;
-  throw std::invalid_argument("unknown parameter " + n);
+  const material::MaterialInput* in = material::find_material_input(n);
+  if (!in) throw std::invalid_argument("unknown parameter " + n);
+  return material::material_field(card.params, in->field);
 }
 
 ParameterSet::ParameterSet(material::MaterialCard base, std::vector<ParameterSpec> specs, bool normalise_hill)
     : base_(std::move(base)), specs_(std::move(specs)), normalise_hill_(normalise_hill) {
   for (int i = 0; i < static_cast<int>(specs_.size()); ++i) {
-    if (!specs_[i].fixed) free_.push_back(i);
+    const material::MaterialInput* in = material::find_material_input(specs_[static_cast<std::size_t>(i)].name);
+    if (!in) throw std::invalid_argument("unknown parameter " + specs_[static_cast<std::size_t>(i)].name);
+    inputs_.push_back(in);
+    if (!specs_[static_cast<std::size_t>(i)].fixed) free_.push_back(i);
   }
 }
 

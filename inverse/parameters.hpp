@@ -1,9 +1,12 @@
 #pragma once
-// Named, bounded parameters of an identification (SPEC §6) and their mapping between the
-// optimiser's vector (internal coordinates: log of the value for log-scaled parameters) and
-// a material card. Ties: hill.N also sets L and M. Normalisation G + H = 2 is eliminated by
-// fitting hill.G and setting H = 2 - G (never handed to the optimiser as a constraint).
+// Named, bounded parameters of an identification (docs/identification.md) and their mapping
+// between the optimiser's vector (internal coordinates: log of the value for log-scaled
+// parameters) and a material card. The names, units and ties are the material law's table
+// (forward/material/material_inputs.hpp: hill.N also sets L and M). Normalisation G + H = 2 is
+// eliminated by fitting hill.G and setting H = 2 - G (never handed to the optimiser as a
+// constraint).
 #include "forward/material/material_card.hpp"
+#include "forward/material/material_inputs.hpp"
 
 #include <cmath>
 #include <string>
@@ -28,7 +31,8 @@ double parameter_value(const material::MaterialCard& card, const std::string& na
 
 class ParameterSet {
  public:
-  // base: the card whose values are used for everything not fitted.
+  // base: the card whose values are used for everything not fitted. std::invalid_argument for
+  // a name that is not a material parameter.
   ParameterSet(material::MaterialCard base, std::vector<ParameterSpec> specs, bool normalise_hill);
 
   const std::vector<ParameterSpec>& specs() const { return specs_; }
@@ -50,12 +54,11 @@ class ParameterSet {
   material::MaterialParams<T> apply(const T* x) const {
     using std::exp;
     material::MaterialParams<T> m = base_.params.template cast<T>();
-    for (const auto& s : specs_) {
-      if (s.fixed) set(m, s.name, T(s.initial));
-    }
+    for (std::size_t i = 0; i < specs_.size(); ++i)
+      if (specs_[i].fixed) material::set_material_input(m, *inputs_[i], T(specs_[i].initial));
     for (int k = 0; k < num_free(); ++k) {
-      const auto& s = specs_[free_[k]];
-      set(m, s.name, s.log_scale ? T(exp(x[k])) : x[k]);
+      const auto i = static_cast<std::size_t>(free_[k]);
+      material::set_material_input(m, *inputs_[i], specs_[i].log_scale ? T(exp(x[k])) : x[k]);
     }
     if (normalise_hill_) m.H = 2.0 - m.G;
     return m;
@@ -63,25 +66,9 @@ class ParameterSet {
   material::MaterialCard card_for(const std::vector<double>& internal) const;
 
  private:
-  template <typename T>
-  static void set(material::MaterialParams<T>& m, const std::string& n, const T& v) {
-    if (n == "elastic.E") m.E = v;
-    else if (n == "elastic.nu") m.nu = v;
-    else if (n == "hill.F") m.F = v;
-    else if (n == "hill.G") m.G = v;
-    else if (n == "hill.H") m.H = v;
-    else if (n == "hill.N") { m.N = v; m.L = v; m.M = v; }  // tie N = L = M
-    else if (n == "swift.K") m.K = v;
-    else if (n == "swift.eps0") m.eps0 = v;
-    else if (n == "swift.n") m.n = v;
-    else if (n == "af.CX") m.CX = v;
-    else if (n == "af.Xsat") m.Xsat = v;
-    else if (n == "ziegler.CA") m.CA = v;
-    else if (n == "ziegler.GA") m.GA = v;
-  }
-
   material::MaterialCard base_;
   std::vector<ParameterSpec> specs_;
+  std::vector<const material::MaterialInput*> inputs_;  // per spec
   std::vector<int> free_;
   bool normalise_hill_ = true;
 };

@@ -1,68 +1,54 @@
+// The sweep engine: grid points and sensitivity runs of any scene kind (sweep.hpp).
 #include "inverse/sweep.hpp"
 
-#include "inverse/forming_sweep.hpp"
-
 #include "forward/io/csv_writer.hpp"
-#include "forward/io/input_error.hpp"
-#include "forward/io/toml_reader.hpp"
+#include "forward/scenes/common/run_files.hpp"
 
 #include <omp.h>
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
-#include <filesystem>
+#include <cstdio>
 #include <limits>
 #include <stdexcept>
 
 namespace spifit::inverse {
-
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-const std::vector<std::string>& metric_list() {
-  static const std::vector<std::string> m{"r_value",      "yield_stress", "initial_yield_stress", "reverse_yield_stress",
-                                          "final_stress", "max_abs_stress", "final_eqps",         "final_thickness_strain"};
-  return m;
+// The metrics of a run: a failed run keeps its counts (iterations, increments); its forces and
+// shapes do not describe the whole path.
+std::vector<double> metrics_of(const SweepSpec& s, const scene::SceneResult& r) {
+  std::vector<double> out;
+  for (const auto& name : s.metrics) {
+    const scene::Observable* o = s.kind->find_observable(name);
+    out.push_back(r.ok() || o->counts_failed_runs ? o->value(r, s.options) : kNaN);
+  }
+  return out;
 }
 
-double metric(const scene::MaterialPointResult<double>& r, const std::string& name) {
-  if (!r.ok || r.curve.empty()) return kNaN;
-  if (name == "r_value") return r.r_value ? *r.r_value : kNaN;
-  if (name == "yield_stress") return r.offset_yield_stress ? *r.offset_yield_stress : kNaN;
-  if (name == "initial_yield_stress") return r.yield_events.empty() ? kNaN : r.yield_events.front().stress;
-  if (name == "reverse_yield_stress") {
-    for (const auto& e : r.yield_events) if (e.segment == 1) return e.stress;
-    return kNaN;
-  }
-  if (name == "final_stress") return r.curve.back().stress;
-  if (name == "max_abs_stress") {
-    double m = 0.0;
-    for (const auto& p : r.curve) m = std::max(m, std::abs(p.stress));
-    return m;
-  }
-  if (name == "final_eqps") return r.curve.back().eqps;
-  if (name == "final_thickness_strain") return r.curve.back().thickness_strain;
-  return kNaN;
-}
-
-// Runs the scene with the named inputs set to `values` on top of the base card.
-SweepPoint run_point(const SweepSpec& s, const std::vector<double>& values) {
+// One run of the scene with the inputs at `values`; its outputs in DIR/sub/ when dir is given.
+SweepPoint run_point(const SweepSpec& s, const std::vector<double>& values, const io::OutputDirectory* dir, const std::string& sub) {
   const auto t0 = std::chrono::steady_clock::now();
   SweepPoint p;
   p.inputs = values;
-  std::vector<ParameterSpec> specs;
-  for (std::size_t i = 0; i < s.inputs.size(); ++i) specs.push_back({s.inputs[i].name, values[i], values[i], values[i], true, false});
-  const ParameterSet ps(s.scene.card, specs, false);
-  const auto card = ps.card_for({});
   try {
-    material::validate_material_card(card);
-    const auto r = scene::run_material_point(card.params, s.scene.setup);
-    p.ok = r.ok;
-    p.message = r.message;
-    for (const auto& m : s.metrics) p.metrics.push_back(metric(r, m));
+    auto sc = s.scene->clone();
+    for (std::size_t k = 0; k < s.inputs.size(); ++k) {
+      const std::string why = sc->set_input(s.inputs[k].name, values[k]);
+      if (!why.empty()) throw std::invalid_argument(s.inputs[k].name + ": " + why);
+    }
+    std::unique_ptr<scene::SceneResult> r;
+    if (dir) {
+      const auto out = io::OutputDirectory::prepare((dir->path() / sub).string(), false);
+      r = sc->run(scene::RunFiles(out), {});
+    } else {
+      r = sc->run(scene::RunFiles(), {});
+    }
+    p.ok = r->ok();
+    p.message = r->message;
+    p.metrics = metrics_of(s, *r);
   } catch (const std::exception& e) {
     p.ok = false;
     p.message = e.what();
@@ -72,155 +58,86 @@ SweepPoint run_point(const SweepSpec& s, const std::vector<double>& values) {
   return p;
 }
 
-}  // namespace
-
-const char* sweep_metric_names() {
-  return "r_value, yield_stress, initial_yield_stress, reverse_yield_stress, final_stress, max_abs_stress, final_eqps, final_thickness_strain";
+std::string point_label(const SweepSpec& s, const std::vector<double>& values) {
+  std::string out;
+  char buf[64];
+  for (std::size_t k = 0; k < s.inputs.size(); ++k) {
+    std::snprintf(buf, sizeof buf, "%s%s=%.6g", k ? " " : "", s.inputs[k].name.c_str(), values[k]);
+    out += buf;
+  }
+  return out;
 }
-bool is_sweep_metric(const std::string& n) {
-  for (const auto& m : metric_list()) if (m == n) return true;
-  return false;
+
+void report(const SweepRunOptions& o, const std::string& what, const SweepSpec& s, const SweepPoint& p) {
+  if (!o.progress) return;
+  char buf[120];
+  std::snprintf(buf, sizeof buf, " -> %s in %.1f s", p.ok ? "ok" : "failed", p.wall_seconds);
+  o.progress({scene::ProgressEvent::Kind::mark, what + ": " + point_label(s, p.inputs) + buf + (p.ok ? "" : ": " + p.message), 0.0});
 }
 
-namespace {
-
-// Log spacing rounds in exp/log (up to a few 1e-15 relative): 12 significant digits keep
-// decades exact (100, not 100.00000000000004) in the grid, sweep.csv and the progress lines.
-double round_to_12_digits(double v) {
+// DIR/points/NNN: zero-padded to at least 3 digits, as many as the largest index needs.
+std::string point_dir(std::size_t i, std::size_t n) {
+  const int width = std::max(3, static_cast<int>(std::to_string(n > 0 ? n - 1 : 0).size()));
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.12g", v);
-  return std::strtod(buf, nullptr);
+  std::snprintf(buf, sizeof buf, "points/%0*zu", width, i);
+  return buf;
 }
 
-// values = [...] or from, to, steps (>= 2), log (geometric spacing).
-std::vector<double> read_input_values(const io::TomlTable& t) {
-  t.allow_only({"values", "from", "to", "steps", "log"});
-  std::vector<double> values;
-  if (t.has("values")) {
-    values = t.number_list("values");
-    if (values.empty()) t.fail("values", "must hold at least one value");
-    return values;
+std::vector<SweepPoint> run_grid(const SweepSpec& s, const SweepRunOptions& o) {
+  const auto grid = sweep_grid(s);
+  std::vector<SweepPoint> points(grid.size());
+  if (s.kind->parallel_sweeps) {
+    const int n = static_cast<int>(grid.size());
+#pragma omp parallel for schedule(dynamic) num_threads(std::max(1, o.threads))
+    for (int i = 0; i < n; ++i) points[static_cast<std::size_t>(i)] = run_point(s, grid[static_cast<std::size_t>(i)], nullptr, {});
+    return points;
   }
-  const double a = t.number("from"), b = t.number("to");
-  const int n = t.integer("steps", 5);
-  if (n < 2) t.fail("steps", "must be >= 2");
-  const bool lg = t.boolean("log", false);
-  if (lg && !(a > 0 && b > 0)) t.fail("from", "log spacing needs from, to > 0");
-  for (int i = 0; i < n; ++i) {
-    const double f = static_cast<double>(i) / (n - 1);
-    double v = lg ? round_to_12_digits(std::exp(std::log(a) + f * (std::log(b) - std::log(a)))) : a + f * (b - a);
-    if (i == 0) v = a;  // exact end points
-    if (i == n - 1) v = b;
-    values.push_back(v);
+  for (std::size_t i = 0; i < grid.size(); ++i) {
+    points[i] = run_point(s, grid[i], o.out, point_dir(i, grid.size()));
+    report(o, "point " + std::to_string(i + 1) + "/" + std::to_string(grid.size()), s, points[i]);
   }
-  return values;
+  return points;
 }
 
-// Integer scene keys: values within rounding of an integer (log spacing) become that integer.
-void snap_integers(const std::string& name, std::vector<double>& values) {
-  if (!is_integer_forming_key(name)) return;
-  for (double& v : values) {
-    const double r = std::round(v);
-    if (std::abs(v - r) <= 1e-9 * std::max(1.0, std::abs(v))) v = r;
+// Central differences of ln(metric) in ln(input) at the scene's own values (base, base (1 +- h)).
+std::vector<Sensitivity> run_sensitivities(const SweepSpec& s, const SweepRunOptions& o) {
+  const io::OutputDirectory* dir = s.kind->parallel_sweeps ? nullptr : o.out;
+  std::vector<double> base;
+  bool any = false;
+  for (const auto& in : s.inputs) {
+    base.push_back(s.scene->input(in.name));
+    any = any || (!in.integer && base.back() != 0.0);
   }
-}
-
-void read_metrics(const io::TomlTable& st, SweepSpec& s) {
-  const bool forming = s.forming.has_value();
-  const char* known = forming ? forming_metric_names() : sweep_metric_names();
-  if (!st.has("metrics")) st.fail("metrics", std::string("required: a list of metric names (") + known + ")");
-  s.metrics = st.string_list("metrics");
-  if (s.metrics.empty()) st.fail("metrics", "must list at least one metric name");
-  for (const auto& m : s.metrics) {
-    if (forming && is_sweep_metric(m))
-      st.fail("metrics", "\"" + m + "\" is a material-point metric; this scene is a forming scene (metrics: " + known + ")");
-    if (!forming && is_forming_metric(m))
-      st.fail("metrics", "\"" + m + "\" is a forming-scene metric; this scene is a material-point scene (metrics: " + known + ")");
-    if (!(forming ? is_forming_metric(m) : is_sweep_metric(m))) st.fail("metrics", "unknown metric \"" + m + "\" (known: " + known + ")");
+  std::vector<Sensitivity> r;
+  SweepPoint b;
+  b.metrics.assign(s.metrics.size(), kNaN);
+  if (any) {
+    b = run_point(s, base, dir, "sensitivities/base");
+    report(o, "sensitivity base", s, b);
   }
-}
-
-void read_inputs(const io::TomlTable& root, SweepSpec& s) {
-  const auto it = root.table("inputs");
-  if (!it) root.fail("inputs", "required table [inputs] with at least one parameter");
-  for (const auto& name : it->keys()) {
-    if (s.forming) {
-      if (!is_known_parameter(name) && !is_forming_scene_key(name))
-        it->fail(name, std::string("unknown input (forming scene keys: ") + forming_scene_key_names() + "; or a material parameter)");
-    } else if (is_forming_scene_key(name)) {
-      it->fail(name, "a forming-scene key; this scene is a material-point scene (inputs: material parameters)");
-    } else if (!is_known_parameter(name)) {
-      it->fail(name, "unknown parameter");
+  for (std::size_t k = 0; k < s.inputs.size(); ++k) {
+    // Integer inputs have no relative step; a zero base has no logarithm: NaN, no runs.
+    const bool skip = s.inputs[k].integer || base[k] == 0.0;
+    SweepPoint pu, pd;
+    if (!skip) {
+      auto up = base, dn = base;
+      up[k] *= 1.0 + s.relative_step;
+      dn[k] *= 1.0 - s.relative_step;
+      pu = run_point(s, up, dir, "sensitivities/" + s.inputs[k].name + "_up");
+      report(o, "sensitivity " + s.inputs[k].name + " up", s, pu);
+      pd = run_point(s, dn, dir, "sensitivities/" + s.inputs[k].name + "_down");
+      report(o, "sensitivity " + s.inputs[k].name + " down", s, pd);
     }
-    const auto t = it->table(name);
-    SweepInput in{name, read_input_values(*t)};
-    if (s.forming) {
-      snap_integers(name, in.values);
-      check_forming_input(*t, s.forming->scene, name, in.values);
-    }
-    s.inputs.push_back(in);
-  }
-  if (s.inputs.empty()) root.fail("inputs", "at least one input");
-}
-
-// Every grid point of a forming sweep is a valid scene (combinations of inputs included).
-void check_forming_grid(const SweepSpec& s) {
-  for (const auto& g : sweep_grid(s)) {
-    scene::FormingScene sc = s.forming->scene;
-    for (std::size_t k = 0; k < s.inputs.size(); ++k) set_forming_input(sc, s.inputs[k].name, g[k]);
-    for (std::size_t k = 0; k < s.inputs.size(); ++k) {
-      const std::string err = forming_input_error(sc, s.inputs[k].name, g[k]);
-      if (!err.empty()) throw io::InputError(s.file, "inputs." + s.inputs[k].name, io::format_number(g[k]), err + " (at a grid point with the other inputs)");
+    for (std::size_t m = 0; m < s.metrics.size(); ++m) {
+      Sensitivity sv{s.inputs[k].name, s.metrics[m], base[k], b.metrics[m], kNaN};
+      if (!skip) sv.value = log_sensitivity(base[k], pu.metrics[m], pd.metrics[m], s.relative_step);
+      r.push_back(sv);
     }
   }
+  return r;
 }
 
 }  // namespace
-
-SweepSpec read_sweep_file(const std::string& path) {
-  const auto root = io::TomlTable::parse_file(path);
-  root.allow_only({"sweep", "inputs"});
-  const auto st = root.table("sweep");
-  if (!st) root.fail("sweep", "required table [sweep] is missing");
-  st->allow_only({"name", "scene", "card", "metrics", "sensitivities", "relative_step", "window"});
-  SweepSpec s;
-  s.file = path;
-  s.name = st->string("name", std::filesystem::path(path).stem().string());
-  auto resolve = [&](const std::string& p) {
-    std::filesystem::path q(p);
-    if (q.is_relative()) q = std::filesystem::path(path).parent_path() / q;
-    return q.lexically_normal().string();
-  };
-  const std::string scene_path = resolve(st->string("scene"));
-  if (!std::filesystem::exists(scene_path)) st->fail("scene", "scene file not found at " + scene_path);
-  if (scene::is_forming_kind(scene::scene_kind(scene_path))) {
-    s.forming = FormingSweepSetup{scene::read_forming_scene(scene_path), std::nullopt};
-  } else {
-    if (st->has("window")) st->fail("window", "only for forming scenes (indent, indent_line, line)");
-    s.scene = scene::read_scene_file(scene_path);
-  }
-  if (st->has("card")) {
-    const std::string c = resolve(st->string("card"));
-    if (!std::filesystem::exists(c)) st->fail("card", "card not found at " + c);
-    (s.forming ? s.forming->scene.card : s.scene.card) = material::load_material_card(c);
-  }
-  read_metrics(*st, s);
-  if (s.forming) read_forming_window(*st, s.metrics, *s.forming);
-  // Forming runs take seconds to minutes each: sensitivities (2 runs per input) on request.
-  s.sensitivities = st->boolean("sensitivities", !s.forming);
-  s.relative_step = st->number("relative_step", 0.01);
-  if (!(s.relative_step > 0 && s.relative_step < 0.5)) st->fail("relative_step", "must lie in (0, 0.5)");
-  read_inputs(root, s);
-  if (s.forming) check_forming_grid(s);
-  return s;
-}
-
-std::vector<std::string> sweep_input_files(const SweepSpec& s) {
-  if (!s.forming) return {s.file, s.scene.file, s.scene.card.file};
-  std::vector<std::string> files{s.file, s.forming->scene.file, s.forming->scene.card.file};
-  if (!s.forming->scene.gcode.empty()) files.push_back(s.forming->scene.gcode);
-  return files;
-}
 
 std::vector<std::vector<double>> sweep_grid(const SweepSpec& s) {
   std::vector<std::vector<double>> grid{{}};
@@ -244,38 +161,10 @@ double log_sensitivity(double base_input, double up, double down, double h) {
 }
 
 SweepResult run_sweep(const SweepSpec& s, const SweepRunOptions& o) {
-  if (s.forming) {
-    if (!o.out) throw std::invalid_argument("run_sweep: a forming sweep needs an output directory (DIR/points/NNN)");
-    return run_forming_sweep(s, *o.out, o.progress);
-  }
-  return run_sweep(s, o.threads);
-}
-
-SweepResult run_sweep(const SweepSpec& s, int threads) {
-  if (s.forming) throw std::invalid_argument("run_sweep: a forming sweep needs SweepRunOptions with an output directory");
   const auto t0 = std::chrono::steady_clock::now();
-  const auto grid = sweep_grid(s);
   SweepResult r;
-  r.points.resize(grid.size());
-  const int n = static_cast<int>(grid.size());
-#pragma omp parallel for schedule(dynamic) num_threads(std::max(1, threads))
-  for (int i = 0; i < n; ++i) r.points[i] = run_point(s, grid[i]);
-
-  if (s.sensitivities) {
-    std::vector<double> base;
-    for (const auto& in : s.inputs) base.push_back(parameter_value(s.scene.card, in.name));
-    const SweepPoint b = run_point(s, base);
-    for (std::size_t k = 0; k < s.inputs.size(); ++k) {
-      auto up = base, dn = base;
-      up[k] *= 1.0 + s.relative_step;
-      dn[k] *= 1.0 - s.relative_step;
-      const SweepPoint pu = run_point(s, up), pd = run_point(s, dn);
-      for (std::size_t m = 0; m < s.metrics.size(); ++m) {
-        r.sensitivities.push_back(
-            {s.inputs[k].name, s.metrics[m], base[k], b.metrics[m], log_sensitivity(base[k], pu.metrics[m], pd.metrics[m], s.relative_step)});
-      }
-    }
-  }
+  r.points = run_grid(s, o);
+  if (s.sensitivities) r.sensitivities = run_sensitivities(s, o);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

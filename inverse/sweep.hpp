@@ -1,43 +1,37 @@
 #pragma once
-// Sensitivity studies (SPEC §6): a scene run over a grid of one or more named inputs, with
-// scalar metrics, wall seconds and status per point, plus local normalised sensitivities
-// d ln(metric) / d ln(input) at the base point by central differences.
-// Material-point scenes: inputs are material parameters, points run in parallel (OpenMP,
-// results stored by grid index so the output order is fixed). Forming scenes (indent,
-// indent_line, line; inverse/forming_sweep.hpp): inputs may also be scene keys (contact,
-// tool, solver, sheet), points run one after another (each run is itself parallel) and each
-// writes its outputs to DIR/points/NNN/.
+// Sensitivity studies (docs/identification.md, "Sweeps"): a scene of any kind run over a grid of
+// one or more named inputs -- the scene kind's own (contact.friction, tool.radius, ...) or the
+// card's parameters (hill.N, swift.K, ...) -- with scalar metrics read off each run's typed result
+// (the kind's observables), wall seconds and status per point, and local normalised
+// sensitivities d ln(metric) / d ln(input) at the base point by central differences. Material
+// points run side by side (OpenMP, results stored by grid index so the output order is fixed);
+// FE scenes run one after another (each run is itself parallel), each writing its outputs to
+// DIR/points/NNN/.
 #include "forward/io/output_directory.hpp"
-#include "forward/scenes/forming_scene.hpp"
-#include "forward/scenes/scene_file.hpp"
-#include "inverse/parameters.hpp"
+#include "forward/scenes/common/progress.hpp"
+#include "forward/scenes/common/scene.hpp"
 
-#include <array>
-#include <optional>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace spifit::inverse {
 
 struct SweepInput {
-  std::string name;             // a parameter name (parameters.hpp) or a forming scene key
+  std::string name;  // a named input of the scene (its kind's or its card's)
   std::vector<double> values;
-};
-
-// The forming part of a sweep: the base scene and the travel window of the window metrics.
-struct FormingSweepSetup {
-  scene::FormingScene scene;                   // its values (and card) are the base point
-  std::optional<std::array<double, 2>> window;  // [from, to] mm of tool travel
+  bool integer = false;  // no relative step: no sensitivity
 };
 
 struct SweepSpec {
   std::string name, file;
-  scene::MaterialPointScene scene;   // material-point sweeps: its card is the base point
-  std::optional<FormingSweepSetup> forming;  // set for forming sweeps (then `scene` is unused)
+  std::shared_ptr<const scene::Scene> scene;  // its values (and card) are the base point
+  const scene::SceneKind* kind = nullptr;
   std::vector<SweepInput> inputs;
-  std::vector<std::string> metrics;  // sweep_metric_names() or forming_metric_names()
-  bool sensitivities = true;         // default: true for material points, false for forming scenes
-  double relative_step = 0.01;       // for the sensitivities
+  std::vector<std::string> metrics;   // the kind's observables
+  scene::ObservableOptions options;   // [sweep] window or contours
+  bool sensitivities = true;          // default: true for material points, false for FE scenes
+  double relative_step = 0.01;        // for the sensitivities
 };
 
 struct SweepPoint {
@@ -59,22 +53,18 @@ struct SweepResult {
   double wall_seconds = 0.0;
 };
 
-// Material-point metrics.
-const char* sweep_metric_names();
-bool is_sweep_metric(const std::string& name);
-
-// Throws io::InputError naming file, key and value.
+// Throws io::InputError naming file, key and value (an unknown input or metric, a value the
+// scene cannot take, alone or at a grid point with the other inputs).
 SweepSpec read_sweep_file(const std::string& path);
 // Files the sweep reads (sweep file, scene, card, G-code): never inside the output directory.
 std::vector<std::string> sweep_input_files(const SweepSpec& spec);
 
 struct SweepRunOptions {
-  int threads = 1;                        // material-point sweeps (forming runs use OpenMP's default)
-  const io::OutputDirectory* out = nullptr;  // required for forming sweeps: DIR/points/NNN/
-  bool progress = false;                  // forming sweeps: one line per point on stderr
+  int threads = 1;                           // material points side by side (FE runs: OpenMP's default inside)
+  const io::OutputDirectory* out = nullptr;  // FE scenes: DIR/points/NNN/ (none: runs in memory)
+  scene::ProgressSink progress;              // one line per point
 };
 SweepResult run_sweep(const SweepSpec& spec, const SweepRunOptions& options);
-SweepResult run_sweep(const SweepSpec& spec, int threads);  // material-point sweeps
 
 // The grid in run order: Cartesian product of the inputs' values, last input fastest.
 std::vector<std::vector<double>> sweep_grid(const SweepSpec& spec);

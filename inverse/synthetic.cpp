@@ -2,7 +2,7 @@
 
 #include "forward/io/csv_writer.hpp"
 #include "forward/io/input_error.hpp"
-#include "forward/scenes/curve_columns.hpp"
+#include "forward/scenes/material_point/curve_columns.hpp"
 
 #include <cmath>
 #include <numbers>

@@ -2,7 +2,7 @@
 // Synthetic measurements (twin experiments): a material-point scene run with a known card,
 // sampled every k increments, with seeded Gaussian noise on the response. The CSV header
 // says it is synthetic and how it was made (command, card, noise, seed).
-#include "forward/scenes/scene_file.hpp"
+#include "forward/scenes/material_point/material_point_file.hpp"
 
 #include <cstdint>
 #include <random>

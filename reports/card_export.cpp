@@ -1,7 +1,7 @@
 #include "reports/card_export.hpp"
 
 #include "forward/material/swift_hardening.hpp"
-#include "forward/scenes/material_point_test.hpp"
+#include "forward/scenes/material_point/material_point_run.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -6,6 +6,9 @@
 
 namespace spifit::io {
 
+// Appends one CSV row of numbers (%.17g, comma-separated, newline) to *out.
+void append_csv_row(const std::vector<double>& values, std::string* out);
+
 class CsvTable {
  public:
   explicit CsvTable(std::vector<std::string> columns);

@@ -3,7 +3,7 @@
 // file and the key before anything runs.
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
-#include "forward/scenes/forming_scene.hpp"
+#include "forward/scenes/forming/forming_scene.hpp"
 #include "inverse/forming_sweep.hpp"
 #include "inverse/sweep.hpp"
 

@@ -44,7 +44,7 @@ inverse::FitProblem problem(double k_upper) {
   fp.name = "blackbox";
   fp.parameters = std::make_unique<inverse::ParameterSet>(
       truth, std::vector<inverse::ParameterSpec>{{"swift.K", 150.0, 50.0, k_upper, false, false}, {"swift.n", 0.3, 0.05, 0.6, false, false}}, true);
-  auto sc = scene::read_scene_file(src("experiments/aa3003o/scenes/tensile_00.toml"));
+  auto sc = scene::read_material_point_scene(src("experiments/aa3003o/scenes/tensile_00.toml"));
   sc.card = truth;
   const auto clean = scene::run_material_point(truth.params, sc.setup);
   inverse::CurveExperimentSpec c;

@@ -28,7 +28,7 @@ struct TwinDir {
   static int& counter() { static int c = 0; return c; }
   void synth(const std::string& scene, const std::string& card, const std::string& out, double noise, std::uint64_t seed,
              const std::string& y = "stress") {
-    auto sc = scene::read_scene_file(src(scene));
+    auto sc = scene::read_material_point_scene(src(scene));
     sc.card = material::load_material_card(src(card));
     inverse::SyntheticOptions o;
     o.noise = noise;

@@ -5,7 +5,7 @@
 #include "reports/card_export_readers.hpp"
 #include "reports/export_calculix_check.hpp"
 
-#include "forward/scenes/material_point_test.hpp"
+#include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
 #include "tests/support/scenes.hpp"
 

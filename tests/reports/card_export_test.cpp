@@ -6,7 +6,7 @@
 
 #include "forward/material/hill48.hpp"
 #include "forward/material/swift_hardening.hpp"
-#include "forward/scenes/material_point_test.hpp"
+#include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
 #include "tests/support/scenes.hpp"
 

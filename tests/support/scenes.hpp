@@ -1,5 +1,5 @@
 #pragma once
-#include "forward/scenes/material_point_test.hpp"
+#include "forward/scenes/material_point/material_point_run.hpp"
 
 #include <numbers>
 

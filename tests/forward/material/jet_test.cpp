@@ -1,6 +1,6 @@
 // With T = ceres::Jet the material-point curve carries exact parameter derivatives
 // (needed by the Ceres fits): compare them with central differences of double runs.
-#include "forward/scenes/material_point_test.hpp"
+#include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
 #include "tests/support/scenes.hpp"
 

@@ -1,7 +1,7 @@
 #include "forward/mesh/benchmark_meshes.hpp"
 #include "forward/mesh/square_sheet.hpp"
 #include "forward/model/shell_model.hpp"
-#include "forward/scenes/shell_benchmarks.hpp"
+#include "forward/scenes/benchmark/shell_benchmarks.hpp"
 #include "forward/solver/newton_solver.hpp"
 
 #include <gtest/gtest.h>
@@ -84,7 +84,7 @@ TEST(ShellModel, LumpedMassAddsUpToThePlateMass) {
 TEST(ShellModel, VtuFrameHasEveryArrayAtTheRightSize) {
   const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 2);
   ShellModel sm(m, 0.5, steel(), {});
-  const io::VtuFrame f = sm.vtu_frame();
+  const mesh::VtuFrame f = sm.vtu_frame();
   ASSERT_EQ(f.point_data.size(), 3u);
   for (const auto& a : f.point_data) EXPECT_EQ(a.values.size(), static_cast<std::size_t>(a.components * m.num_nodes())) << a.name;
   ASSERT_EQ(f.cell_data.size(), 4u);

@@ -3,7 +3,7 @@
 #include "forward/mesh/disc_mesh.hpp"
 #include "forward/model/cyclic_symmetry.hpp"
 #include "forward/model/shell_model.hpp"
-#include "forward/scenes/shell_benchmarks.hpp"
+#include "forward/scenes/benchmark/shell_benchmarks.hpp"
 #include "forward/solver/newton_solver.hpp"
 
 #include <gtest/gtest.h>

@@ -1,0 +1,70 @@
+#include "forward/io/named_inputs.hpp"
+
+#include "forward/io/input_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace spifit::io {
+
+bool Range::contains(double v) const {
+  if (std::isnan(v)) return false;
+  const bool above = lo_open ? v > lo : v >= lo;
+  const bool below = hi_open ? v < hi : v <= hi;
+  return above && below;
+}
+
+std::string Range::text() const {
+  const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
+  if (!has_lo && !has_hi) return "any";
+  if (has_lo && !has_hi) return std::string(lo_open ? "> " : ">= ") + format_number(lo);
+  if (!has_lo) return std::string(hi_open ? "< " : "<= ") + format_number(hi);
+  return std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
+}
+
+const char* to_string(InputType t) {
+  switch (t) {
+    case InputType::real: return "number";
+    case InputType::integer: return "integer";
+    case InputType::boolean: return "true/false";
+    case InputType::text: return "text";
+  }
+  return "?";
+}
+
+std::string InputInfo::check(double v) const {
+  if (type == InputType::text) return "takes a text value";
+  if (!std::isfinite(v)) return "must be finite";
+  if (type == InputType::boolean) return v == 0.0 || v == 1.0 ? std::string() : std::string("takes true (1) or false (0)");
+  if (type == InputType::integer && v != std::floor(v)) return "takes integer values";
+  if (!range.contains(v)) {
+    const std::string t = range.text();
+    return t[0] == '[' || t[0] == '(' ? "must lie in " + t : "must be " + t;
+  }
+  return {};
+}
+
+std::string InputInfo::check(const std::string& v) const {
+  if (choices.empty() || std::find(choices.begin(), choices.end(), v) != choices.end()) return {};
+  std::string list;
+  for (const auto& c : choices) list += (list.empty() ? "\"" : ", \"") + c + "\"";
+  return "expected " + list;
+}
+
+std::string markdown_reference(const std::vector<InputInfo>& inputs) {
+  std::string out = "| key | type | unit | valid values | varied by sweeps and fits | description |\n|---|---|---|---|---|---|\n";
+  for (const auto& i : inputs) {
+    std::string valid;
+    if (i.type == InputType::real || i.type == InputType::integer) valid = i.range.text();
+    if (i.type == InputType::text) {
+      for (const auto& c : i.choices) valid += (valid.empty() ? "`" : ", `") + c + "`";
+      if (valid.empty()) valid = "text";
+    }
+    if (i.type == InputType::boolean) valid = "`true`, `false`";
+    out += "| `" + i.name + "` | " + to_string(i.type) + " | " + (i.unit.empty() ? "-" : i.unit) + " | " + valid + " | " +
+           (i.variable ? "yes" : "-") + " | " + i.doc + " |\n";
+  }
+  return out;
+}
+
+}  // namespace spifit::io

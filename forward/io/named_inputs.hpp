@@ -1,0 +1,179 @@
+#pragma once
+// Named inputs: one table per scene kind (and per material law) that says, for every key a
+// user can set, its dotted name ("contact.friction" = key friction of table [contact]), type,
+// unit, valid range or choices and a one-line description, and where it lives in the scene's
+// struct -- in the spirit of deal.II's declare_parameters and MGIS's named variables. The table
+// drives the reading of the scene file (unknown keys are errors; errors name the file, the key
+// and the value), the inputs a sweep or a fit may vary (by name, with the same checks), and the
+// generated key reference in the documentation (`spifit inputs`).
+#include "forward/io/toml_reader.hpp"
+
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace spifit::io {
+
+// The valid values of a number: an interval with open or closed ends (infinite: unbounded).
+struct Range {
+  double lo = -std::numeric_limits<double>::infinity(), hi = std::numeric_limits<double>::infinity();
+  bool lo_open = false, hi_open = false;
+  static Range any() { return {}; }
+  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
+  static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
+  static Range closed(double a, double b) { return {a, b, false, false}; }
+  bool contains(double v) const;
+  // "> 0", ">= 0", "[2, 2000]", "(0, 1]", "any"
+  std::string text() const;
+};
+
+enum class InputType { real, integer, boolean, text };
+const char* to_string(InputType t);
+
+// What the reader, a sweep, a fit and the documentation know of an input.
+struct InputInfo {
+  std::string name;  // dotted: "contact.friction"
+  InputType type = InputType::real;
+  std::string unit;  // empty for counts, ratios, flags and texts
+  Range range;       // numbers
+  std::vector<std::string> choices;  // texts with a fixed set of values; empty: any text
+  std::string doc;   // one line
+  bool variable = false;  // a number a sweep may vary or a fit may identify
+  std::string table() const { return name.substr(0, name.find('.')); }
+  std::string key() const { return name.substr(name.find('.') + 1); }
+  // Why v cannot be this input's value ("must be > 0", "takes integer values"), empty if it can.
+  std::string check(double v) const;
+  std::string check(const std::string& v) const;
+};
+
+// A Markdown table of inputs: name, type, unit, valid values, description.
+std::string markdown_reference(const std::vector<InputInfo>& inputs);
+
+template <typename Owner>
+class InputTable {
+ public:
+  using Real = std::function<double&(Owner&)>;
+  using Integer = std::function<int&(Owner&)>;
+  using Boolean = std::function<bool&(Owner&)>;
+  // A text input read and written through conversions (enums): set returns false for a value
+  // it does not know.
+  struct Text {
+    std::function<std::string(const Owner&)> get;
+    std::function<bool(Owner&, const std::string&)> set;
+  };
+
+  InputTable& real(InputInfo info, Real field) { return add(std::move(info), InputType::real, std::move(field)); }
+  InputTable& integer(InputInfo info, Integer field) { return add(std::move(info), InputType::integer, std::move(field)); }
+  InputTable& boolean(InputInfo info, Boolean field) { return add(std::move(info), InputType::boolean, std::move(field)); }
+  InputTable& text(InputInfo info, Text field) { return add(std::move(info), InputType::text, std::move(field)); }
+  // An input the scene's reader handles itself (paths relative to the scene file, lists, the
+  // tool path): declared for allow_only and the documentation; read() skips it, get/set refuse it.
+  InputTable& custom(InputInfo info, InputType type) { return add(std::move(info), type, Custom{}); }
+
+  const std::vector<InputInfo>& infos() const { return infos_; }
+  const InputInfo* find(const std::string& name) const {
+    for (const auto& i : infos_)
+      if (i.name == name) return &i;
+    return nullptr;
+  }
+  // The keys this table declares in TOML table `table` (for allow_only, with the reader's own).
+  std::vector<std::string> keys_of(const std::string& table) const {
+    std::vector<std::string> keys;
+    for (const auto& i : infos_)
+      if (i.table() == table) keys.push_back(i.key());
+    return keys;
+  }
+  // Reads every declared key of `table` that t (the TOML table [table]) holds into o, checking
+  // types, ranges and choices: io::InputError naming the file, the key and the value. Keys t
+  // holds that are not declared are left to the caller's allow_only.
+  void read(const TomlTable& t, const std::string& table, Owner& o) const {
+    for (std::size_t k = 0; k < infos_.size(); ++k) {
+      const InputInfo& i = infos_[k];
+      if (i.table() != table || !t.has(i.key())) continue;
+      read_one(t, i, fields_[k], o);
+    }
+  }
+  // Numeric value of a number or flag by name; std::invalid_argument for an unknown or text input.
+  double get(const Owner& o, const std::string& name) const {
+    const std::size_t k = index(name);
+    Owner& w = const_cast<Owner&>(o);  // the field accessors are not const; nothing is written
+    return std::visit([&](const auto& f) { return value_of(f, w); }, fields_[k]);
+  }
+  // Sets a number or flag by name: "" when done, else why the value is invalid for it (nothing
+  // set). std::invalid_argument for an unknown or text input.
+  std::string set(Owner& o, const std::string& name, double v) const {
+    const std::size_t k = index(name);
+    if (const std::string why = infos_[k].check(v); !why.empty()) return why;
+    std::visit([&](const auto& f) { assign(f, o, v); }, fields_[k]);
+    return {};
+  }
+  // Whether the input is one the reader handles itself.
+  bool is_custom(const std::string& name) const {
+    for (std::size_t k = 0; k < infos_.size(); ++k)
+      if (infos_[k].name == name) return std::holds_alternative<Custom>(fields_[k]);
+    return false;
+  }
+  std::vector<std::string> variable_names() const {
+    std::vector<std::string> n;
+    for (const auto& i : infos_)
+      if (i.variable) n.push_back(i.name);
+    return n;
+  }
+
+ private:
+  struct Custom {};
+  using Field = std::variant<Real, Integer, Boolean, Text, Custom>;
+  std::vector<InputInfo> infos_;
+  std::vector<Field> fields_;
+
+  template <typename F>
+  InputTable& add(InputInfo info, InputType type, F field) {
+    if (find(info.name)) throw std::logic_error("input " + info.name + " declared twice");
+    info.type = type;
+    infos_.push_back(std::move(info));
+    fields_.push_back(Field(std::move(field)));
+    return *this;
+  }
+  std::size_t index(const std::string& name) const {
+    for (std::size_t k = 0; k < infos_.size(); ++k)
+      if (infos_[k].name == name) {
+        if (infos_[k].type == InputType::text || std::holds_alternative<Custom>(fields_[k]))
+          throw std::invalid_argument("input " + name + " is not a number that can be set by name");
+        return k;
+      }
+    throw std::invalid_argument("unknown input " + name);
+  }
+  static double value_of(const Real& f, Owner& o) { return f(o); }
+  static double value_of(const Integer& f, Owner& o) { return f(o); }
+  static double value_of(const Boolean& f, Owner& o) { return f(o) ? 1.0 : 0.0; }
+  static double value_of(const Text&, Owner&) { return std::numeric_limits<double>::quiet_NaN(); }
+  static double value_of(const Custom&, Owner&) { return std::numeric_limits<double>::quiet_NaN(); }
+  static void assign(const Real& f, Owner& o, double v) { f(o) = v; }
+  static void assign(const Integer& f, Owner& o, double v) { f(o) = static_cast<int>(v); }
+  static void assign(const Boolean& f, Owner& o, double v) { f(o) = v != 0.0; }
+  static void assign(const Text&, Owner&, double) {}
+  static void assign(const Custom&, Owner&, double) {}
+  static void read_one(const TomlTable& t, const InputInfo& i, const Field& field, Owner& o) {
+    const std::string key = i.key();
+    if (const auto* f = std::get_if<Real>(&field)) {
+      const double v = t.number(key);
+      if (const std::string why = i.check(v); !why.empty()) t.fail(key, why);
+      (*f)(o) = v;
+    } else if (const auto* g = std::get_if<Integer>(&field)) {
+      const int v = t.integer(key, 0);
+      if (const std::string why = i.check(static_cast<double>(v)); !why.empty()) t.fail(key, why);
+      (*g)(o) = v;
+    } else if (const auto* b = std::get_if<Boolean>(&field)) {
+      (*b)(o) = t.boolean(key, false);
+    } else if (const auto* x = std::get_if<Text>(&field)) {
+      const std::string v = t.string(key);
+      if (const std::string why = i.check(v); !why.empty()) t.fail(key, why);
+      if (!x->set(o, v)) t.fail(key, "not a value of " + i.name);
+    }
+  }
+};
+
+}  // namespace spifit::io

@@ -1,0 +1,135 @@
+#pragma once
+// One skeleton for every FE forming run (indent, indent_line, line, cone): the scene kind
+// supplies the mesh, the constraints, the tool and its path (with the load map between the load
+// factor and the tool's travel), the solver options, the marks (named points of the path) and
+// its observers; FeRun builds the shell model with the tool as a contribution, steps the Newton
+// solver over the whole path, calls the observers after every increment and at every mark,
+// writes VTU steps and checkpoints, and resumes from a checkpoint bit for bit
+// (docs/architecture.md, "FE runs").
+#include "forward/contact/shell_contact.hpp"
+#include "forward/material/material_params.hpp"
+#include "forward/mesh/mesh.hpp"
+#include "forward/model/shell_model.hpp"
+#include "forward/model/tool_contact.hpp"
+#include "forward/scenes/common/load_map.hpp"
+#include "forward/scenes/common/run_files.hpp"
+#include "forward/scenes/common/run_observer.hpp"
+#include "forward/scenes/common/run_status.hpp"
+#include "forward/solver/dof_constraints.hpp"
+#include "forward/solver/newton_solver.hpp"
+#include "forward/toolpath/tool_path.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spifit::scene {
+
+struct FeOutputOptions {
+  int vtu_every = 0;              // increments between VTU steps (0: the initial and final states only)
+  int checkpoint_every = 0;       // marks between checkpoints (0: none at marks)
+  int checkpoint_increments = 0;  // increments between checkpoints (0: none by count)
+};
+
+struct FeRunSetup {
+  std::string kind, name;
+  // Files whose contents identify the run, (role, path): ("scene", ...), ("material card", ...),
+  // ("G-code", ...). A checkpoint keeps their contents, and a resume with others is refused.
+  std::vector<std::pair<std::string, std::string>> input_files;
+  mesh::Mesh mesh;
+  double thickness = 0.0;
+  material::MaterialParams<double> material;
+  model::ShellModelOptions model;
+  // The tool: a sphere whose centre follows tool_path at load_map.travel(lambda) mm.
+  double tool_radius = 5.0;
+  contact::ContactOptions contact;
+  std::vector<double> tool_copies_deg;  // virtual tools of a pie (ToolContact::set_copies)
+  double spin_per_load_factor = 0.0;    // rad per unit load factor
+  toolpath::ToolPath tool_path;
+  LoadMap load_map;
+  std::function<double(double travel)> time_of_travel;  // s
+  // Supports and ties on the model's DOFs, finalised (the model's rotation frames set in it).
+  std::function<solver::DofConstraints(model::ShellModel&)> constraints;
+  solver::NewtonOptions newton;
+  std::vector<Mark> marks;  // by increasing travel
+  FeOutputOptions output;
+  bool progress_every_increment = false;  // a progress line per increment (else marks only)
+};
+
+struct RunControl {
+  ProgressSink progress;  // may be empty
+  // Continue from DIR/checkpoint/state.bin: the outputs written after the checkpoint are
+  // replaced; io::InputError naming the file when there is none, or it is of another version,
+  // scene, card or kind, or damaged. Checked before any output is touched.
+  bool resume = false;
+  // Tests: stop (as a kill would, status "stopped") once this many marks are reached (after
+  // their checkpoint), or after this many increments in all (0: run to the end).
+  int stop_after_marks = 0;
+  int stop_after_increments = 0;
+};
+
+struct CheckpointRecord {
+  int every_marks = 0, every_increments = 0, written = 0;
+  std::size_t bytes = 0;
+  double write_seconds = 0.0;
+};
+
+// What the skeleton knows of a run's end, common to every FE scene's typed result.
+struct FeRunOutcome {
+  RunStatus status = RunStatus::running;
+  std::string message;  // failed: where and why; stopped: after what
+  solver::NewtonCounters counters;
+  double lambda_reached = 0.0, travel_reached = 0.0;
+  int marks_reached = 0;
+  std::vector<double> mark_wall_seconds;  // wall time when each mark was reached
+  int resumed_at_mark = -1;               // marks reached at the checkpoint a resumed run started from
+  CheckpointRecord checkpoints;
+  double wall_seconds = 0.0;
+  bool ok() const { return status == RunStatus::ok; }
+};
+
+class FeRun {
+ public:
+  // Builds the model (std::invalid_argument for a mesh the shell rejects), the tool and the
+  // constraints. files: where outputs go (none: a run in memory).
+  FeRun(FeRunSetup setup, RunFiles files, RunControl control);
+  FeRun(const FeRun&) = delete;
+  FeRun& operator=(const FeRun&) = delete;
+  ~FeRun();
+
+  const FeRunSetup& setup() const { return setup_; }
+  const RunFiles& files() const { return files_; }
+  const RunControl& control() const { return control_; }
+  model::ShellModel& model() { return *model_; }
+  const model::ToolContact& tool() const { return *tool_; }
+
+  // Observers are called in the order added; add them all before run().
+  template <typename O>
+  O& add_observer(std::unique_ptr<O> o) {
+    O& ref = *o;
+    observers_.push_back(std::move(o));
+    return ref;
+  }
+
+  // Runs the whole path (or resumes it). head: the summary's description of the inputs, written
+  // as DIR/summary.json with status "running" before the first increment (with
+  // "resumed_at_contour"-style information added by the caller). The final summary is the
+  // caller's to write, from its typed result.
+  FeRunOutcome run(const nlohmann::json& head);
+
+ private:
+  FeRunSetup setup_;
+  RunFiles files_;
+  RunControl control_;
+  std::unique_ptr<model::ShellModel> model_;
+  model::ToolContact* tool_ = nullptr;
+  std::unique_ptr<solver::DofConstraints> constraints_;
+  std::unique_ptr<solver::NewtonSolver> solver_;
+  std::vector<std::unique_ptr<RunObserver>> observers_;
+  class Stepper;  // the per-increment bookkeeping (fe_run.cpp)
+};
+
+}  // namespace spifit::scene

@@ -1,0 +1,135 @@
+#include "forward/scenes/common/run_checkpoint.hpp"
+
+#include "forward/io/atomic_file.hpp"
+#include "forward/io/binary_archive.hpp"
+#include "forward/io/input_error.hpp"
+#include "forward/io/text_file.hpp"
+#include "forward/model/model_archive.hpp"
+#include "forward/model/shell_model.hpp"
+
+#include <system_error>
+
+namespace spifit::scene {
+namespace {
+
+constexpr char kKind[] = "fe-run-checkpoint";
+// Bump when the layout below, the model's or an observer's state, or the meaning of the stored
+// load factor changes.
+constexpr std::uint32_t kLayout = 1;
+
+void save_log(io::BinaryWriter& w, const RunLog& log) {
+  w.section("run_log");
+  w.i64(log.increments);
+  w.i64(log.marks_reached);
+  w.f64s(log.mark_wall);
+  w.f64(log.wall_seconds);
+}
+
+int load_count(io::BinaryReader& r, const char* what) {
+  const std::int64_t v = r.i64();
+  if (v < 0 || v > 2'000'000'000) throw io::ArchiveError(std::string("invalid ") + what + " " + std::to_string(v));
+  return static_cast<int>(v);
+}
+
+RunLog load_log(io::BinaryReader& r) {
+  r.section("run_log");
+  RunLog log;
+  log.increments = load_count(r, "increment count");
+  log.marks_reached = load_count(r, "mark count");
+  log.mark_wall = r.f64s();
+  log.wall_seconds = r.f64();
+  if (static_cast<int>(log.mark_wall.size()) != log.marks_reached) throw io::ArchiveError("inconsistent run log (marks and their wall times)");
+  return log;
+}
+
+[[noreturn]] void refuse(const std::filesystem::path& file, const std::string& why) {
+  throw io::InputError(file.string(), "", "", "cannot resume: " + why);
+}
+
+// The stored inputs against the resumed run's: the same kind and the same contents file by file.
+void check_inputs(io::BinaryReader& r, const RunInputs& inputs, const std::filesystem::path& file) {
+  r.section("inputs");
+  (void)r.string();  // the version of spifit that wrote it (informative: another build with the same layout is accepted)
+  const std::string kind = r.string();
+  if (kind != inputs.kind) refuse(file, "written by a " + kind + " run, not a " + inputs.kind + " run");
+  const int n = load_count(r, "input file count");
+  if (n != static_cast<int>(inputs.files.size()))
+    refuse(file, "written for a run with " + std::to_string(n) + " input files, this one has " + std::to_string(inputs.files.size()));
+  for (const auto& in : inputs.files) {
+    const std::string role = r.string(), path = r.string(), text = r.string();
+    if (role != in.role) refuse(file, "written with a " + role + " where this run has a " + in.role);
+    if (text != in.text)
+      refuse(file, "written with another " + in.role + ": the contents of " + in.path + " differ from those of " + path +
+                       " when the run started (a copy is in the checkpoint); resume with that " + in.role +
+                       ", or start the run afresh in a new output directory");
+  }
+}
+
+}  // namespace
+
+RunInputs read_run_inputs(const std::string& kind, const std::vector<std::pair<std::string, std::string>>& files) {
+  RunInputs in;
+  in.kind = kind;
+  for (const auto& [role, path] : files)
+    if (!path.empty()) in.files.push_back({role, path, io::read_text_file(path)});
+  return in;
+}
+
+std::filesystem::path run_checkpoint_path(const io::OutputDirectory& out) { return out.path() / "checkpoint" / "state.bin"; }
+
+std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::ShellModel& model,
+                                 const solver::NewtonState& newton, const RunLog& log, const Observers& observers) {
+  io::BinaryWriter w(kKind, kLayout);
+  w.section("inputs");
+  w.string(SPIFIT_VERSION);
+  w.string(inputs.kind);
+  w.i64(static_cast<std::int64_t>(inputs.files.size()));
+  for (const auto& f : inputs.files) {
+    w.string(f.role);
+    w.string(f.path);
+    w.string(f.text);
+  }
+  model::save_model_state(w, model);
+  solver::save_newton_state(w, newton);
+  save_log(w, log);
+  w.section("observers");
+  w.i64(static_cast<std::int64_t>(observers.size()));
+  for (const auto& o : observers) {
+    w.string(o->name());
+    o->save(w);
+  }
+  w.section("end");
+  const std::string bytes = w.finish();
+  io::write_file_atomic(run_checkpoint_path(out), bytes);  // .state.bin.tmp in DIR/checkpoint/, then renamed
+  return bytes.size();
+}
+
+void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::ShellModel* model, solver::NewtonState* newton,
+                         RunLog* log, const Observers& observers) {
+  const std::filesystem::path file = run_checkpoint_path(out);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(file, ec))
+    refuse(file, "no checkpoint in " + out.path().string() + " (written after every [output] checkpoint_every marks and checkpoint_increments increments)");
+  try {
+    io::BinaryReader r(io::read_binary_file(file), kKind, kLayout);
+    check_inputs(r, inputs, file);
+    model::load_model_state(r, model);
+    *newton = solver::load_newton_state(r);
+    if (newton->last_increment.size() != 0 && newton->last_increment.size() != model->num_dofs())
+      throw io::ArchiveError("Newton predictor of another model size");
+    *log = load_log(r);
+    r.section("observers");
+    r.expect_count("observers", static_cast<std::int64_t>(observers.size()));
+    for (const auto& o : observers) {
+      const std::string name = r.string();
+      if (name != o->name()) throw io::ArchiveError("observer \"" + name + "\" in the checkpoint where the run has \"" + o->name() + "\"");
+      o->restore(r);
+    }
+    r.section("end");
+    r.finish();
+  } catch (const io::ArchiveError& e) {
+    refuse(file, e.what());
+  }
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,67 @@
+#pragma once
+// Checkpoints of an FE run (docs/cone-scene.md, "Checkpoints and resume"). DIR/checkpoint/
+// state.bin holds everything that decides how the run goes on: the model's committed state
+// (nodal positions and directors, every layer of every section, the tool and its copies with
+// their contact point states), the Newton solver's stepping state (load factor, next increment,
+// growth ceiling, predictor, counters), the run's bookkeeping (increments, marks reached, wall
+// times), each observer's state (the rows of its series, VTU steps), and the contents of the
+// files that produced the run (scene, card, G-code), so that a resume with other inputs is
+// refused. Binary and bit-exact (forward/io/binary_archive.hpp): a run resumed from it ends with
+// the same numbers, bit for bit, as one never interrupted.
+#include "forward/io/output_directory.hpp"
+#include "forward/scenes/common/run_observer.hpp"
+#include "forward/solver/newton_state.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace spifit::model {
+class ShellModel;
+}
+
+namespace spifit::scene {
+
+// The inputs of a run by content: its kind and each input file's role ("scene", "material
+// card", "G-code"), path and contents.
+struct RunInput {
+  std::string role, path, text;
+};
+struct RunInputs {
+  std::string kind;
+  std::vector<RunInput> files;
+};
+// files: (role, path); an empty path is skipped. Throws io::InputError naming a file that
+// cannot be read.
+RunInputs read_run_inputs(const std::string& kind, const std::vector<std::pair<std::string, std::string>>& files);
+
+// The skeleton's bookkeeping at a committed increment.
+struct RunLog {
+  int increments = 0;                  // committed increments
+  int marks_reached = 0;
+  std::vector<double> mark_wall;       // wall seconds when each mark was reached
+  double wall_seconds = 0.0;           // wall time of the run up to the checkpoint
+};
+
+// DIR/checkpoint/state.bin
+std::filesystem::path run_checkpoint_path(const io::OutputDirectory& out);
+
+using Observers = std::vector<std::unique_ptr<RunObserver>>;
+
+// Writes the checkpoint atomically (a temporary file in DIR/checkpoint/, then renamed over
+// state.bin): a run killed while writing keeps the previous checkpoint. Returns its size in
+// bytes. The model and the solver state must be at the same committed increment.
+std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::ShellModel& model,
+                                 const solver::NewtonState& newton, const RunLog& log, const Observers& observers);
+
+// Loads the checkpoint into a model and observers set up from the same scene (as the run builds
+// them); the inputs are those of the resumed run. Throws io::InputError naming
+// DIR/checkpoint/state.bin when it is missing, of another format or layout version, truncated or
+// corrupted, written for another kind, scene file, material card or G-code (their contents
+// differ), or for a model of another size.
+void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::ShellModel* model,
+                         solver::NewtonState* newton, RunLog* log, const Observers& observers);
+
+}  // namespace spifit::scene

@@ -1,0 +1,20 @@
+#pragma once
+// How a run ended (summary.json "status"): running until it ends; ok; failed (a numerical
+// failure, with where and why in the message); stopped (by the caller: a test's stop option).
+#include <string>
+
+namespace spifit::scene {
+
+enum class RunStatus { running, ok, failed, stopped };
+
+inline const char* to_string(RunStatus s) {
+  switch (s) {
+    case RunStatus::ok: return "ok";
+    case RunStatus::failed: return "failed";
+    case RunStatus::stopped: return "stopped";
+    case RunStatus::running: break;
+  }
+  return "running";
+}
+
+}  // namespace spifit::scene

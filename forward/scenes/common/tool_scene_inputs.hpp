@@ -1,0 +1,75 @@
+#pragma once
+// The named inputs the tool scenes share (io/named_inputs.hpp): [contact] and [solver], and the
+// [tool] radius, feed and spin. Declared on any scene struct with the members they name
+// (forming_scene.hpp, cone_scene.hpp); the defaults are the struct's.
+#include "forward/io/named_inputs.hpp"
+#include "forward/solver/linear_solver.hpp"
+
+#include <optional>
+
+namespace spifit::scene {
+
+template <typename Scene>
+void add_contact_inputs(io::InputTable<Scene>& t) {
+  using io::Range;
+  t.real({"contact.penalty", {}, "N/mm^3", Range::positive(), {},
+          "penalty coefficient K_p: contact pressure per mm of penetration (thesis §7.1 used 1e2..1e5)", true},
+         [](Scene& s) -> double& { return s.contact.penalty; });
+  t.real({"contact.friction", {}, "", Range::closed(0.0, 2.0), {}, "Coulomb friction coefficient mu between tool and sheet", true},
+         [](Scene& s) -> double& { return s.contact.friction; });
+  t.real({"contact.tangential_penalty", {}, "N/mm^3", Range::non_negative(), {},
+          "tangential (stick) penalty K_t of the regularised friction; 0: equal to the penalty", true},
+         [](Scene& s) -> double& { return s.contact.tangential_penalty; });
+  t.integer({"contact.points", {}, "", Range::closed(1, 6), {}, "contact points per direction and element (n x n)", true},
+            [](Scene& s) -> int& { return s.contact.points; });
+  t.text({"contact.surface", {}, "", {}, {"flat", "phong"},
+          "tool-side surface the tool sees: bilinear facets, or facets curved with the nodal directors", false},
+         {[](const Scene& s) -> std::string { return s.contact.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"; },
+          [](Scene& s, const std::string& v) {
+            s.contact.surface = v == "phong" ? contact::ContactOptions::Surface::phong : contact::ContactOptions::Surface::flat;
+            return true;
+          }});
+}
+
+template <typename Scene>
+void add_solver_inputs(io::InputTable<Scene>& t) {
+  using io::Range;
+  t.real({"solver.travel_per_increment", {}, "mm", Range::positive(), {}, "tool travel per increment (the largest; cut back on failure)", true},
+         [](Scene& s) -> double& { return s.travel_per_increment; });
+  t.integer({"solver.max_iterations", {}, "", Range::closed(1, 1000), {}, "Newton iterations before an increment is cut back", false},
+            [](Scene& s) -> int& { return s.max_iterations; });
+  t.text({"solver.linear_solver", {}, "", {}, {"auto", "umfpack", "cholmod"},
+          "sparse solver: by the tangent's symmetry (auto), UMFPACK (general) or CHOLMOD (symmetric positive definite)", false},
+         {[](const Scene& s) -> std::string { return s.linear_solver ? solver::to_string(*s.linear_solver) : "auto"; },
+          [](Scene& s, const std::string& v) {
+            solver::LinearSolverKind k{};
+            if (!solver::linear_solver_from_string(v, &k)) return false;
+            s.linear_solver = k;
+            return true;
+          }});
+  t.boolean({"solver.extrapolate", {}, "", {}, {}, "start each increment from the previous increment's displacement, scaled", false},
+            [](Scene& s) -> bool& { return s.extrapolate; });
+  t.boolean({"solver.line_search", {}, "", {}, {}, "energy line search on every Newton correction", false},
+            [](Scene& s) -> bool& { return s.line_search; });
+  t.real({"solver.force_tolerance", {}, "", Range::closed(1e-12, 1e-2), {}, "relative residual force of a converged increment", true},
+         [](Scene& s) -> double& { return s.force_tolerance; });
+  t.real({"solver.displacement_tolerance", {}, "", Range::closed(1e-12, 1e-2), {},
+          "last correction over the increment's displacement of a converged increment", true},
+         [](Scene& s) -> double& { return s.displacement_tolerance; });
+  t.integer({"solver.divergence_after", {}, "", Range::closed(0, 1000), {},
+             "iterations before a growing residual cuts the increment back (0: never)", false},
+            [](Scene& s) -> int& { return s.divergence_after; });
+}
+
+// [tool] radius, feed, spin on the fields `radius_field`, feed and spin.
+template <typename Scene>
+void add_tool_inputs(io::InputTable<Scene>& t, double Scene::*radius) {
+  using io::Range;
+  t.real({"tool.radius", {}, "mm", Range::positive(), {}, "radius of the spherical tool", true}, [radius](Scene& s) -> double& { return s.*radius; });
+  t.real({"tool.feed", {}, "mm/s", Range::positive(), {}, "tool feed rate along its path (times in force.csv)", false},
+         [](Scene& s) -> double& { return s.feed; });
+  t.real({"tool.spin", {}, "rev/min", Range::closed(-1e5, 1e5), {}, "tool rotation about +z, counter-clockwise seen from above; acts through friction", true},
+         [](Scene& s) -> double& { return s.spin; });
+}
+
+}  // namespace spifit::scene

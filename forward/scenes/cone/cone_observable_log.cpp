@@ -1,0 +1,186 @@
+#include "forward/scenes/cone/cone_observable_log.hpp"
+
+#include "forward/io/binary_archive.hpp"
+#include "forward/model/shell_model.hpp"
+#include "forward/scenes/cone/cone_scene.hpp"
+#include "forward/scenes/cone/element_history.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <numbers>
+
+namespace spifit::scene {
+namespace {
+
+using json = nlohmann::json;
+
+double stage_wall_angle(const ConeScene& s, int stage) {
+  const std::size_t i = static_cast<std::size_t>(std::max(1, stage) - 1);
+  return s.stages[std::min(i, s.stages.size() - 1)].wall_angle_deg;
+}
+
+json finite_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+const std::vector<std::string> kSectionColumns{"stage", "contour", "wall_angle [deg]", "plateau_nodes", "plateau_thickness [mm]",
+                                               "sine_law_thickness [mm]", "plateau_over_sine_law", "min_thickness [mm]",
+                                               "min_thickness_r0 [mm]", "min_thickness_depth [mm]", "max_elongation", "centre_z [mm]",
+                                               "centre_depth [mm]"};
+const std::vector<std::string> kStageColumns{"stage", "wall_angle [deg]", "travel [mm]", "centre_z [mm]", "centre_depth [mm]",
+                                             "max_elongation"};
+
+void save_series(io::BinaryWriter& w, const io::Series& s) {
+  w.i64(static_cast<std::int64_t>(s.size()));
+  for (const auto& row : s.rows()) w.f64s(row);
+}
+
+void load_series(io::BinaryReader& r, io::Series* s) {
+  s->clear();
+  const std::int64_t n = r.i64();
+  if (n < 0 || n > 1'000'000'000) throw io::ArchiveError("invalid row count " + std::to_string(n));
+  for (std::int64_t i = 0; i < n; ++i) {
+    std::vector<double> row = r.f64s();
+    if (row.size() != s->columns().size()) throw io::ArchiveError("observable row of another width");
+    s->add_row(std::move(row));
+  }
+}
+
+}  // namespace
+
+std::vector<double> stage_end_distances(const toolpath::ConePath& path) {
+  const std::vector<double> dist = path.path.waypoint_distances();
+  std::vector<double> ends;
+  for (std::size_t i = 0; i < path.segments.size() && i < dist.size(); ++i) {
+    const auto& seg = path.segments[i];
+    if (seg.move != toolpath::ConeMove::retract) continue;
+    const std::size_t k = static_cast<std::size_t>(seg.stage - 1);
+    if (ends.size() <= k) ends.resize(k + 1, 0.0);
+    ends[k] = std::max(ends[k], dist[i]);
+  }
+  if (ends.empty()) ends.push_back(dist.empty() ? 0.0 : dist.back());
+  return ends;
+}
+
+ConeObservableLog::ConeObservableLog(const ConeScene& scene, const model::ShellModel& model, const ConeTrack& track, const RunFiles& files)
+    : scene_(scene), model_(model), track_(track), files_(files), line_(radial_line_nodes(model.mesh(), section_angle_deg(scene.pie_angle))),
+      stage_ends_(stage_end_distances(track.path())),
+      // The run's shells use the scene's thickness rule and points (element_history_row checks
+      // the count against the element's layers).
+      rule_(element::make_thickness_rule(scene.thickness_rule, scene.thickness_points)),
+      section_rows_(io::parse_columns(kSectionColumns)), stage_rows_(io::parse_columns(kStageColumns)),
+      history_rows_(io::parse_columns(element_history_columns(scene.thickness_points))) {
+  const auto axis = model.mesh().node_sets.find("axis");
+  if (axis != model.mesh().node_sets.end() && !axis->second.empty()) centre_node_ = axis->second.front();
+  if (scene.history_element) history_element_ = nearest_element(model.mesh(), scene.history_element->r, scene.history_element->theta_deg);
+}
+
+std::vector<SectionNode> ConeObservableLog::section_nodes() const {
+  const std::vector<double> h = model_.nodal_thickness();
+  std::vector<SectionNode> nodes;
+  for (int n : line_)
+    nodes.push_back({model_.mesh().nodes[static_cast<std::size_t>(n)], model_.position(n), model_.director(n), h[static_cast<std::size_t>(n)]});
+  return nodes;
+}
+
+double ConeObservableLog::centre_z() const {
+  return centre_node_ >= 0 ? model_.position(centre_node_).z() : std::numeric_limits<double>::quiet_NaN();
+}
+
+void ConeObservableLog::after_increment(const IncrementView& v) {
+  const double travel = v.travel;
+  if (history_element_ >= 0) history_rows_.add_row(element_history_values(travel, v.lambda, element_history_row(model_, history_element_, rule_)));
+  // Stage ends (the end of the stage's retract; the last stage ends with the path).
+  while (stage_rows_.size() < stage_ends_.size() && travel >= stage_ends_[stage_rows_.size()] - 1e-9) {
+    const int stage = static_cast<int>(stage_rows_.size()) + 1;
+    const double z = centre_z();
+    double max_ratio = 0.0;
+    for (const auto& e : radial_elongation(section_nodes())) max_ratio = std::max(max_ratio, e.ratio);
+    stage_rows_.add_row({static_cast<double>(stage), stage_wall_angle(scene_, stage), travel, z, -z, max_ratio});
+  }
+}
+
+void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
+  (void)v;
+  const ContourSpan& span = track_.contours()[static_cast<std::size_t>(m.index)];
+  const std::vector<SectionNode> nodes = section_nodes();
+  const double theta0 = section_angle_deg(scene_.pie_angle);
+  const std::vector<SectionPoint> points = radial_section(nodes, theta0, scene_.thickness);
+  const std::vector<RadialEdge> edges = radial_elongation(nodes);
+  const double wall = stage_wall_angle(scene_, span.stage);
+  const SectionSummary s = summarise_section(points, edges, wall, scene_.thickness);
+  char name[64], head[240];
+  std::snprintf(name, sizeof name, "sections/section_s%d_c%03d.csv", span.stage, span.contour);
+  std::snprintf(head, sizeof head,
+                "# spifit cone scene %s: section at theta0 = %.6g deg after stage %d, contour %d: mid-surface, top/bottom = mid +- h/2 "
+                "along the nodal director, depth of the top surface, wall angle, twist\n",
+                scene_.name.c_str(), theta0, span.stage, span.contour);
+  files_.write(name, head + section_csv(points));
+  std::snprintf(name, sizeof name, "sections/elongation_s%d_c%03d.csv", span.stage, span.contour);
+  std::snprintf(head, sizeof head, "# spifit cone scene %s: radial elongation of the section's element edges after stage %d, contour %d\n",
+                scene_.name.c_str(), span.stage, span.contour);
+  files_.write(name, head + elongation_csv(edges));
+  const double z = centre_z();
+  section_rows_.add_row({static_cast<double>(span.stage), static_cast<double>(span.contour), wall, static_cast<double>(s.plateau_nodes),
+                           s.plateau_thickness, s.sine_law_thickness, s.plateau_thickness / s.sine_law_thickness, s.min_thickness,
+                           s.min_thickness_r0, s.min_thickness_depth, s.max_elongation, z, -z});
+}
+
+void ConeObservableLog::write(WriteReason reason) {
+  const bool now = reason == WriteReason::mark || reason == WriteReason::end;
+  if (!now && stage_rows_.size() == stages_written_) return;
+  stages_written_ = stage_rows_.size();
+  const std::string head = "# spifit cone scene " + scene_.name;
+  files_.write("sections.csv", head + ": per section (after each contour): wall-thickness plateau (nodes whose wall angle is within "
+                                         "5 deg of the cone's) vs the sine law t0 sin(90 - alpha), thinnest node, largest radial "
+                                         "elongation, part centre (axis node, mid-surface)\n" + section_rows_.csv());
+  files_.write("stages.csv", head + ": at the end of each stage (end of its retract; thesis Fig. 8.16): part centre = axis node, "
+                                       "mid-surface; depth = -z\n" + stage_rows_.csv());
+  if (history_element_ >= 0) {
+    const Eigen::Vector3d c = model_.mesh().centroid(history_element_);
+    char buf[300];
+    std::snprintf(buf, sizeof buf,
+                  ": element %d (initial centroid r = %.6g mm, theta = %.6g deg), after every increment; Green strains and curvatures in "
+                  "the initial polar frame at the element centre, layer stresses (Gauss-point mean), bottom (L1) to top\n",
+                  history_element_, c.head<2>().norm(), std::atan2(c.y(), c.x()) * 180.0 / std::numbers::pi);
+    files_.write("history.csv", head + buf + history_rows_.csv());
+  }
+}
+
+json ConeObservableLog::summary() const {
+  json j;
+  j["section_angle_deg"] = section_angle_deg(scene_.pie_angle);
+  j["last_section"] = nullptr;
+  if (!section_rows_.empty()) {
+    json row;
+    for (std::size_t i = 0; i < kSectionColumns.size(); ++i)
+      row[kSectionColumns[i].substr(0, kSectionColumns[i].find(' '))] = finite_or_null(section_rows_.rows().back()[i]);
+    j["last_section"] = row;
+  }
+  j["stages"] = json::array();
+  for (const auto& r : stage_rows_.rows())
+    j["stages"].push_back({{"stage", static_cast<int>(r[0])}, {"wall_angle", r[1]}, {"centre_z", finite_or_null(r[3])},
+                           {"centre_depth", finite_or_null(r[4])}, {"max_elongation", r[5]}});
+  if (history_element_ >= 0) {
+    const Eigen::Vector3d c = model_.mesh().centroid(history_element_);
+    j["history_element"] = {{"element", history_element_},
+                            {"requested", {{"r", scene_.history_element->r}, {"theta", scene_.history_element->theta_deg}}},
+                            {"centroid_r", c.head<2>().norm()},
+                            {"centroid_theta", std::atan2(c.y(), c.x()) * 180.0 / std::numbers::pi}};
+  }
+  return j;
+}
+
+void ConeObservableLog::save(io::BinaryWriter& w) const {
+  save_series(w, section_rows_);
+  save_series(w, stage_rows_);
+  save_series(w, history_rows_);
+}
+
+void ConeObservableLog::restore(io::BinaryReader& r) {
+  load_series(r, &section_rows_);
+  load_series(r, &stage_rows_);
+  load_series(r, &history_rows_);
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,63 @@
+#include "forward/scenes/forming/forming_inputs.hpp"
+
+#include "forward/scenes/common/tool_scene_inputs.hpp"
+
+namespace spifit::scene {
+namespace {
+
+using io::InputType;
+using io::Range;
+
+void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
+  t.custom({"scene.kind", {}, "", {}, {"indent", "indent_line", "line"}, "the scene kind (required)", false}, InputType::text);
+  t.custom({"scene.name", {}, "", {}, {}, "name in outputs (default: the file's stem)", false}, InputType::text);
+  t.custom({"scene.description", {}, "", {}, {}, "free text", false}, InputType::text);
+  t.custom({"scene.material", {}, "", {}, {}, "material card, relative to the scene file (default: card C.3 + C.4)", false}, InputType::text);
+  t.real({"sheet.length", {}, "mm", Range::positive(), {}, "side of the square sheet, centred on the origin, clamped on its edges", true},
+         [](FormingScene& s) -> double& { return s.length; });
+  t.real({"sheet.thickness", {}, "mm", Range::positive(), {}, "initial sheet thickness", true},
+         [](FormingScene& s) -> double& { return s.thickness; });
+  t.integer({"sheet.elements", {}, "", Range::closed(2, 2000), {}, "elements across the full side (a half model: even)", true},
+            [](FormingScene& s) -> int& { return s.elements; });
+  t.boolean({"sheet.half", {}, "", {}, {}, "model the half y >= 0 with symmetry conditions on y = 0", false},
+            [](FormingScene& s) -> bool& { return s.half; });
+  t.real({"sheet.grading", {}, "", Range::positive(), {}, "ratio of the outer to the central element size (1: regular)", false},
+         [](FormingScene& s) -> double& { return s.grading; });
+  t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
+            [](FormingScene& s) -> int& { return s.thickness_points; });
+}
+
+void add_output(io::InputTable<FormingScene>& t) {
+  t.integer({"output.vtu_every", {}, "", Range::non_negative(), {}, "increments between VTU steps (0: initial and final state only)", false},
+            [](FormingScene& s) -> int& { return s.vtu_every; });
+  t.custom({"output.sections", {}, "", {}, {}, "names of path points where the section y = 0 is written", false}, InputType::text);
+  t.integer({"output.checkpoint_every", {}, "", Range::non_negative(), {}, "named path points between checkpoints (0: none)", false},
+            [](FormingScene& s) -> int& { return s.checkpoint_every; });
+  t.integer({"output.checkpoint_increments", {}, "", Range::non_negative(), {}, "increments between checkpoints (0: none)", false},
+            [](FormingScene& s) -> int& { return s.checkpoint_increments; });
+}
+
+io::InputTable<FormingScene> make_table() {
+  io::InputTable<FormingScene> t;
+  add_scene_and_sheet(t);
+  add_tool_inputs(t, &FormingScene::radius);
+  t.custom({"tool.gcode", {}, "", {}, {}, "G-code program of the tool tip, relative to the scene file (replaces [[path]])", false},
+           InputType::text);
+  t.custom({"path.name", {}, "", {}, {}, "[[path]] point name (sections are taken at named points)", false}, InputType::text);
+  t.custom({"path.x", {}, "mm", {}, {}, "[[path]] tool tip x", false}, InputType::real);
+  t.custom({"path.y", {}, "mm", {}, {}, "[[path]] tool tip y", false}, InputType::real);
+  t.custom({"path.z", {}, "mm", {}, {}, "[[path]] tool tip z, from the sheet's initial top surface", false}, InputType::real);
+  add_contact_inputs(t);
+  add_solver_inputs(t);
+  add_output(t);
+  return t;
+}
+
+}  // namespace
+
+const io::InputTable<FormingScene>& forming_inputs() {
+  static const io::InputTable<FormingScene> table = make_table();
+  return table;
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,114 @@
+#include "forward/scenes/forming/forming_kind.hpp"
+
+#include "forward/scenes/common/table_scene.hpp"
+#include "forward/scenes/forming/forming_inputs.hpp"
+#include "forward/scenes/forming/forming_run.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace spifit::scene {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+class FormingSceneFile final : public TableScene<FormingScene> {
+ public:
+  explicit FormingSceneFile(FormingScene s) : TableScene(s.kind, std::move(s), &forming_inputs()) {}
+  std::vector<std::string> input_files() const override {
+    std::vector<std::string> f{data_.file, data_.card.file};
+    if (!data_.gcode.empty()) f.push_back(data_.gcode);
+    return f;
+  }
+  std::unique_ptr<Scene> clone() const override { return std::make_unique<FormingSceneFile>(*this); }
+  std::unique_ptr<SceneResult> run(const RunFiles& files, const RunControl& control) const override {
+    return std::make_unique<FormingResult>(run_forming_scene(data_, files, control));
+  }
+
+ protected:
+  std::string check_inputs() const override {
+    if (data_.half && data_.elements % 2 != 0) return "a half model needs an even number of elements across";
+    return data_.contact.validate();
+  }
+};
+
+const FormingResult& forming(const SceneResult& r) { return dynamic_cast<const FormingResult&>(r); }
+
+// Force statistics over the samples whose travel lies in the window.
+struct WindowStats {
+  double sum[3] = {0.0, 0.0, 0.0};
+  double min_fz = std::numeric_limits<double>::infinity(), max_fz = -std::numeric_limits<double>::infinity();
+  std::size_t rows = 0;
+};
+
+WindowStats window_stats(const ToolForceHistory& h, const std::array<double, 2>& w) {
+  WindowStats s;
+  for (const auto& x : h.samples()) {
+    if (x.travel < w[0] || x.travel > w[1]) continue;
+    for (int k = 0; k < 3; ++k) s.sum[k] += x.force(k);
+    s.min_fz = std::min(s.min_fz, x.force.z());
+    s.max_fz = std::max(s.max_fz, x.force.z());
+    ++s.rows;
+  }
+  return s;
+}
+
+Observable force_component(const char* name, const char* doc, int k, bool peak) {
+  return {name, "N", doc, Observable::Needs::nothing, false, [k, peak](const SceneResult& r, const ObservableOptions&) {
+            const auto& f = forming(r).force;
+            return peak ? f.peak()(k) : f.final_force()(k);
+          }};
+}
+
+Observable window_mean(const char* name, const char* doc, int k) {
+  return {name, "N", doc, Observable::Needs::window, false, [k](const SceneResult& r, const ObservableOptions& o) {
+            const WindowStats s = window_stats(forming(r).force, *o.window);
+            return s.rows == 0 ? kNaN : s.sum[k] / static_cast<double>(s.rows);
+          }};
+}
+
+std::vector<Observable> forming_observables() {
+  std::vector<Observable> o{
+      force_component("peak_fx", "largest |Fx| over the run (signed)", 0, true),
+      force_component("peak_fz", "largest |Fz| over the run (signed)", 2, true),
+      force_component("final_fx", "Fx at the end of the path", 0, false),
+      force_component("final_fz", "Fz at the end of the path", 2, false),
+      {"max_penetration", "mm", "deepest contact point over the run", Observable::Needs::nothing, false,
+       [](const SceneResult& r, const ObservableOptions&) { return forming(r).force.max_penetration(); }},
+      {"newton_iterations", "", "Newton iterations of the run", Observable::Needs::nothing, true,
+       [](const SceneResult& r, const ObservableOptions&) { return static_cast<double>(forming(r).run.counters.iterations); }},
+      {"increments", "", "committed increments of the run", Observable::Needs::nothing, true,
+       [](const SceneResult& r, const ObservableOptions&) { return static_cast<double>(forming(r).run.counters.increments); }},
+      window_mean("mean_fx", "mean Fx over the travel window", 0),
+      window_mean("mean_fy", "mean Fy over the travel window", 1),
+      window_mean("mean_fz", "mean Fz over the travel window", 2),
+      {"ripple_fz", "", "(max - min) / mean of Fz over the travel window", Observable::Needs::window, false,
+       [](const SceneResult& r, const ObservableOptions& o) {
+         const WindowStats s = window_stats(forming(r).force, *o.window);
+         return s.rows == 0 ? kNaN : (s.max_fz - s.min_fz) / (s.sum[2] / static_cast<double>(s.rows));
+       }},
+  };
+  return o;
+}
+
+SceneKind forming_kind(const char* name, const char* doc) {
+  SceneKind k;
+  k.name = name;
+  k.family = "forming";
+  k.doc = doc;
+  k.resumable = true;
+  k.read = [](const std::string& file) -> std::unique_ptr<Scene> { return std::make_unique<FormingSceneFile>(read_forming_scene(file)); };
+  k.inputs = forming_inputs().infos();
+  k.observables = forming_observables();
+  return k;
+}
+
+}  // namespace
+
+std::vector<SceneKind> forming_kinds() {
+  return {forming_kind("indent", "the small clamped square of thesis §7.1 pushed at its centre (penalty study)"),
+          forming_kind("indent_line", "the line-test sheet indented to 5 mm (point B): the indent test of the identification"),
+          forming_kind("line", "the line test: indent, a 100 mm line, deeper, back (thesis §4.1.1, §7.3)")};
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,28 @@
+#include "forward/scenes/forming/forming_result.hpp"
+
+#include "forward/scenes/common/fe_run_summary.hpp"
+
+#include <cstdio>
+
+namespace spifit::scene {
+
+nlohmann::json FormingResult::to_json() const {
+  nlohmann::json j = inputs;
+  add_status(j);
+  add_fe_run_summary(j, run, force, final_energies, "N mm (= mJ), the modelled sheet only (a half model: half the sheet)");
+  j["sections"] = nlohmann::json::array();
+  for (const auto& s : sections) j["sections"].push_back({{"point", s.point}, {"file", "sections/section_" + s.point + ".csv"}});
+  j["units"] = {{"force", "N, by the sheet on the tool"}, {"length", "mm"}, {"time", "s (travel / feed)"}};
+  return j;
+}
+
+std::string FormingResult::brief_report() const {
+  const Eigen::Vector3d& pk = force.peak();
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%-16s %-12s peak force (%.2f, %.2f, %.2f) N, max penetration %.4f mm  (%d elements, %d increments, %d iterations, %.2f s)",
+                name.c_str(), kind.c_str(), pk.x(), pk.y(), pk.z(), force.max_penetration(), elements, run.counters.increments,
+                run.counters.iterations, wall_seconds);
+  return buf;
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,138 @@
+#include "forward/scenes/forming/forming_run.hpp"
+
+#include "forward/mesh/square_sheet.hpp"
+#include "forward/scenes/common/energy_log.hpp"
+#include "forward/scenes/common/force_log.hpp"
+#include "forward/scenes/common/scene_tables.hpp"
+#include "forward/scenes/common/vtu_log.hpp"
+#include "forward/scenes/forming/forming_path.hpp"
+#include "forward/scenes/forming/path_section_log.hpp"
+
+#include <numbers>
+
+namespace spifit::scene {
+namespace {
+
+mesh::Mesh sheet_mesh(const FormingScene& s) {
+  mesh::SquareSheetOptions so;
+  so.length_x = so.length_y = s.length;
+  so.nx = so.ny = s.elements;
+  so.half = s.half;
+  so.grading_x = so.grading_y = s.grading;
+  return mesh::square_sheet(so);
+}
+
+// Edges clamped (translations and rotations); a half model's symmetry plane y = 0 holds u_y and
+// the rotations about x and z. Drilling rotations out of the system (nodal rotation frames).
+solver::DofConstraints sheet_constraints(const FormingScene& s, model::ShellModel& model) {
+  solver::DofConstraints c(model.num_dofs());
+  const mesh::Mesh& mesh = model.mesh();
+  for (int n : mesh.node_sets.at("boundary"))
+    for (int k = 0; k < 6; ++k) c.prescribe(model::ShellModel::dof(n, k));
+  if (s.half)
+    for (int n : mesh.node_sets.at("symmetry_y0"))
+      for (int k : {1, 3, 5})
+        if (!c.prescribed(model::ShellModel::dof(n, k))) c.prescribe(model::ShellModel::dof(n, k));
+  model.use_nodal_rotation_frames(&c);
+  c.finalize();
+  return c;
+}
+
+FeRunSetup forming_setup(const FormingScene& s) {
+  FeRunSetup f;
+  f.kind = s.kind;
+  f.name = s.name;
+  f.input_files = {{"scene", s.file}, {"material card", s.card.file}, {"G-code", s.gcode}};
+  f.mesh = sheet_mesh(s);
+  f.thickness = s.thickness;
+  f.material = s.card.params;
+  f.model.shell.thickness_points = s.thickness_points;
+  f.tool_radius = s.radius;
+  f.contact = s.contact;
+  f.tool_path = forming_centre_path(s);
+  const double length = f.tool_path.length();
+  // Spin [rad per unit load factor] = omega [rad/s] x travel time L / feed [s].
+  f.spin_per_load_factor = s.spin * 2.0 * std::numbers::pi / 60.0 * length / s.feed;
+  f.load_map = LoadMap::linear(length);
+  const double feed = s.feed;
+  f.time_of_travel = [feed](double travel) { return travel / feed; };
+  f.constraints = [&s](model::ShellModel& m) { return sheet_constraints(s, m); };
+  f.marks = forming_marks(s, f.tool_path);
+  f.newton = tool_newton_options(s, length);
+  // The increment size starts afresh at every mark, as after a change of direction.
+  for (const Mark& m : f.marks)
+    if (m.travel < length) f.newton.restarts.push_back(m.travel / length);
+  f.output.vtu_every = s.vtu_every;
+  f.output.checkpoint_every = s.checkpoint_every;
+  f.output.checkpoint_increments = s.checkpoint_increments;
+  f.progress_every_increment = true;
+  return f;
+}
+
+ForceLogFormat force_format(const FormingScene& s) {
+  ForceLogFormat f;
+  f.columns = {{"time", "s"}, {"tool_x", "mm"}, {"tool_y", "mm"}, {"tool_z", "mm"}, {"Fx", "N"}, {"Fy", "N"}, {"Fz", "N"},
+               {"max_penetration", "mm"}, {"iterations", ""}};
+  f.comment = "# spifit " + s.kind + " scene " + s.name + ": force BY the sheet ON the tool; tool = centre position" +
+              (s.half ? "; half model, forces mirrored to the full sheet" : "");
+  f.row = [](const ToolForceSample& x) {
+    return std::vector<double>{x.time, x.centre.x(), x.centre.y(), x.centre.z(), x.force.x(), x.force.y(), x.force.z(), x.penetration,
+                               static_cast<double>(x.iterations)};
+  };
+  // A half model carries half of Fx and Fz, and no Fy.
+  if (s.half) f.whole = [](const Eigen::Vector3d& v) { return Eigen::Vector3d(2.0 * v.x(), 0.0, 2.0 * v.z()); };
+  return f;
+}
+
+nlohmann::json forming_inputs(const FormingScene& s, const model::ShellModel& model, double length) {
+  nlohmann::json j;
+  j["scene"] = s.name;
+  j["scene_file"] = s.file;
+  j["kind"] = s.kind;
+  j["description"] = s.description;
+  j["material"] = s.card.name;
+  j["model"] = {{"elements", model.num_elements()}, {"nodes", model.num_nodes()}, {"half", s.half},
+                {"thickness", s.thickness}, {"length", s.length}, {"thickness_points", s.thickness_points}};
+  j["tool"] = {{"radius", s.radius}, {"travel", length}, {"feed", s.feed}, {"spin_rpm", s.spin}, {"gcode", s.gcode}};
+  j["contact"] = contact_json(s.contact);
+  j["warnings"] = model.warnings();
+  return j;
+}
+
+}  // namespace
+
+FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files, const RunControl& control) {
+  FeRun run(forming_setup(scene), files, control);
+  const double length = run.setup().load_map.length();
+  auto& force = run.add_observer(std::make_unique<ForceLog>(force_format(scene), run.files()));
+  auto& energy = run.add_observer(std::make_unique<EnergyLog>(
+      "# spifit " + scene.kind + " scene " + scene.name + ": energy account of the model after each increment (model::ModelEnergies), N mm; "
+      "external work = the tool's work on the sheet (trapezoidal rule; a half model: on the half); kinetic energy 0 (static implicit); "
+      "balance_error = external_work - the other columns", run.files()));
+  auto& sections = run.add_observer(std::make_unique<PathSectionLog>(scene.sections, scene.name, run.files()));
+  run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
+
+  FormingResult r;
+  r.inputs = forming_inputs(scene, run.model(), length);
+  r.name = scene.name;
+  r.kind = scene.kind;
+  r.elements = run.model().num_elements();
+  r.path_length = length;
+  r.feed = scene.feed;
+  r.half = scene.half;
+  r.warnings = run.model().warnings();
+  r.run = run.run(r.inputs);
+  r.status = r.run.status;
+  r.message = r.run.message;
+  r.wall_seconds = r.run.wall_seconds;
+  r.force = force.history();
+  r.sections = sections.sections();
+  r.energies = energy.table();
+  r.final_energies = energy.last();
+  const std::string w = contact::ShellContact::resolution_warning(r.force.max_penetration(), r.force.max_surface_penetration(), scene.contact.points);
+  if (!w.empty()) r.warnings.push_back(w);
+  files.write("summary.json", r.to_json().dump(2) + "\n");
+  return r;
+}
+
+}  // namespace spifit::scene

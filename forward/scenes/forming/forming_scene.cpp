@@ -1,0 +1,136 @@
+#include "forward/scenes/forming/forming_scene.hpp"
+
+#include "forward/io/input_error.hpp"
+#include "forward/io/toml_reader.hpp"
+#include "forward/scenes/common/scene_tables.hpp"
+#include "forward/scenes/forming/forming_inputs.hpp"
+#include "forward/scenes/forming/forming_path.hpp"
+#include "forward/toolpath/tool_path.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+namespace spifit::scene {
+namespace {
+
+// Thesis defaults per kind (§7.1 for indent; §4.1.1, §7.2 and §7.3 for the line test; the
+// path A -> E is an assumption: docs/contact.md).
+void set_defaults(FormingScene& s) {
+  if (s.kind == "indent") {
+    // §7.1: 10 x 10 mm, t = 0.3, edges clamped, R = 5 at the centre, 2 mm after 1 s from first touch.
+    s.length = 10.0; s.thickness = 0.3; s.elements = 10; s.half = false;
+    s.radius = 5.0; s.feed = 2.0;
+    s.path = {{"A", {0.0, 0.0, 0.0}}, {"B", {0.0, 0.0, -2.0}}};
+    s.travel_per_increment = 0.05;
+    // No predictor: from K_p = 1e6 up it led Newton into states it could not leave even with
+    // 1e-5 of the step (docs/contact.md); this small model gains nothing from it anyway.
+    s.extrapolate = false;
+  } else {
+    // 182 x 182 mm, t = 1.2, 50 x 50 regular mesh (3.64 mm, §7.3), edges clamped, R = 5,
+    // A (-50, 0) above the sheet, B at 5 mm depth, C after +100 mm, D at 10 mm, E back -100 mm
+    // (§4.1.1: two 100 mm lines at 5 and 10 mm depth).
+    s.length = 182.0; s.thickness = 1.2; s.elements = 50; s.half = true;
+    s.radius = 5.0; s.feed = 10.0;
+    s.path = {{"A", {-50.0, 0.0, 0.0}}, {"B", {-50.0, 0.0, -5.0}}};
+    if (s.kind == "line") {
+      s.path.push_back({"C", {50.0, 0.0, -5.0}});
+      s.path.push_back({"D", {50.0, 0.0, -10.0}});
+      s.path.push_back({"E", {-50.0, 0.0, -10.0}});
+      s.sections = {"C", "E"};
+    }
+    s.travel_per_increment = 0.5;
+  }
+}
+
+// [tool] gcode: the program's path relative to the scene file (it replaces the default path).
+void read_gcode(const io::TomlTable& tl, const std::string& scene_file, FormingScene& s) {
+  if (!tl.has("gcode")) return;
+  std::filesystem::path gp(tl.string("gcode"));
+  if (gp.is_relative()) gp = std::filesystem::path(scene_file).parent_path() / gp;
+  if (!std::filesystem::exists(gp)) tl.fail("gcode", "G-code file not found at " + gp.lexically_normal().string());
+  s.gcode = gp.lexically_normal().string();
+  s.sections.clear();
+}
+
+void read_path_points(const io::TomlTable& root, const std::vector<io::TomlTable>& points, FormingScene& s) {
+  if (points.empty()) return;
+  if (!s.gcode.empty()) points.front().fail("x", "give either [tool] gcode or [[path]] points, not both");
+  s.path.clear();
+  for (const auto& p : points) {
+    p.allow_only(forming_inputs().keys_of("path"));
+    std::string fallback = "P";
+    fallback += std::to_string(s.path.size());
+    s.path.push_back({p.string("name", fallback), {p.number("x"), p.number("y"), p.number("z")}});
+  }
+  if (s.path.size() < 2) points.front().fail("x", "a path needs at least 2 points");
+  if (!root.table("output") || !root.table("output")->has("sections")) s.sections.clear();
+}
+
+void read_sections(const io::TomlTable& o, FormingScene& s) {
+  if (!o.has("sections")) return;
+  s.sections = o.string_list("sections");
+  for (const auto& n : s.sections)
+    if (std::none_of(s.path.begin(), s.path.end(), [&](const PathPoint& p) { return p.name == n; }))
+      o.fail("sections", "no path point named \"" + n + "\"");
+}
+
+}  // namespace
+
+bool is_forming_kind(const std::string& kind) { return kind == "indent" || kind == "indent_line" || kind == "line"; }
+
+FormingScene read_forming_scene(const std::string& path) {
+  const auto root = io::TomlTable::parse_file(path);
+  root.allow_only({"scene", "sheet", "tool", "path", "contact", "solver", "output"});
+  const auto sc = root.table("scene");
+  if (!sc) root.fail("scene", "required table [scene] is missing");
+  const auto& inputs = forming_inputs();
+  sc->allow_only(inputs.keys_of("scene"));
+  FormingScene s;
+  s.file = path;
+  s.kind = sc->string("kind");
+  if (!is_forming_kind(s.kind)) sc->fail("kind", "expected indent, indent_line or line");
+  set_defaults(s);
+  s.name = sc->string("name", std::filesystem::path(path).stem().string());
+  s.description = sc->string("description", "");
+  s.card = read_scene_material(*sc, path);
+  for (const char* table : {"sheet", "tool", "contact", "solver", "output"}) {
+    const auto t = root.table(table);
+    if (!t) continue;
+    t->allow_only(inputs.keys_of(table));
+    inputs.read(*t, table, s);
+  }
+  if (const auto sh = root.table("sheet"); sh && s.half && s.elements % 2 != 0)
+    sh->fail(sh->has("elements") ? "elements" : "half", "a half model needs an even number of elements across");
+  if (const auto tl = root.table("tool")) read_gcode(*tl, path, s);
+  const auto points = root.table_array("path");
+  read_path_points(root, points, s);
+  if (const auto o = root.table("output")) read_sections(*o, s);
+  // The tool must start outside the sheet and reach it.
+  const double half_length = 0.5 * s.length;
+  auto over_sheet = [&](const Eigen::Vector3d& tip) { return std::abs(tip.x()) < half_length && std::abs(tip.y()) < half_length; };
+  std::vector<Eigen::Vector3d> tips;
+  if (!s.gcode.empty()) {
+    const toolpath::ToolPath gp = gcode_tip_path(s.gcode);
+    for (const auto& w : gp.waypoints()) tips.push_back(w.position);
+  } else {
+    for (const auto& p : s.path) tips.push_back(p.tip);
+  }
+  // Path errors are reported on the key that holds the path.
+  const auto path_error = [&](const std::string& message) {
+    if (!s.gcode.empty()) root.table("tool")->fail("gcode", message);
+    if (!points.empty()) points.front().fail("z", message);
+    sc->fail("kind", message + " (default path of this kind)");
+  };
+  if (tips.front().z() < -1e-9 && over_sheet(tips.front())) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "the tool starts inside the sheet: its tip is %.4g mm below the top surface", -tips.front().z());
+    path_error(buf);
+  }
+  if (std::none_of(tips.begin(), tips.end(), [&](const Eigen::Vector3d& t) { return t.z() < 0.0 && over_sheet(t); }))
+    path_error("the tool path never goes below the sheet's top surface over the sheet");
+  return s;
+}
+
+}  // namespace spifit::scene

@@ -1,0 +1,64 @@
+#pragma once
+// Shell FE forming scenes with the spherical tool: `indent` (the small clamped square of thesis
+// §7.1, for the penalty study), `indent_line` (the line-test sheet of thesis §4.1.1 and §7.2
+// indented to 5 mm: point B, the indent test of the identification, §2.3.3) and `line`
+// (A -> B -> C -> D -> E). Every geometric input is in the scene file; the defaults are the
+// thesis's (schema: docs/file-formats.md). The run is forming_run.hpp.
+#include "forward/contact/shell_contact.hpp"
+#include "forward/material/material_card.hpp"
+#include "forward/solver/newton_solver.hpp"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace spifit::scene {
+
+struct PathPoint {
+  std::string name;           // e.g. "B"; sections can be requested at named points
+  Eigen::Vector3d tip;        // tool tip (lowest point) [mm]; z relative to the sheet's initial top surface
+};
+
+struct FormingScene {
+  std::string kind;           // indent, indent_line, line
+  std::string name, description, file;
+  material::MaterialCard card;
+  // Sheet: square of side `length` centred on the origin, clamped on its edges; `half` keeps
+  // y >= 0 with symmetry conditions on y = 0.
+  double length = 10.0, thickness = 0.3;
+  int elements = 10;          // across the full side
+  bool half = false;
+  double grading = 1.0;
+  int thickness_points = 5;
+  // Tool.
+  double radius = 5.0;
+  double feed = 2.0;          // mm/s (force.csv time = travel / feed)
+  double spin = 0.0;          // tool rotation [rev/min] about +z (counter-clockwise seen from above); acts through friction
+  std::vector<PathPoint> path;
+  std::string gcode;          // G-code file of the tool tip (replaces `path` when set)
+  contact::ContactOptions contact;
+  // Solver: increments of tool travel.
+  double travel_per_increment = 0.1;  // mm
+  int max_iterations = 25;
+  bool extrapolate = true;            // predictor from the previous increment (NewtonOptions)
+  bool line_search = false;           // energy line search (NewtonOptions)
+  // Relative (NewtonOptions). 1e-5 changed the indent_line peak force by 1e-12 relative and
+  // saved 13 % of the iterations against 1e-7 (docs/contact.md).
+  double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
+  int divergence_after = solver::NewtonOptions{}.divergence_after;  // the solver's 3
+  std::optional<solver::LinearSolverKind> linear_solver;
+  // Output.
+  int vtu_every = 0;
+  std::vector<std::string> sections;  // path point names where the y = 0 section is written
+  // Checkpoints (DIR/checkpoint/state.bin, --resume): after every checkpoint_every named points
+  // (G-code: corners) and every checkpoint_increments increments; 0: none of that kind.
+  int checkpoint_every = 1;
+  int checkpoint_increments = 20;
+};
+
+// Throws io::InputError naming file, key and value (also for a path that never reaches the
+// sheet or a tool that starts inside it).
+FormingScene read_forming_scene(const std::string& path);
+bool is_forming_kind(const std::string& kind);
+
+}  // namespace spifit::scene

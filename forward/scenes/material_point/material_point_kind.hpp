@@ -1,0 +1,13 @@
+#pragma once
+// The material-point scene kinds (tensile, shear, bauschinger, plane_strain, biaxial) in the
+// registry (scene_registry.hpp): reading, running and the observables sweeps and fits read.
+// Their inputs are the card's parameters.
+#include "forward/scenes/common/scene.hpp"
+
+#include <vector>
+
+namespace spifit::scene {
+
+std::vector<SceneKind> material_point_kinds();
+
+}  // namespace spifit::scene

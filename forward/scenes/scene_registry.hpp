@@ -1,0 +1,26 @@
+#pragma once
+// Every scene kind spifit knows (common/scene.hpp), by name: what `spifit run`, `sweep`,
+// `synth`, `inputs` and fits look a scene file's [scene] kind up in. A new kind is a folder of
+// its own plus its line in scene_registry.cpp (docs/extending.md).
+#include "forward/scenes/common/scene.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spifit::scene {
+
+const std::vector<SceneKind>& scene_kinds();
+// nullptr for an unknown name.
+const SceneKind* find_scene_kind(const std::string& name);
+// "tensile, shear, ..., cone"
+std::string scene_kind_names();
+
+// The [scene] kind of a scene file; io::InputError for a missing file, a syntax error or a
+// missing kind.
+std::string scene_kind_of_file(const std::string& path);
+// Reads a scene file of any kind; io::InputError naming the file and key (an unknown kind lists
+// the known ones).
+std::unique_ptr<Scene> read_scene(const std::string& path);
+
+}  // namespace spifit::scene

@@ -1,0 +1,175 @@
+// The FE forming scenes with the spherical tool (issue 5): the §7.1 indent and its penalty
+// study, G-code vs built-in path, and the input checks of the scene reader.
+#include "forward/io/input_error.hpp"
+#include "forward/scenes/forming/forming_scene.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+namespace fs = std::filesystem;
+
+namespace spifit::scene {
+namespace {
+
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+
+fs::path temp_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("spifit_forming_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+nlohmann::json run(FormingScene s, const std::string& name) {
+  const fs::path d = temp_dir(name);
+  const auto out = io::OutputDirectory::prepare(d.string(), true);
+  const FormingReport r = run_forming_scene(s, out);
+  EXPECT_TRUE(r.ok) << r.summary.dump();
+  EXPECT_TRUE(fs::exists(d / "force.csv"));
+  EXPECT_TRUE(fs::exists(d / "vtu" / "sheet.pvd"));
+  fs::remove_all(d);
+  return r.summary;
+}
+
+TEST(FormingScene, IndentPenaltyStudyConvergesAndTheForceSettles) {
+  // Thesis §7.1: 1e2 left about 0.1 mm of interpenetration, 1e3 was the compromise, 1e5 the
+  // largest value that converged there. Here every value converges (1e1 to 1e7 in the long
+  // test); the force settles as K_p grows and the penetration falls.
+  const FormingScene base = read_forming_scene(src("experiments/aa3003o/scenes/indent.toml"));
+  double previous_pen = 1e9, f3 = 0.0, f4 = 0.0;
+  for (double kp : {1e2, 1e3, 1e4}) {
+    FormingScene s = base;
+    s.contact.penalty = kp;
+    const auto r = run(s, "kp");
+    const double pen = r["max_penetration"].get<double>(), f = r["final_force"][2].get<double>();
+    std::printf("K_p %.0e: Fz %.3f N, max penetration %.5f mm, %d increments, %d iterations\n", kp, f, pen,
+                r["increments"].get<int>(), r["newton_iterations"].get<int>());
+    EXPECT_LT(pen, previous_pen);
+    previous_pen = pen;
+    if (kp == 1e3) f3 = f;
+    if (kp == 1e4) f4 = f;
+    EXPECT_NEAR(r["final_force"][0].get<double>(), 0.0, 1e-6 * f);  // symmetric indent: no side force
+  }
+  EXPECT_NEAR(f3 / f4, 1.0, 0.02);  // 289.4 vs 293.7 N
+}
+
+TEST(FormingScene, GcodePathGivesTheSameIndentAsTheBuiltInPath) {
+  const FormingScene base = read_forming_scene(src("experiments/aa3003o/scenes/indent.toml"));
+  const fs::path nc = fs::temp_directory_path() / ("spifit_indent_" + std::to_string(::getpid()) + ".nc");
+  std::ofstream(nc) << "G21 G90\nG00 X0 Y0 Z0\nG01 Z-2 F120 (2 mm/s)\nM30\n";
+  FormingScene g = base;
+  g.gcode = nc.string();
+  g.path.clear();
+  const auto a = run(base, "builtin"), b = run(g, "gcode");
+  EXPECT_NEAR(a["final_force"][2].get<double>(), b["final_force"][2].get<double>(), 1e-9 * a["final_force"][2].get<double>());
+  EXPECT_EQ(a["increments"], b["increments"]);
+  fs::remove(nc);
+}
+
+// A line-test path with corners (A -> B down, B -> C along x) as G-code: the opening rapid only
+// places the tool, and the solver stops at the G-code corners as at the named points, so both
+// runs take the same increments and give the same forces (a small half sheet for speed).
+TEST(FormingScene, GcodeLinePathGivesTheSameForcesAsTheBuiltInPath) {
+  FormingScene base = read_forming_scene(src("experiments/aa3003o/scenes/line_half.toml"));
+  base.length = 40.0;
+  base.elements = 10;
+  base.path = {{"A", {-10.0, 0.0, 0.0}}, {"B", {-10.0, 0.0, -2.0}}, {"C", {-4.0, 0.0, -2.0}}};
+  base.sections.clear();
+  base.travel_per_increment = 0.75;  // increments that do not fall on B by themselves
+  const fs::path nc = fs::temp_directory_path() / ("spifit_line_" + std::to_string(::getpid()) + ".nc");
+  std::ofstream(nc) << "G21 G90\nG00 X-10 Y0 Z0 (A)\nG01 Z-2 F600 (B)\nG01 X-4 (C)\nM30\n";
+  FormingScene g = base;
+  g.gcode = nc.string();
+  g.path.clear();
+  const auto a = run(base, "line_builtin"), b = run(g, "line_gcode");
+  std::printf("built-in: Fz %.6f N in %d increments; G-code: Fz %.6f N in %d increments\n", a["final_force"][2].get<double>(),
+              a["increments"].get<int>(), b["final_force"][2].get<double>(), b["increments"].get<int>());
+  EXPECT_EQ(a["increments"], b["increments"]);
+  for (int k : {0, 2}) {
+    EXPECT_NEAR(a["final_force"][k].get<double>(), b["final_force"][k].get<double>(), 1e-9 * std::abs(a["final_force"][2].get<double>()));
+    EXPECT_NEAR(a["peak_force"][k].get<double>(), b["peak_force"][k].get<double>(), 1e-9 * std::abs(a["peak_force"][2].get<double>()));
+  }
+  fs::remove(nc);
+}
+
+TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
+  auto error_of = [](const std::string& text) {
+    const fs::path f = fs::temp_directory_path() / ("spifit_forming_" + std::to_string(::getpid()) + ".toml");
+    std::ofstream(f) << text;
+    std::string err;
+    try {
+      read_forming_scene(f.string());
+    } catch (const io::InputError& e) {
+      err = e.what();
+    }
+    fs::remove(f);
+    return err;
+  };
+  const std::string head = "[scene]\nkind = \"indent\"\nmaterial = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n";
+  EXPECT_NE(error_of(head + "[[path]]\nx = 0\ny = 0\nz = 1\n[[path]]\nx = 0\ny = 0\nz = 0.5\n").find("never goes below"), std::string::npos);
+  EXPECT_NE(error_of(head + "[[path]]\nx = 0\ny = 0\nz = -1\n[[path]]\nx = 0\ny = 0\nz = -2\n").find("starts inside the sheet"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + "[[path]]\nx = 50\ny = 0\nz = 0\n[[path]]\nx = 50\ny = 0\nz = -2\n").find("never goes below"),
+            std::string::npos);  // beside the sheet
+  EXPECT_NE(error_of(head + "[contact]\npenalty = -1\n").find("penalty"), std::string::npos);
+  EXPECT_NE(error_of(head + "[output]\nsections = [\"Z\"]\n").find("no path point named"), std::string::npos);
+  EXPECT_NE(error_of(head + "[tool]\ngcode = \"missing.nc\"\n").find("not found"), std::string::npos);
+  const std::string spin = error_of(head + "[tool]\nspin = 1e9\n");
+  EXPECT_NE(spin.find("spin"), std::string::npos) << spin;
+  EXPECT_NE(spin.find("rev/min"), std::string::npos) << spin;
+}
+
+// [solver] divergence_after reaches the forming scene (the solver's 3 when absent) and an
+// out-of-range value names the key.
+TEST(FormingScene, ReaderTakesDivergenceAfter) {
+  std::ifstream in(src("experiments/aa3003o/scenes/indent.toml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string rel = "\"../../../materials/";
+  ASSERT_NE(text.find(rel), std::string::npos);
+  text.replace(text.find(rel), rel.size(), "\"" + src("materials/"));
+  const fs::path f = fs::temp_directory_path() / ("spifit_forming_div_" + std::to_string(::getpid()) + ".toml");
+  auto with = [&](const std::string& line) {
+    std::string t = text;
+    t.replace(t.find("[solver]\n"), 9, "[solver]\n" + line);
+    std::ofstream(f) << t;
+    return f.string();
+  };
+  EXPECT_EQ(read_forming_scene(with("")).divergence_after, 3);
+  EXPECT_EQ(read_forming_scene(with("divergence_after = 7\n")).divergence_after, 7);
+  try {
+    read_forming_scene(with("divergence_after = 2000\n"));
+    ADD_FAILURE() << "no error for divergence_after = 2000";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.key(), "solver.divergence_after") << e.what();
+    EXPECT_EQ(e.value(), "2000") << e.what();
+  }
+  fs::remove(f);
+}
+
+// Tool spin acts through friction only: without friction the indent is bitwise the same;
+// with friction (mu = 0.1) on the symmetric indent the circumferential tractions cancel in the
+// resultant (no side force) and the spin's slip keeps the points sliding, which changes Fz.
+TEST(FormingScene, ToolSpinActsThroughFrictionOnly) {
+  FormingScene base = read_forming_scene(src("experiments/aa3003o/scenes/indent.toml"));
+  base.travel_per_increment = 0.1;
+  FormingScene spun = base;
+  spun.spin = 600.0;  // rev/min: 63 rad/s, 6.3 rad per 0.1 mm increment at 2 mm/s
+  const auto a = run(base, "nospin"), b = run(spun, "spin");
+  EXPECT_EQ(a["final_force"][2].get<double>(), b["final_force"][2].get<double>());
+  base.contact.friction = spun.contact.friction = 0.1;
+  const auto c = run(base, "nospin_mu"), d = run(spun, "spin_mu");
+  const double fz = d["final_force"][2].get<double>();
+  std::printf("indent Fz: %.4f N (mu 0), %.4f N (mu 0.1), %.4f N (mu 0.1, 600 rev/min); side force with spin (%.2e, %.2e) N\n",
+              a["final_force"][2].get<double>(), c["final_force"][2].get<double>(), fz, d["final_force"][0].get<double>(),
+              d["final_force"][1].get<double>());
+  EXPECT_LT(std::hypot(d["final_force"][0].get<double>(), d["final_force"][1].get<double>()), 1e-6 * fz);
+  EXPECT_GT(std::abs(fz - c["final_force"][2].get<double>()), 1e-4 * fz);
+}
+
+}  // namespace
+}  // namespace spifit::scene
