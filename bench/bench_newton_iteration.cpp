@@ -1,4 +1,4 @@
-// Time of ONE Newton iteration of the implicit shell solver (issue 4; goal for 50x50: < 0.2 s
+// Time of ONE Newton iteration of the implicit shell solver (goal for 50x50: < 0.2 s
 // on 2 cores): assembly of the reduced residual + tangent, numeric sparse factorisation
 // (symbolic analysis already done) and solve, on a PLASTIC plate. Setup, outside the timed
 // loop: square plate 100 x 100 mm, t = 1.2 mm, 5 thickness points, AA3003-O card C.3 + C.4,

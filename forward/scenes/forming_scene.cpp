@@ -23,7 +23,7 @@ namespace {
 
 using json = nlohmann::json;
 
-// Thesis defaults per kind (SPEC §3.1, §3.2).
+// Thesis defaults per kind.
 void set_defaults(FormingScene& s) {
   if (s.kind == "indent") {
     // §7.1: 10 x 10 mm, t = 0.3, edges clamped, R = 5 at the centre, 2 mm after 1 s from first touch.
@@ -250,7 +250,7 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   pvd = std::make_unique<io::PvdCollection>(out.path() / "vtu", "sheet");
   pvd->write_step(0.0, mesh, model.vtu_frame());
 
-  // Force BY the sheet ON the tool (SPEC §1); a half model carries half of Fx and Fz.
+  // Force BY the sheet ON the tool; a half model carries half of Fx and Fz.
   const double mirror = scene.half ? 2.0 : 1.0;
   io::CsvTable force({"time [s]", "tool_x [mm]", "tool_y [mm]", "tool_z [mm]", "Fx [N]", "Fy [N]", "Fz [N]",
                       "max_penetration [mm]", "iterations"});
