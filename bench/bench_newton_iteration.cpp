@@ -65,7 +65,7 @@ Case& plastic_plate(int n) {
   if (!summary.converged) c->error = "pre-solve did not converge: " + summary.message;
   else if (plastic == 0) c->error = "plate not plastic at the timed state";
   std::printf("# %dx%d: pre-solve to lambda %.2f: %d increments, %d iterations, %d plastic layer points\n",
-              n, n, kLambda, summary.increments, summary.iterations, plastic);
+              n, n, kLambda, summary.counters.increments, summary.counters.iterations, plastic);
   return *c;
 }
 

@@ -202,17 +202,18 @@ void finish_summary(json& j, const solver::NewtonSummary& r, int increments, con
                     const model::ShellModel& model, const ForceLog& log) {
   const Eigen::Vector3d f = model.tool_force();
   j["increments"] = increments;
-  j["newton_iterations"] = r.iterations;
-  j["cutbacks"] = r.cutbacks;
-  j["factorisations"] = r.factorisations;
-  j["factorisations_by_solver"] = {{"cholmod", r.cholmod_factorisations}, {"umfpack", r.umfpack_factorisations}};
-  j["profile_seconds"] = {{"elements", r.element_seconds}, {"assembly", r.scatter_seconds}, {"linear_solver", r.linear_seconds}};
+  const solver::NewtonCounters& c = r.counters;
+  j["newton_iterations"] = c.iterations;
+  j["cutbacks"] = c.cutbacks;
+  j["factorisations"] = c.factorisations();
+  j["factorisations_by_solver"] = {{"cholmod", c.cholmod_factorisations}, {"umfpack", c.umfpack_factorisations}};
+  j["profile_seconds"] = {{"elements", c.element_seconds}, {"assembly", c.scatter_seconds}, {"linear_solver", c.linear_seconds}};
   // Increments accepted with viscous forces (NewtonOptions::stabilisation): their dissipated
   // work against the tool's work, and the largest out-of-balance one was accepted with.
-  j["stabilised"] = {{"increments", r.stabilised_increments},
-                     {"viscous_work", r.viscous_work},
-                     {"viscous_work_over_tool_work", model.energies().external_work > 0.0 ? r.viscous_work / model.energies().external_work : 0.0},
-                     {"max_viscous_force", r.max_viscous_force}};
+  j["stabilised"] = {{"increments", c.stabilised_increments},
+                     {"viscous_work", c.viscous_work},
+                     {"viscous_work_over_tool_work", model.energies().external_work > 0.0 ? c.viscous_work / model.energies().external_work : 0.0},
+                     {"max_viscous_force", c.max_viscous_force}};
   j["travel_reached"] = map.travel(r.lambda);
   j["contours_total"] = track.contours().size();
   j["contours_completed"] = track.completed(map.travel(r.lambda));

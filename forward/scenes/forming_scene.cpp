@@ -308,14 +308,13 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   for (const auto& [target, name] : stops) {
     if (target <= lambda + 1e-12) continue;
     const solver::NewtonSummary r = solver.solve(lambda, target, on_increment);
-    total.iterations += r.iterations;
-    total.cutbacks += r.cutbacks;
-    total.factorisations = r.factorisations;  // the solver counts over its life
-    total.cholmod_factorisations = r.cholmod_factorisations;  // cumulative, as the timers
-    total.umfpack_factorisations = r.umfpack_factorisations;
-    total.element_seconds = r.element_seconds;  // cumulative over the solver's life
-    total.scatter_seconds = r.scatter_seconds;
-    total.linear_seconds = r.linear_seconds;
+    total.counters.iterations += r.counters.iterations;
+    total.counters.cutbacks += r.counters.cutbacks;
+    total.counters.cholmod_factorisations = r.counters.cholmod_factorisations;  // the solver counts over its life
+    total.counters.umfpack_factorisations = r.counters.umfpack_factorisations;
+    total.counters.element_seconds = r.counters.element_seconds;  // cumulative over the solver's life
+    total.counters.scatter_seconds = r.counters.scatter_seconds;
+    total.counters.linear_seconds = r.counters.linear_seconds;
     if (!r.converged) {
       total.converged = false;
       total.message = r.message;
@@ -332,11 +331,12 @@ FormingReport run_forming_scene(const FormingScene& scene, const io::OutputDirec
   const Eigen::Vector3d f = model.tool_force();
   s["wall_seconds"] = wall;
   s["increments"] = increments;
-  s["newton_iterations"] = total.iterations;
-  s["cutbacks"] = total.cutbacks;
-  s["profile_seconds"] = {{"elements", total.element_seconds}, {"assembly", total.scatter_seconds}, {"linear_solver", total.linear_seconds}};
-  s["factorisations"] = total.factorisations;
-  s["factorisations_by_solver"] = {{"cholmod", total.cholmod_factorisations}, {"umfpack", total.umfpack_factorisations}};
+  s["newton_iterations"] = total.counters.iterations;
+  s["cutbacks"] = total.counters.cutbacks;
+  s["profile_seconds"] = {{"elements", total.counters.element_seconds}, {"assembly", total.counters.scatter_seconds},
+                          {"linear_solver", total.counters.linear_seconds}};
+  s["factorisations"] = total.counters.factorisations();
+  s["factorisations_by_solver"] = {{"cholmod", total.counters.cholmod_factorisations}, {"umfpack", total.counters.umfpack_factorisations}};
   s["travel_reached"] = total.lambda * L;
   s["peak_force"] = {peak.x(), peak.y(), peak.z()};
   s["final_force"] = {mirror * f.x(), scene.half ? 0.0 : f.y(), mirror * f.z()};

@@ -174,10 +174,11 @@ ShellSceneReport run_shell_benchmark_scene(const ShellBenchmarkScene& scene, con
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   s["wall_seconds"] = wall;
-  s["solver"] = {{"increments", r.increments}, {"iterations", r.iterations}, {"cutbacks", r.cutbacks},
-                 {"factorisations", r.factorisations}, {"symbolic_analyses", r.symbolic_analyses},
+  const solver::NewtonCounters& c = r.counters;
+  s["solver"] = {{"increments", c.increments}, {"iterations", c.iterations}, {"cutbacks", c.cutbacks},
+                 {"factorisations", c.factorisations()}, {"symbolic_analyses", c.symbolic_analyses},
                  {"linear_solver", solver::to_string(o.linear_solver)},
-                 {"cholmod_factorisations", r.cholmod_factorisations}, {"umfpack_factorisations", r.umfpack_factorisations},
+                 {"cholmod_factorisations", c.cholmod_factorisations}, {"umfpack_factorisations", c.umfpack_factorisations},
                  {"load_factor", r.lambda}};
   s["message"] = r.message;
   if (!r.converged) {

@@ -343,20 +343,21 @@ NewtonState NewtonSolver::state() const {
   s.ceiling = ceiling_;
   s.last_increment = last_increment_;
   s.last_increment_size = last_dl_;
-  s.increments = increments_;
-  s.iterations = iterations_;
-  s.cutbacks = cutbacks_;
-  s.cholmod_factorisations = prior_cholmod_ + (cholmod_ ? cholmod_->numeric_factorisations() : 0);
-  s.umfpack_factorisations = prior_umfpack_ + (umfpack_ ? umfpack_->numeric_factorisations() : 0);
-  s.symbolic_analyses = prior_symbolic_ + (cholmod_ ? cholmod_->symbolic_analyses() : 0) + (umfpack_ ? umfpack_->symbolic_analyses() : 0);
-  s.element_seconds = element_seconds_;
-  s.scatter_seconds = scatter_seconds_;
-  s.linear_seconds = linear_seconds_;
   s.damping = damping_;
   s.stabilised_left = stabilised_left_;
-  s.stabilised_increments = stabilised_;
-  s.viscous_work = viscous_work_;
-  s.max_viscous_force = max_viscous_force_;
+  NewtonCounters& c = s.counters;
+  c.increments = increments_;
+  c.iterations = iterations_;
+  c.cutbacks = cutbacks_;
+  c.cholmod_factorisations = prior_cholmod_ + (cholmod_ ? cholmod_->numeric_factorisations() : 0);
+  c.umfpack_factorisations = prior_umfpack_ + (umfpack_ ? umfpack_->numeric_factorisations() : 0);
+  c.symbolic_analyses = prior_symbolic_ + (cholmod_ ? cholmod_->symbolic_analyses() : 0) + (umfpack_ ? umfpack_->symbolic_analyses() : 0);
+  c.element_seconds = element_seconds_;
+  c.scatter_seconds = scatter_seconds_;
+  c.linear_seconds = linear_seconds_;
+  c.stabilised_increments = stabilised_;
+  c.viscous_work = viscous_work_;
+  c.max_viscous_force = max_viscous_force_;
   return s;
 }
 
@@ -369,20 +370,21 @@ void NewtonSolver::set_state(const NewtonState& s) {
   ceiling_ = s.ceiling;
   last_increment_ = s.last_increment;
   last_dl_ = s.last_increment_size;
-  increments_ = s.increments;
-  iterations_ = s.iterations;
-  cutbacks_ = s.cutbacks;
-  prior_cholmod_ = s.cholmod_factorisations - (cholmod_ ? cholmod_->numeric_factorisations() : 0);
-  prior_umfpack_ = s.umfpack_factorisations - (umfpack_ ? umfpack_->numeric_factorisations() : 0);
-  prior_symbolic_ = s.symbolic_analyses - (cholmod_ ? cholmod_->symbolic_analyses() : 0) - (umfpack_ ? umfpack_->symbolic_analyses() : 0);
-  element_seconds_ = s.element_seconds;
-  scatter_seconds_ = s.scatter_seconds;
-  linear_seconds_ = s.linear_seconds;
   damping_ = s.damping;
   stabilised_left_ = s.stabilised_left;
-  stabilised_ = s.stabilised_increments;
-  viscous_work_ = s.viscous_work;
-  max_viscous_force_ = s.max_viscous_force;
+  const NewtonCounters& c = s.counters;
+  increments_ = c.increments;
+  iterations_ = c.iterations;
+  cutbacks_ = c.cutbacks;
+  prior_cholmod_ = c.cholmod_factorisations - (cholmod_ ? cholmod_->numeric_factorisations() : 0);
+  prior_umfpack_ = c.umfpack_factorisations - (umfpack_ ? umfpack_->numeric_factorisations() : 0);
+  prior_symbolic_ = c.symbolic_analyses - (cholmod_ ? cholmod_->symbolic_analyses() : 0) - (umfpack_ ? umfpack_->symbolic_analyses() : 0);
+  element_seconds_ = c.element_seconds;
+  scatter_seconds_ = c.scatter_seconds;
+  linear_seconds_ = c.linear_seconds;
+  stabilised_ = c.stabilised_increments;
+  viscous_work_ = c.viscous_work;
+  max_viscous_force_ = c.max_viscous_force;
 }
 
 NewtonSummary NewtonSolver::resume(double lambda_end, const IncrementCallback& callback) {
@@ -464,21 +466,9 @@ NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& call
   }
   const NewtonState st = state();
   summary.lambda = st.lambda;
-  summary.increments = st.increments;
-  summary.iterations = st.iterations;
-  summary.cutbacks = st.cutbacks;
   summary.converged = summary.lambda >= lambda_end - 1e-12;
   if (summary.converged && summary.message.empty()) summary.message = "converged";
-  summary.cholmod_factorisations = st.cholmod_factorisations;
-  summary.umfpack_factorisations = st.umfpack_factorisations;
-  summary.factorisations = summary.cholmod_factorisations + summary.umfpack_factorisations;
-  summary.element_seconds = st.element_seconds;
-  summary.scatter_seconds = st.scatter_seconds;
-  summary.linear_seconds = st.linear_seconds;
-  summary.symbolic_analyses = st.symbolic_analyses;
-  summary.stabilised_increments = st.stabilised_increments;
-  summary.viscous_work = st.viscous_work;
-  summary.max_viscous_force = st.max_viscous_force;
+  summary.counters = st.counters;
   return summary;
 }
 

@@ -7,6 +7,7 @@
 // reused).
 #include "forward/solver/dof_constraints.hpp"
 #include "forward/solver/linear_solver.hpp"
+#include "forward/solver/newton_counters.hpp"
 #include "forward/solver/newton_state.hpp"
 #include "forward/solver/nonlinear_problem.hpp"
 
@@ -97,19 +98,11 @@ struct IncrementReport {
 struct NewtonSummary {
   bool converged = false;
   double lambda = 0.0;            // last converged load factor
-  int increments = 0, iterations = 0, cutbacks = 0;
-  int factorisations = 0, symbolic_analyses = 0;
-  int cholmod_factorisations = 0, umfpack_factorisations = 0;
   std::string message;            // why it stopped (failure: where and why)
-  // Stabilised increments (NewtonOptions::stabilisation): how many, the viscous work they
-  // dissipated in all, and the largest relative out-of-balance one of them was accepted with.
-  int stabilised_increments = 0;
-  double viscous_work = 0.0, max_viscous_force = 0.0;
+  // Totals of the run (a resumed run's include its state's; factorisations and profile
+  // seconds count over the solver's life).
+  NewtonCounters counters;
   std::vector<IncrementReport> history;
-  // Wall seconds by phase (profiling aid for the benchmarks; not part of any result).
-  double element_seconds = 0.0;   // parallel element evaluation
-  double scatter_seconds = 0.0;   // serial assembly in element order
-  double linear_seconds = 0.0;    // factorisation + solve
 };
 
 class NewtonSolver {

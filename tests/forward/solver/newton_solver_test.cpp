@@ -110,7 +110,7 @@ CantileverRun cantilever_tip(bool estimate) {
   const NewtonSummary summary = s.solve();
   EXPECT_TRUE(summary.converged) << summary.message;
   CantileverRun run;
-  run.iterations = summary.iterations;
+  run.iterations = summary.counters.iterations;
   std::printf("estimate %d:", estimate);
   for (const IncrementReport& r : summary.history) {
     std::printf(" [%d its, last residual %.2e%s]", r.iterations, r.residual_norms.back(), r.estimated ? ", estimated" : "");
@@ -154,7 +154,7 @@ DivergenceRun cantilever_in_one_increment(double load, int divergence_after) {
   DivergenceRun run{s.solve(), cant.tip()};
   const NewtonSummary& m = run.summary;
   std::printf("divergence_after %d, load %g: %d increments, %d iterations, %d cut-backs, tip %.9f; first converged increment:",
-              divergence_after, load, m.increments, m.iterations, m.cutbacks, run.tip);
+              divergence_after, load, m.counters.increments, m.counters.iterations, m.counters.cutbacks, run.tip);
   if (!m.history.empty())
     for (double v : m.history.front().residual_norms) std::printf(" %.2e", v);
   std::printf("\n");
@@ -178,9 +178,9 @@ TEST(NewtonSolver, WaitingLongerBeforeTheDivergenceCutBackSavesIncrements) {
   };
   EXPECT_EQ(late(three.summary), 0);
   EXPECT_GT(late(ten.summary), 0);
-  EXPECT_LT(ten.summary.cutbacks, three.summary.cutbacks);
-  EXPECT_LT(ten.summary.increments, three.summary.increments);
-  EXPECT_LT(ten.summary.iterations, three.summary.iterations);
+  EXPECT_LT(ten.summary.counters.cutbacks, three.summary.counters.cutbacks);
+  EXPECT_LT(ten.summary.counters.increments, three.summary.counters.increments);
+  EXPECT_LT(ten.summary.counters.iterations, three.summary.counters.iterations);
   // The same end state up to the increments' own effect: the section's thickness, updated at
   // every commit, makes an elastic shell's end state depend on its increments (7e-4 here).
   EXPECT_NEAR(ten.tip, three.tip, 2e-3 * std::abs(three.tip));
@@ -358,7 +358,7 @@ TEST(NewtonSolver, StopsAtTheMinimumIncrementAndSaysWhereAndWhy) {
   // Where: the node and component of the largest Newton correction (ShellModel::describe_dof).
   EXPECT_NE(r.message.find("largest correction"), std::string::npos) << r.message;
   EXPECT_NE(r.message.find(" at node "), std::string::npos) << r.message;
-  EXPECT_GT(r.cutbacks, 0);
+  EXPECT_GT(r.counters.cutbacks, 0);
 }
 
 // One unknown u with internal force k u + eps sign(u - u_step): a step of height 2 eps in the
@@ -456,7 +456,7 @@ TEST(NewtonSolver, IncrementsEndAtEveryBreakpointAndKeepTheirSize) {
   std::vector<double> ends;
   const NewtonSummary r = s.solve(1.0, [&](const IncrementReport& ir) { return ends.push_back(ir.lambda), true; });
   ASSERT_TRUE(r.converged) << r.message;
-  ASSERT_EQ(r.cutbacks, 0);  // the sequence below assumes no cut-back
+  ASSERT_EQ(r.counters.cutbacks, 0);  // the sequence below assumes no cut-back
   const std::vector<double> expected = {0.1, 0.3, 0.5499, 0.7, 0.95, 1.0};
   ASSERT_EQ(ends.size(), expected.size());
   for (std::size_t i = 0; i < ends.size(); ++i) EXPECT_NEAR(ends[i], expected[i], 1e-12) << "increment " << i + 1;
@@ -526,7 +526,7 @@ TEST(NewtonSolver, StabilisedIncrementsCrossASnapThrough) {
     EXPECT_FALSE(r.converged);
     EXPECT_NE(r.message.find("minimum increment"), std::string::npos) << r.message;
     EXPECT_NEAR(r.lambda * load, 0.2010, 2e-3);  // stops at the limit point
-    EXPECT_EQ(r.stabilised_increments, 0);
+    EXPECT_EQ(r.counters.stabilised_increments, 0);
   }
   o.stabilisation = 1e-3;  // c |diag K| = 0.25 against a soft stiffness down to -0.125
   SnapThrough p(stiff, load);
@@ -544,13 +544,14 @@ TEST(NewtonSolver, StabilisedIncrementsCrossASnapThrough) {
   ASSERT_TRUE(r.converged) << r.message;
   const double m = 0.5 * (p.u()(0) + p.u()(1)), sf = 0.5 * (p.u()(0) - p.u()(1));
   std::printf("stabilised: %d increments, viscous work %.4g, largest viscous force %.3g; s = %.10f, m = %.3e; %d increments, %d iterations\n",
-              r.stabilised_increments, r.viscous_work, r.max_viscous_force, sf, m, r.increments, r.iterations);
+              r.counters.stabilised_increments, r.counters.viscous_work, r.counters.max_viscous_force, sf, m, r.counters.increments,
+              r.counters.iterations);
   EXPECT_GT(sf, 1.206);  // on the far branch
   EXPECT_NEAR(SnapThrough::force(sf), load, 1e-9);
   EXPECT_NEAR(stiff * m, load, 1e-9);
   EXPECT_EQ(r.history.back().damping, 0.0);  // the last increment is a plain one
-  ASSERT_EQ(static_cast<int>(stabilised.size()), r.stabilised_increments);
-  ASSERT_GE(r.stabilised_increments, 1);
+  ASSERT_EQ(static_cast<int>(stabilised.size()), r.counters.stabilised_increments);
+  ASSERT_GE(r.counters.stabilised_increments, 1);
   double work = 0.0, largest = 0.0;
   for (const IncrementReport& ir : stabilised) {
     EXPECT_EQ(ir.damping, 1e-3);
@@ -558,8 +559,8 @@ TEST(NewtonSolver, StabilisedIncrementsCrossASnapThrough) {
     work += ir.viscous_work;
     largest = std::max(largest, ir.viscous_force);
   }
-  EXPECT_DOUBLE_EQ(r.viscous_work, work);
-  EXPECT_EQ(r.max_viscous_force, largest);
+  EXPECT_DOUBLE_EQ(r.counters.viscous_work, work);
+  EXPECT_EQ(r.counters.max_viscous_force, largest);
   // Resumed inside the stabilised window (the state carries the damping and the increments it
   // still lasts, through a checkpoint archive), the run ends bitwise on the same state with the
   // same totals.
@@ -571,9 +572,9 @@ TEST(NewtonSolver, StabilisedIncrementsCrossASnapThrough) {
   const NewtonState loaded = load_newton_state(rd);
   EXPECT_EQ(loaded.damping, inside.damping);
   EXPECT_EQ(loaded.stabilised_left, inside.stabilised_left);
-  EXPECT_EQ(loaded.stabilised_increments, inside.stabilised_increments);
-  EXPECT_EQ(loaded.viscous_work, inside.viscous_work);
-  EXPECT_EQ(loaded.max_viscous_force, inside.max_viscous_force);
+  EXPECT_EQ(loaded.counters.stabilised_increments, inside.counters.stabilised_increments);
+  EXPECT_EQ(loaded.counters.viscous_work, inside.counters.viscous_work);
+  EXPECT_EQ(loaded.counters.max_viscous_force, inside.counters.max_viscous_force);
   SnapThrough q(stiff, load);
   q.restore(u_inside);
   NewtonSolver t(q, c, o);
@@ -582,9 +583,9 @@ TEST(NewtonSolver, StabilisedIncrementsCrossASnapThrough) {
   ASSERT_TRUE(rr.converged) << rr.message;
   EXPECT_EQ(q.u()(0), p.u()(0));
   EXPECT_EQ(q.u()(1), p.u()(1));
-  EXPECT_EQ(rr.iterations, r.iterations);
-  EXPECT_EQ(rr.stabilised_increments, r.stabilised_increments);
-  EXPECT_EQ(rr.viscous_work, r.viscous_work);
+  EXPECT_EQ(rr.counters.iterations, r.counters.iterations);
+  EXPECT_EQ(rr.counters.stabilised_increments, r.counters.stabilised_increments);
+  EXPECT_EQ(rr.counters.viscous_work, r.counters.viscous_work);
 }
 
 TEST(NewtonOptions, ValidateNamesTheProblem) {
