@@ -1,6 +1,6 @@
 #pragma once
 // Automatic increment control (docs/numerics-shell.md, "Global solution", Increment control):
-// where the next increment ends (lambda_end, breakpoints), growth after easy
+// where the next increment ends (lambda_end, breakpoints, restarts), growth after easy
 // increments under a ceiling that a failure lowers, cut-back after a failure, and the minimum
 // increment where a failure ends the run.
 #include "forward/solver/newton_options.hpp"
@@ -25,12 +25,14 @@ class IncrementControl {
   // At the start of a run (solve or resume): no failed attempt yet.
   void begin_run() { first_failed_ = 0.0; }
 
-  // Where the increment from the committed load factor ends: lambda + size, or lambda_end or the
-  // next breakpoint when it would reach past it or end less than 1e-3 of its size short of it.
+  // Where the increment from the committed load factor ends: lambda + size, or the end of the
+  // segment (lambda_end or the next restart) or the next breakpoint when it would reach past it
+  // or end less than 1e-3 of its size short of it.
   double next_end(double lambda_end) const;
   // A converged increment to lambda1 in `iterations` iterations: it is committed; the ceiling
-  // relaxes by 10 %, the size grows after an easy increment.
-  void converged(double lambda1, int iterations);
+  // relaxes by 10 %, the size grows after an easy increment, and both start afresh after a
+  // restart point.
+  void converged(double lambda1, int iterations, double lambda_end);
   // A failed attempt to lambda1: the ceiling drops below its size.
   void failed(double lambda1);
   // After a failure above the minimum size: the size x min(cutback, suggested_scale).
@@ -43,6 +45,10 @@ class IncrementControl {
   const NewtonOptions& options_;
   double lambda_ = 0.0, size_ = 0.0, ceiling_ = 0.0;
   double first_failed_ = 0.0;  // size of the first failed attempt since the last converged increment
+  // lambda_end, or the first restart after lambda before it.
+  double segment_end(double lambda, double lambda_end) const;
+  // The size an increment from lambda starts with (linear: the whole segment).
+  double first_size(double lambda, double lambda_end) const;
 };
 
 }  // namespace spifit::solver

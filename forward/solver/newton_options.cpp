@@ -30,6 +30,7 @@ std::string NewtonOptions::validate() const {
     return "max_stabilisation must be 0 or >= stabilisation";
   if (stabilised_increments < 1) return "stabilised_increments must be >= 1";
   if (!finite_and_increasing(breakpoints)) return "breakpoints must be finite and increasing";
+  if (!finite_and_increasing(restarts)) return "restarts must be finite and increasing";
   return {};
 }
 

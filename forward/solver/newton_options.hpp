@@ -53,6 +53,12 @@ struct NewtonOptions {
   // one, or ending less than 1e-3 of its size short of it, ends there instead, as at
   // lambda_end; the increment size is not reduced by this.
   std::vector<double> breakpoints{};
+  // Load factors (finite, increasing) where increments end as at a breakpoint and after which
+  // the increment size and the growth ceiling start afresh, as at the start of a solve: one
+  // solve(l0, l_end) with restarts {l1, l2, ...} takes the increments of solve(l0, l1),
+  // solve(l1, l2), ... one after the other. The stabilisation in force carries over (a new
+  // solve would drop it).
+  std::vector<double> restarts{};
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
   int element_chunk = 2048;    // elements evaluated in parallel before scattering
   // Linear analysis: one increment, one solve from the reference state, no equilibrium

@@ -350,7 +350,7 @@ NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& call
     ++counters_.increments;
     // The next size is chosen before the callback, so that state() there is where the run
     // continues from.
-    control_.converged(lambda1, report.iterations);
+    control_.converged(lambda1, report.iterations, lambda_end);
     summary.history.push_back(report);
     if (callback && !callback(report)) {
       summary.message = "stopped by the caller at load factor " + std::to_string(control_.lambda());

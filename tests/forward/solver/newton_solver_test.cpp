@@ -309,6 +309,70 @@ TEST(NewtonSolver, IncrementsEndAtEveryBreakpointAndKeepTheirSize) {
   EXPECT_NE(bad.validate().find("breakpoints"), std::string::npos);
 }
 
+// The committed increments of a run: their end load factors and iterations, the cut-backs in
+// all, and every node's displacement at the end.
+struct SteppedRun {
+  std::vector<double> ends;
+  std::vector<int> iterations;
+  int cutbacks = 0;
+  std::vector<Eigen::Vector3d> u;
+};
+
+// The cantilever under a large tip load from 0 to 1 with stops at 0.3 and 0.55: one solve per
+// segment, or one solve with the stops as restarts, or as breakpoints.
+enum class Stops { solves, restarts, breakpoints };
+SteppedRun cantilever_with_stops(Stops how) {
+  Cantilever cant(false, 1000.0);
+  NewtonOptions o;
+  o.initial_increment = 0.2;
+  o.max_increment = 0.5;
+  o.max_iterations = 25;
+  const std::vector<double> stops = {0.3, 0.55};
+  if (how == Stops::restarts) o.restarts = stops;
+  if (how == Stops::breakpoints) o.breakpoints = stops;
+  NewtonSolver s(cant.model, cant.constraints, o);
+  SteppedRun run;
+  auto record = [&](const IncrementReport& ir) {
+    run.ends.push_back(ir.lambda);
+    run.iterations.push_back(ir.iterations);
+    return true;
+  };
+  double lambda = 0.0;
+  for (double end : how == Stops::solves ? std::vector<double>{0.3, 0.55, 1.0} : std::vector<double>{1.0}) {
+    const NewtonSummary r = s.solve(lambda, end, record);
+    EXPECT_TRUE(r.converged) << r.message;
+    run.cutbacks += r.counters.cutbacks;
+    lambda = end;
+  }
+  for (int n = 0; n < cant.model.num_nodes(); ++n) run.u.push_back(cant.model.displacement(n));
+  std::printf("stops as %s: %zu increments, %d cut-backs, tip %.12f; ends:", how == Stops::solves ? "solves" : how == Stops::restarts ? "restarts" : "breakpoints",
+              run.ends.size(), run.cutbacks, cant.tip());
+  for (std::size_t i = 0; i < run.ends.size(); ++i) std::printf(" %.6g (%d)", run.ends[i], run.iterations[i]);
+  std::printf("\n");
+  return run;
+}
+
+// A caller that stops at given load factors (the forming scenes stop at each named tool-path
+// point) may run one solve with them as restarts instead of one solve per segment: the same
+// increments, iterations and end state, bit for bit.
+TEST(NewtonSolver, RestartsTakeTheIncrementsOfSegmentBySegmentSolves) {
+  const SteppedRun solves = cantilever_with_stops(Stops::solves);
+  const SteppedRun restarts = cantilever_with_stops(Stops::restarts);
+  const SteppedRun breakpoints = cantilever_with_stops(Stops::breakpoints);
+  EXPECT_EQ(restarts.ends, solves.ends);  // bitwise
+  EXPECT_EQ(restarts.iterations, solves.iterations);
+  EXPECT_EQ(restarts.cutbacks, solves.cutbacks);
+  ASSERT_EQ(restarts.u.size(), solves.u.size());
+  for (std::size_t n = 0; n < solves.u.size(); ++n) EXPECT_EQ(restarts.u[n], solves.u[n]) << "node " << n;  // bitwise
+  // The run has cut-backs, and without the restart of the increment size at the stops (only
+  // breakpoints there) it takes other increments: the comparison above depends on the restarts.
+  EXPECT_GT(solves.cutbacks, 0);
+  EXPECT_NE(breakpoints.ends, solves.ends);
+  NewtonOptions bad;
+  bad.restarts = {0.5, 0.5};
+  EXPECT_NE(bad.validate().find("restarts"), std::string::npos);
+}
+
 TEST(NewtonOptions, ValidateNamesTheProblem) {
   NewtonOptions o;
   EXPECT_EQ(o.validate(), "");
