@@ -1,4 +1,4 @@
-// Time of ONE Newton iteration of the implicit shell solver (issue 4; goal for 50x50: < 0.2 s
+// Time of ONE Newton iteration of the implicit shell solver (goal for 50x50: < 0.2 s
 // on 2 cores): assembly of the reduced residual + tangent, numeric sparse factorisation
 // (symbolic analysis already done) and solve, on a PLASTIC plate. Setup, outside the timed
 // loop: square plate 100 x 100 mm, t = 1.2 mm, 5 thickness points, AA3003-O card C.3 + C.4,
@@ -65,7 +65,7 @@ Case& plastic_plate(int n) {
   if (!summary.converged) c->error = "pre-solve did not converge: " + summary.message;
   else if (plastic == 0) c->error = "plate not plastic at the timed state";
   std::printf("# %dx%d: pre-solve to lambda %.2f: %d increments, %d iterations, %d plastic layer points\n",
-              n, n, kLambda, summary.increments, summary.iterations, plastic);
+              n, n, kLambda, summary.counters.increments, summary.counters.iterations, plastic);
   return *c;
 }
 

@@ -14,13 +14,14 @@ void save_newton_state(io::BinaryWriter& w, const NewtonState& s) {
   w.f64(s.ceiling);
   w.vector(s.last_increment);
   w.f64(s.last_increment_size);
-  for (int n : {s.increments, s.iterations, s.cutbacks, s.cholmod_factorisations, s.umfpack_factorisations, s.symbolic_analyses})
+  const NewtonCounters& c = s.counters;
+  for (int n : {c.increments, c.iterations, c.cutbacks, c.cholmod_factorisations, c.umfpack_factorisations, c.symbolic_analyses})
     w.i64(n);
-  for (double v : {s.element_seconds, s.scatter_seconds, s.linear_seconds}) w.f64(v);
+  for (double v : {c.element_seconds, c.scatter_seconds, c.linear_seconds}) w.f64(v);
   w.section("stabilisation");
   w.f64(s.damping);
-  for (int n : {s.stabilised_left, s.stabilised_increments}) w.i64(n);
-  for (double v : {s.viscous_work, s.max_viscous_force}) w.f64(v);
+  for (int n : {s.stabilised_left, c.stabilised_increments}) w.i64(n);
+  for (double v : {c.viscous_work, c.max_viscous_force}) w.f64(v);
 }
 
 NewtonState load_newton_state(io::BinaryReader& r, bool with_stabilisation) {
@@ -31,25 +32,26 @@ NewtonState load_newton_state(io::BinaryReader& r, bool with_stabilisation) {
   s.ceiling = r.f64();
   s.last_increment = r.vector();
   s.last_increment_size = r.f64();
-  for (int* n : {&s.increments, &s.iterations, &s.cutbacks, &s.cholmod_factorisations, &s.umfpack_factorisations, &s.symbolic_analyses}) {
+  NewtonCounters& c = s.counters;
+  for (int* n : {&c.increments, &c.iterations, &c.cutbacks, &c.cholmod_factorisations, &c.umfpack_factorisations, &c.symbolic_analyses}) {
     const std::int64_t v = r.i64();
     if (v < 0 || v > 2'000'000'000) throw io::ArchiveError("invalid Newton counter " + std::to_string(v));
     *n = static_cast<int>(v);
   }
-  s.element_seconds = r.f64();
-  s.scatter_seconds = r.f64();
-  s.linear_seconds = r.f64();
+  c.element_seconds = r.f64();
+  c.scatter_seconds = r.f64();
+  c.linear_seconds = r.f64();
   if (with_stabilisation) {
     r.section("stabilisation");
     s.damping = r.f64();
-    for (int* n : {&s.stabilised_left, &s.stabilised_increments}) {
+    for (int* n : {&s.stabilised_left, &c.stabilised_increments}) {
       const std::int64_t v = r.i64();
       if (v < 0 || v > 2'000'000'000) throw io::ArchiveError("invalid stabilisation counter " + std::to_string(v));
       *n = static_cast<int>(v);
     }
-    s.viscous_work = r.f64();
-    s.max_viscous_force = r.f64();
-    if (!(s.damping >= 0.0 && std::isfinite(s.damping) && s.viscous_work >= 0.0 && s.max_viscous_force >= 0.0))
+    c.viscous_work = r.f64();
+    c.max_viscous_force = r.f64();
+    if (!(s.damping >= 0.0 && std::isfinite(s.damping) && c.viscous_work >= 0.0 && c.max_viscous_force >= 0.0))
       throw io::ArchiveError("invalid stabilisation state");
   }
   if (!(std::isfinite(s.lambda) && s.increment > 0.0 && s.ceiling > 0.0)) throw io::ArchiveError("invalid Newton stepping state");

@@ -3,6 +3,8 @@
 // problem's committed state, determines how a run continues (checkpoints and resume,
 // NewtonSolver::state / set_state / resume). Counters and profile times travel with it so
 // that the totals of a resumed run are those of an uninterrupted one.
+#include "forward/solver/newton_counters.hpp"
+
 #include <Eigen/Core>
 
 namespace spifit::io {
@@ -20,15 +22,11 @@ struct NewtonState {
   // predictor) and its load-factor size.
   Eigen::VectorXd last_increment;
   double last_increment_size = 0.0;
-  // Totals so far (NewtonSummary).
-  int increments = 0, iterations = 0, cutbacks = 0;
-  int cholmod_factorisations = 0, umfpack_factorisations = 0, symbolic_analyses = 0;
-  double element_seconds = 0.0, scatter_seconds = 0.0, linear_seconds = 0.0;
-  // Stabilisation (NewtonOptions::stabilisation): the damping factor in force (0: off), the
-  // converged increments it still lasts, and its totals.
+  // Stabilisation (NewtonOptions::stabilisation): the damping factor in force (0: off) and the
+  // converged increments it still lasts.
   double damping = 0.0;
-  int stabilised_left = 0, stabilised_increments = 0;
-  double viscous_work = 0.0, max_viscous_force = 0.0;
+  int stabilised_left = 0;
+  NewtonCounters counters;       // totals so far (NewtonSummary::counters)
 };
 
 // Bit-exact (forward/io/binary_archive.hpp); load throws io::ArchiveError. Archives written

@@ -259,7 +259,7 @@ double drag_ratio(double mu) {
   const Eigen::Vector3d f = sheet.tool_force();
   const ContactSummary cs = sheet.contact_summary();
   std::printf("mu %.2f: tool force (%.5f, %.5f, %.5f) N, Fx/Fz %.5f, penetration %.5f mm, %d points, %d iterations\n", mu, f.x(),
-              f.y(), f.z(), f.x() / f.z(), cs.max_penetration, cs.active_points, r.iterations);
+              f.y(), f.z(), f.x() / f.z(), cs.max_penetration, cs.active_points, r.counters.iterations);
   EXPECT_GT(f.z(), 0.0);  // the sheet pushes the tool up
   return -f.x() / f.z();  // the sheet drags the tool back (-x) while it moves +x
 }

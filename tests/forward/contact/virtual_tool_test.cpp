@@ -187,7 +187,7 @@ Indent indent(double angle_deg, const std::vector<double>& copies) {
   solver::NewtonSolver s(model, c, no);
   const auto r = s.solve();
   EXPECT_TRUE(r.converged) << r.message;
-  return {model.tool_force(), -model.contact_summary_of_tool(0).force_on_sheet, r.iterations};
+  return {model.tool_force(), -model.contact_summary_of_tool(0).force_on_sheet, r.counters.iterations};
 }
 
 TEST(VirtualTool, PieIndentedOnItsEdgeGivesTheToolForceOfTheFullDisc) {

@@ -104,9 +104,10 @@ TEST(ShellModelState, ResumedRunFollowsTheUninterruptedOneBitForBit) {
     return true;
   });
   ASSERT_TRUE(ra.converged) << ra.message;
-  ASSERT_GT(ra.increments, 12);
-  std::printf("uninterrupted: %d increments, %d iterations, %d cut-backs, factorisations %d CHOLMOD + %d UMFPACK\n", ra.increments,
-              ra.iterations, ra.cutbacks, ra.cholmod_factorisations, ra.umfpack_factorisations);
+  ASSERT_GT(ra.counters.increments, 12);
+  std::printf("uninterrupted: %d increments, %d iterations, %d cut-backs, factorisations %d CHOLMOD + %d UMFPACK\n",
+              ra.counters.increments, ra.counters.iterations, ra.counters.cutbacks, ra.counters.cholmod_factorisations,
+              ra.counters.umfpack_factorisations);
   EXPECT_GT(whole.model->contact_summary_of_tool(1).active_points + whole.model->contact_summary_of_tool(2).active_points, 0)
       << "the copies should touch the sheet";
 
@@ -118,7 +119,7 @@ TEST(ShellModelState, ResumedRunFollowsTheUninterruptedOneBitForBit) {
     return r.index < stop;
   });
   ASSERT_FALSE(rb.converged);
-  ASSERT_EQ(rb.increments, stop);
+  ASSERT_EQ(rb.counters.increments, stop);
   const std::string bytes = save(first);
   std::printf("model + Newton state of %d elements (3 layers, 3 tools): %zu bytes\n", first.model->num_elements(), bytes.size());
 
@@ -131,10 +132,10 @@ TEST(ShellModelState, ResumedRunFollowsTheUninterruptedOneBitForBit) {
     return true;
   });
   ASSERT_TRUE(rc.converged) << rc.message;
-  EXPECT_EQ(rc.increments, ra.increments);
-  EXPECT_EQ(rc.iterations, ra.iterations);
-  EXPECT_EQ(rc.cutbacks, ra.cutbacks);
-  EXPECT_EQ(rc.factorisations, ra.factorisations);
+  EXPECT_EQ(rc.counters.increments, ra.counters.increments);
+  EXPECT_EQ(rc.counters.iterations, ra.counters.iterations);
+  EXPECT_EQ(rc.counters.cutbacks, ra.counters.cutbacks);
+  EXPECT_EQ(rc.counters.factorisations(), ra.counters.factorisations());
   EXPECT_EQ(b.iterations, a.iterations);
   EXPECT_EQ(b.force_bits, a.force_bits);
   EXPECT_EQ(second.fingerprint(), whole.fingerprint());

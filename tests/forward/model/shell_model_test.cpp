@@ -99,7 +99,7 @@ TEST(ShellModel, CholmodAndUmfpackAgreeOnASymmetricProblem) {
     solver::NewtonSolver s(*b.model, *b.constraints, b.solver);
     const auto r = s.solve();
     ASSERT_TRUE(r.converged) << r.message;
-    EXPECT_EQ(r.symbolic_analyses, 1);
+    EXPECT_EQ(r.counters.symbolic_analyses, 1);
     values[k] = b.value(*b.model);
   }
   EXPECT_NEAR(values[1] / values[0], 1.0, 1e-9);
@@ -111,8 +111,8 @@ TEST(ShellModel, AutomaticLinearSolverFollowsTheTangentsSymmetry) {
   solver::NewtonSolver s(*b.model, *b.constraints, b.solver);
   const auto r = s.solve();
   ASSERT_TRUE(r.converged) << r.message;
-  EXPECT_GE(r.cholmod_factorisations, 1);
-  EXPECT_EQ(r.umfpack_factorisations, 0);
+  EXPECT_GE(r.counters.cholmod_factorisations, 1);
+  EXPECT_EQ(r.counters.umfpack_factorisations, 0);
   // Hill + Armstrong-Frederick (card C.7): the consistent tangent is non-symmetric once
   // plastic, and UMFPACK takes over.
   const mesh::Mesh m = mesh::strip(10.0, 1.0, 10, 1);
@@ -131,7 +131,7 @@ TEST(ShellModel, AutomaticLinearSolverFollowsTheTangentsSymmetry) {
   solver::NewtonSolver s2(model, c, o);
   const auto r2 = s2.solve();
   ASSERT_TRUE(r2.converged) << r2.message;
-  EXPECT_GT(r2.umfpack_factorisations, 0);
+  EXPECT_GT(r2.counters.umfpack_factorisations, 0);
 }
 
 // Nodal rotation frames (use_nodal_rotation_frames): which nodes get one, the frame itself,

@@ -27,7 +27,7 @@ Outcome run(const std::string& name, int mesh = 0, int points = 0,
   o.error = o.value / o.reference - 1.0;
   if (b.details) o.details = b.details(*b.model);
   std::printf("%-26s mesh %3d, %2d points: value %.6g, reference %.6g, error %+.3f %% (%d increments, %d iterations) %s\n",
-              name.c_str(), mesh, points, o.value, o.reference, 100.0 * o.error, o.summary.increments, o.summary.iterations,
+              name.c_str(), mesh, points, o.value, o.reference, 100.0 * o.error, o.summary.counters.increments, o.summary.counters.iterations,
               o.details.is_null() ? "" : o.details.dump().c_str());
   return o;
 }
@@ -82,7 +82,7 @@ TEST(ShellBenchmarks, RotationFramesSolveTheSameStepsWithFewerUnknowns) {
       const solver::NewtonSummary summary = solver.solve();
       ASSERT_TRUE(summary.converged) << name << (framed ? " framed: " : ": ") << summary.message;
       value[framed] = b.value(*b.model);
-      iterations[framed] = summary.iterations;
+      iterations[framed] = summary.counters.iterations;
       unknowns[framed] = b.constraints->num_reduced();
     }
     std::printf("%-26s six unknowns: %.12g (%d unknowns, %d iterations); frames: %.12g (%d, %d)\n", name, value[0], unknowns[0],
