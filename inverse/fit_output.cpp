@@ -2,105 +2,149 @@
 
 #include "forward/io/csv_writer.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 namespace spifit::inverse {
 
-using nlohmann::json;
-
 namespace {
-json number_or_null(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
-}  // namespace
 
-json fit_result_json(const FitProblem& fp, const FitResult& r) {
-  const auto& ps = *fp.parameters;
+// The name of free parameter k.
+const std::string& free_name(const ParameterSet& ps, int k) { return ps.specs()[ps.free_indices()[k]].name; }
+
+std::vector<FitRecord::Parameter> record_parameters(const ParameterSet& ps, const FitResult& r) {
   const auto& u = r.uncertainty;
-  json j;
-  j["spifit_version"] = SPIFIT_VERSION;
-  j["fit"] = fp.name;
-  j["fit_file"] = fp.file;
-  j["algorithm"] = r.algorithm;
-  j["seed"] = r.seed;
-  j["termination"] = r.termination;
-  j["usable"] = r.usable;
-  j["iterations"] = r.iterations;
-  j["forward_runs"] = r.forward_runs;
-  j["wall_seconds"] = r.wall_seconds;
-  j["cost_definition"] = "1/2 sum of squared conditioned residuals sqrt(w) (simulated - measured) / scale";
-  j["cost_initial"] = number_or_null(r.cost_initial);
-  j["cost_final"] = number_or_null(r.cost_final);
-  j["cost_history"] = r.cost_history;
-  json params = json::object();
+  std::vector<FitRecord::Parameter> out;
   for (int k = 0; k < ps.num_free(); ++k) {
     const auto& s = ps.specs()[ps.free_indices()[k]];
-    json pj{{"value", r.values[k]}, {"initial", r.initial[k]}, {"lower", s.lower}, {"upper", s.upper}, {"log_scale", s.log_scale}};
+    FitRecord::Parameter p;
+    p.name = s.name;
+    p.value = r.values[k];
+    p.initial = r.initial[k];
+    p.lower = s.lower;
+    p.upper = s.upper;
+    p.log_scale = s.log_scale;
     if (k < static_cast<int>(u.std_error.size())) {
-      pj["std_error"] = number_or_null(u.std_error[k]);
-      pj["ci95"] = {number_or_null(u.ci95_lower[k]), number_or_null(u.ci95_upper[k])};
-      pj["identifiable"] = bool(u.identifiable[k]);
+      p.has_uncertainty = true;
+      p.std_error = u.std_error[k];
+      p.ci95_lower = u.ci95_lower[k];
+      p.ci95_upper = u.ci95_upper[k];
+      p.identifiable = u.identifiable[k];
     }
-    params[s.name] = pj;
+    out.push_back(p);
   }
-  j["parameters"] = params;
-  json fixed = json::object();
-  for (const auto& s : ps.specs()) if (s.fixed) fixed[s.name] = s.initial;
-  if (ps.normalise_hill()) fixed["hill.H"] = "2 - hill.G";
-  j["fixed"] = fixed;
-  std::vector<std::string> names;
-  for (int idx : ps.free_indices()) names.push_back(ps.specs()[idx].name);
-  json corr = json::array();
-  for (int a = 0; a < u.correlation.rows(); ++a) {
-    json row = json::array();
-    for (int b = 0; b < u.correlation.cols(); ++b) row.push_back(number_or_null(u.correlation(a, b)));
-    corr.push_back(row);
-  }
-  j["correlation"] = {{"names", names}, {"matrix", corr}};
-  j["uncertainty"] = {{"residuals", u.m}, {"parameters", u.p}, {"dof", u.dof}, {"sse", u.sse},
-                      {"sigma2", number_or_null(u.sigma2)}, {"t_quantile_975", number_or_null(u.t_quantile)},
-                      {"singular_values_scaled", u.singular_values}, {"condition_number", number_or_null(u.condition_number)}};
-  json warnings = fp.notes;
-  for (const auto& w : u.warnings) warnings.push_back(w);
-  j["warnings"] = warnings;
-  j["conflicts"] = r.conflicts;
-  json pe = json::array();
+  return out;
+}
+
+FitRecord::UncertaintySummary record_uncertainty(const Uncertainty& u) {
+  FitRecord::UncertaintySummary s;
+  s.residuals = u.m;
+  s.parameters = u.p;
+  s.dof = u.dof;
+  s.sse = u.sse;
+  s.sigma2 = u.sigma2;
+  s.t_quantile_975 = u.t_quantile;
+  s.singular_values_scaled = u.singular_values;
+  s.condition_number = u.condition_number;
+  return s;
+}
+
+std::vector<FitRecord::Alone> record_per_experiment(const ParameterSet& ps, const FitResult& r) {
+  std::vector<FitRecord::Alone> out;
   for (const auto& a : r.per_experiment) {
-    json alone = json::object();
+    FitRecord::Alone alone;
+    alone.experiment = a.experiment;
+    alone.usable = a.usable;
     for (int k = 0; k < ps.num_free() && k < static_cast<int>(a.values.size()); ++k) {
-      alone[ps.specs()[ps.free_indices()[k]].name] = {{"value", a.values[k]},
-                                                       {"ci95", {number_or_null(a.ci95_lower[k]), number_or_null(a.ci95_upper[k])}},
-                                                       {"identifiable", bool(a.identifiable[k])}};
+      alone.parameters.push_back({free_name(ps, k), a.values[k], a.ci95_lower[k], a.ci95_upper[k], bool(a.identifiable[k])});
     }
-    pe.push_back({{"experiment", a.experiment}, {"usable", a.usable}, {"parameters", alone}});
+    out.push_back(alone);
   }
-  j["per_experiment"] = pe;
-  if (r.multistart.starts > 1) {
-    const auto& ms = r.multistart;
-    json sols = json::array();
-    for (const auto& s : ms.solutions) sols.push_back({{"usable", s.usable}, {"cost", number_or_null(s.cost)}, {"start", s.start}, {"values", s.values}});
-    json spread = json::object();
-    for (int k = 0; k < ps.num_free() && k < static_cast<int>(ms.spread_min.size()); ++k) {
-      spread[ps.specs()[ps.free_indices()[k]].name] = {{"min", ms.spread_min[k]}, {"max", ms.spread_max[k]}};
-    }
-    j["multistart"] = {{"starts", ms.starts}, {"best_start", ms.best_start}, {"starts_at_best_cost", ms.at_best},
-                       {"spread_at_best_cost", spread}, {"solutions", sols}};
+  return out;
+}
+
+FitRecord::MultiStart record_multistart(const ParameterSet& ps, const FitResult::MultiStart& ms) {
+  FitRecord::MultiStart out;
+  out.starts = ms.starts;
+  out.best_start = ms.best_start;
+  out.starts_at_best_cost = ms.at_best;
+  for (int k = 0; k < ps.num_free() && k < static_cast<int>(ms.spread_min.size()); ++k) {
+    out.spread_at_best_cost.push_back({free_name(ps, k), ms.spread_min[k], ms.spread_max[k]});
   }
-  json ex = json::array();
+  for (const auto& s : ms.solutions) out.solutions.push_back({s.usable, s.cost, s.start, s.values});
+  return out;
+}
+
+std::vector<FitRecord::Experiment> record_experiments(const FitProblem& fp, const FitResult& r) {
+  std::vector<FitRecord::Experiment> out;
   for (std::size_t i = 0; i < r.experiment_costs.size(); ++i) {
-    const auto& e = r.experiment_costs[i];
-    const auto c = fp.experiments[i]->axes();
-    ex.push_back({{"name", e.name}, {"kind", e.kind}, {"points", e.points}, {"cost", e.cost}, {"rms", e.rms},
-                  {"scale", fp.experiments[i]->scale()}, {"noise_given", fp.experiments[i]->noise_given()}, {"weight", fp.experiments[i]->weight()},
-                  {"x", c.x_name}, {"y", c.y_name}, {"x_unit", c.x_unit}, {"y_unit", c.y_unit},
-                  {"data_file", "experiments/" + e.name + ".csv"}});
+    const auto& c = r.experiment_costs[i];
+    const auto& e = *fp.experiments[i];
+    const auto axes = e.axes();
+    FitRecord::Experiment x;
+    x.name = c.name;
+    x.kind = c.kind;
+    x.points = c.points;
+    x.cost = c.cost;
+    x.rms = c.rms;
+    x.scale = e.scale();
+    x.noise_given = e.noise_given();
+    x.weight = e.weight();
+    x.x = axes.x_name;
+    x.y = axes.y_name;
+    x.x_unit = axes.x_unit;
+    x.y_unit = axes.y_unit;
+    x.data_file = "experiments/" + c.name + ".csv";
+    out.push_back(x);
   }
-  j["experiments"] = ex;
-  return j;
+  return out;
+}
+
+}  // namespace
+
+FitRecord fit_record(const FitProblem& fp, const FitResult& r) {
+  const auto& ps = *fp.parameters;
+  FitRecord rec;
+  rec.spifit_version = SPIFIT_VERSION;
+  rec.name = fp.name;
+  rec.fit_file = fp.file;
+  rec.algorithm = r.algorithm;
+  rec.seed = r.seed;
+  rec.termination = r.termination;
+  rec.usable = r.usable;
+  rec.iterations = r.iterations;
+  rec.forward_runs = r.forward_runs;
+  rec.wall_seconds = r.wall_seconds;
+  rec.cost_definition = "1/2 sum of squared conditioned residuals sqrt(w) (simulated - measured) / scale";
+  rec.cost_initial = r.cost_initial;
+  rec.cost_final = r.cost_final;
+  rec.cost_history = r.cost_history;
+  rec.parameters = record_parameters(ps, r);
+  for (const auto& s : ps.specs()) {
+    if (s.fixed) rec.fixed.push_back({s.name, s.initial, ""});
+  }
+  if (ps.normalise_hill()) rec.fixed.push_back({"hill.H", FitRecord::kNaN, "2 - hill.G"});
+  for (int k = 0; k < ps.num_free(); ++k) rec.correlation.names.push_back(free_name(ps, k));
+  const auto& corr = r.uncertainty.correlation;
+  for (int a = 0; a < corr.rows(); ++a) {
+    rec.correlation.matrix.emplace_back();
+    for (int b = 0; b < corr.cols(); ++b) rec.correlation.matrix.back().push_back(corr(a, b));
+  }
+  rec.uncertainty = record_uncertainty(r.uncertainty);
+  rec.warnings = fp.notes;
+  rec.warnings.insert(rec.warnings.end(), r.uncertainty.warnings.begin(), r.uncertainty.warnings.end());
+  rec.conflicts = r.conflicts;
+  rec.per_experiment = record_per_experiment(ps, r);
+  if (r.multistart.starts > 1) rec.multistart = record_multistart(ps, r.multistart);
+  rec.experiments = record_experiments(fp, r);
+  return rec;
 }
 
 void write_fit_outputs(const FitProblem& fp, const FitResult& r, const io::OutputDirectory& out) {
-  out.write_file("fit.json", fit_result_json(fp, r).dump(2) + "\n");
+  out.write_file("fit.json", to_json(fit_record(fp, r)).dump(2) + "\n");
   out.write_file("card.toml", "# Fitted by spifit " SPIFIT_VERSION " from " + fp.file + "\n" + material::material_card_to_toml(r.card));
   std::filesystem::create_directories(out.path() / "experiments");
   const auto start = fp.parameters->apply(fp.parameters->initial_internal().data());

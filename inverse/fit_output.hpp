@@ -4,14 +4,14 @@
 // terse CLI table. Schema in docs/file-formats.md.
 #include "forward/io/output_directory.hpp"
 #include "inverse/ceres_fit.hpp"
-
-#include <nlohmann/json.hpp>
+#include "inverse/fit_record.hpp"
 
 #include <string>
 
 namespace spifit::inverse {
 
-nlohmann::json fit_result_json(const FitProblem& problem, const FitResult& result);
+// What fit.json holds for this fit (to_json(fit_record(...)) is the file's object).
+FitRecord fit_record(const FitProblem& problem, const FitResult& result);
 void write_fit_outputs(const FitProblem& problem, const FitResult& result, const io::OutputDirectory& out);
 std::string fit_table(const FitProblem& problem, const FitResult& result);
 

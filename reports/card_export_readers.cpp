@@ -181,12 +181,11 @@ struct DynaKeyword {
   std::vector<std::pair<int, std::string>> cards;  // (line, text), comments removed
 };
 
-}  // namespace
-
-LsDynaMaterial read_lsdyna_material(const std::string& deck) {
+// The keywords of a deck with their data cards; long_format: *KEYWORD LONG=Y.
+std::vector<DynaKeyword> dyna_keywords(const std::string& deck, bool* long_format) {
   const auto lines = lines_of(deck);
   std::vector<DynaKeyword> kws;
-  bool long_format = false;
+  *long_format = false;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const std::string& l = lines[i];
     if (l.empty() || l[0] == '$') continue;
@@ -195,7 +194,7 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
       if (name.rfind("KEYWORD", 0) == 0) {
         std::string opts = name.substr(7);
         opts.erase(std::remove(opts.begin(), opts.end(), ' '), opts.end());
-        long_format = opts.find("LONG=Y") != std::string::npos;
+        *long_format = opts.find("LONG=Y") != std::string::npos;
       }
       const bool plus = !name.empty() && name.back() == '+';
       if (plus) name.pop_back();
@@ -204,28 +203,18 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
     }
     if (!kws.empty()) kws.back().cards.emplace_back(static_cast<int>(i) + 1, l);
   }
-  const std::size_t w = long_format ? 20 : 10;
-  auto get = [&](const std::vector<std::string>& f, std::size_t i, int line) {
-    return i < f.size() ? to_double(f[i], line) : 0.0;
-  };
-  LsDynaMaterial m;
-  const DynaKeyword* mat = nullptr;
-  for (const auto& k : kws) {
-    if (k.name.rfind("MAT_HILL_3R", 0) == 0 || k.name.rfind("MAT_122", 0) == 0 || k.name.rfind("MAT_ELASTIC", 0) == 0 ||
-        k.name.rfind("MAT_001", 0) == 0) {
-      mat = &k;
-      break;
-    }
-  }
-  if (!mat) throw std::runtime_error("no *MAT_HILL_3R or *MAT_ELASTIC keyword");
-  const bool title = mat->name.size() > 6 && mat->name.substr(mat->name.size() - 6) == "_TITLE";
-  m.keyword = title ? mat->name.substr(0, mat->name.size() - 6) : mat->name;
-  if (m.keyword == "MAT_122") m.keyword = "MAT_HILL_3R";
-  if (m.keyword == "MAT_001") m.keyword = "MAT_ELASTIC";
+  return kws;
+}
+
+double field_value(const std::vector<std::string>& f, std::size_t i, int line) { return i < f.size() ? to_double(f[i], line) : 0.0; }
+
+// The cards of *MAT_HILL_3R / *MAT_ELASTIC (fields of width w).
+void read_dyna_material_cards(const DynaKeyword& mat, bool title, std::size_t w, LsDynaMaterial& m) {
+  const auto& get = field_value;
   std::size_t c = 0;
   auto card = [&](std::size_t n) -> const std::pair<int, std::string>& {
-    if (mat->cards.size() <= n) throw std::runtime_error("*" + mat->name + ": card " + std::to_string(n + 1) + " missing");
-    return mat->cards[n];
+    if (mat.cards.size() <= n) throw std::runtime_error("*" + mat.name + ": card " + std::to_string(n + 1) + " missing");
+    return mat.cards[n];
   };
   if (title) m.title = trim(card(c++).second);
   {
@@ -239,7 +228,7 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
     m.p1 = get(f, 5, ln);
     m.p2 = get(f, 6, ln);
   }
-  if (m.keyword == "MAT_ELASTIC") return m;
+  if (m.keyword == "MAT_ELASTIC") return;
   {
     const auto& [ln, text] = card(c++);
     const auto f = dyna_fields(text, w);
@@ -249,23 +238,27 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
     m.lcid = static_cast<int>(get(f, 3, ln));
     m.e0 = get(f, 4, ln);
   }
-  if (c < mat->cards.size()) {
+  if (c < mat.cards.size()) {
     const auto& [ln, text] = card(c++);
     m.aopt = get(dyna_fields(text, w), 0, ln);
   }
-  if (c < mat->cards.size()) {
+  if (c < mat.cards.size()) {
     const auto& [ln, text] = card(c++);
     const auto f = dyna_fields(text, w);
     m.a = {get(f, 3, ln), get(f, 4, ln), get(f, 5, ln)};
   }
-  if (c < mat->cards.size()) {
+  if (c < mat.cards.size()) {
     const auto& [ln, text] = card(c++);
     const auto f = dyna_fields(text, w);
     m.v = {get(f, 0, ln), get(f, 1, ln), get(f, 2, ln)};
     m.d = {get(f, 3, ln), get(f, 4, ln), get(f, 5, ln)};
     m.beta = get(f, 6, ln);
   }
-  if (m.lcid == 0) return m;
+}
+
+// The points of *DEFINE_CURVE m.lcid, scaled and offset; false when there is no such curve.
+bool read_dyna_curve(const std::vector<DynaKeyword>& kws, std::size_t w, LsDynaMaterial& m) {
+  const auto& get = field_value;
   for (const auto& k : kws) {
     if (k.name.rfind("DEFINE_CURVE", 0) != 0) continue;
     const bool ctitle = k.name.find("_TITLE") != std::string::npos;
@@ -283,8 +276,34 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
       const auto pf = dyna_fields(pt, 20);  // point cards are 2 x 20 characters in both formats
       m.curve.push_back({sfa * (get(pf, 0, pl) + offa), sfo * (get(pf, 1, pl) + offo)});
     }
-    return m;
+    return true;
   }
+  return false;
+}
+
+}  // namespace
+
+LsDynaMaterial read_lsdyna_material(const std::string& deck) {
+  bool long_format = false;
+  const auto kws = dyna_keywords(deck, &long_format);
+  const std::size_t w = long_format ? 20 : 10;
+  LsDynaMaterial m;
+  const DynaKeyword* mat = nullptr;
+  for (const auto& k : kws) {
+    if (k.name.rfind("MAT_HILL_3R", 0) == 0 || k.name.rfind("MAT_122", 0) == 0 || k.name.rfind("MAT_ELASTIC", 0) == 0 ||
+        k.name.rfind("MAT_001", 0) == 0) {
+      mat = &k;
+      break;
+    }
+  }
+  if (!mat) throw std::runtime_error("no *MAT_HILL_3R or *MAT_ELASTIC keyword");
+  const bool title = mat->name.size() > 6 && mat->name.substr(mat->name.size() - 6) == "_TITLE";
+  m.keyword = title ? mat->name.substr(0, mat->name.size() - 6) : mat->name;
+  if (m.keyword == "MAT_122") m.keyword = "MAT_HILL_3R";
+  if (m.keyword == "MAT_001") m.keyword = "MAT_ELASTIC";
+  read_dyna_material_cards(*mat, title, w, m);
+  if (m.keyword == "MAT_ELASTIC" || m.lcid == 0) return m;
+  if (read_dyna_curve(kws, w, m)) return m;
   throw std::runtime_error("*DEFINE_CURVE " + std::to_string(m.lcid) + " (LCID of *" + mat->name + ") not found");
 }
 

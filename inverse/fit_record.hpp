@@ -1,0 +1,115 @@
+#pragma once
+// The record of one fit as `spifit fit` stores it in DIR/fit.json (docs/file-formats.md): plain
+// data, written by inverse/fit_output.cpp and read by the reports. Numbers that fit.json holds
+// as null (not finite, not computed) are NaN here; keys that a fit.json of an older spifit may
+// lack are std::optional where the readers tell "absent" from a value.
+#include <nlohmann/json_fwd.hpp>
+
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct FitRecord {
+  static constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+  // parameters.NAME: a free parameter.
+  struct Parameter {
+    std::string name;
+    double value = kNaN, initial = kNaN, lower = kNaN, upper = kNaN;
+    bool log_scale = false;
+    // std_error, ci95 and identifiable are present together (absent when the fit computed no
+    // uncertainty).
+    bool has_uncertainty = false;
+    double std_error = kNaN, ci95_lower = kNaN, ci95_upper = kNaN;
+    bool identifiable = true;
+  };
+  // fixed.NAME: a number, or a text such as "2 - hill.G" (then expression is not empty).
+  struct FixedParameter {
+    std::string name;
+    double value = kNaN;
+    std::string expression;
+  };
+  // correlation: names (the free parameters in fit order) and the matrix.
+  struct Correlation {
+    std::vector<std::string> names;
+    std::vector<std::vector<double>> matrix;
+  };
+  // uncertainty: sizes and the scaled singular values (uncertainty.hpp).
+  struct UncertaintySummary {
+    std::optional<int> residuals, parameters, dof;
+    double sse = kNaN, sigma2 = kNaN, t_quantile_975 = kNaN, condition_number = kNaN;
+    std::vector<double> singular_values_scaled;
+  };
+  // per_experiment[i]: the fit of one experiment alone (conflicts.hpp).
+  struct AloneValue {
+    std::string parameter;
+    double value = kNaN, ci95_lower = kNaN, ci95_upper = kNaN;
+    bool identifiable = true;
+  };
+  struct Alone {
+    std::string experiment;
+    bool usable = true;
+    std::vector<AloneValue> parameters;
+  };
+  // multistart (present in fit.json only when starts > 1).
+  struct Spread {
+    std::string parameter;
+    double min = kNaN, max = kNaN;
+  };
+  struct StartSolution {
+    bool usable = false;
+    double cost = kNaN;
+    std::vector<double> start, values;
+  };
+  struct MultiStart {
+    int starts = 1, best_start = -1, starts_at_best_cost = -1;  // -1: not given
+    std::vector<Spread> spread_at_best_cost;
+    std::vector<StartSolution> solutions;
+  };
+  // experiments[i]: costs, the divisor of the residuals and the axes of the data file.
+  struct Experiment {
+    std::string name, kind;  // kind: "curve" or "scalar"
+    int points = 0;
+    double cost = kNaN, rms = kNaN;
+    double scale = kNaN;              // divisor of the residuals (noise, or range / |value|)
+    std::optional<bool> noise_given;  // whether scale is a stated noise
+    double weight = 1.0;
+    std::string x, y, x_unit, y_unit;
+    std::string data_file;  // relative to DIR, e.g. experiments/NAME.csv
+  };
+
+  std::string spifit_version;
+  std::string name;  // key "fit"
+  std::string fit_file, algorithm, termination, cost_definition;
+  std::optional<unsigned> seed;
+  std::optional<bool> usable;
+  std::optional<int> iterations;
+  std::optional<long> forward_runs;
+  double wall_seconds = kNaN, cost_initial = kNaN, cost_final = kNaN;
+  std::vector<double> cost_history;
+  std::vector<Parameter> parameters;  // in fit order (correlation.names first)
+  std::vector<FixedParameter> fixed;
+  Correlation correlation;
+  UncertaintySummary uncertainty;
+  std::vector<std::string> warnings, conflicts;
+  std::vector<Alone> per_experiment;
+  MultiStart multistart;
+  std::vector<Experiment> experiments;
+};
+
+// fit.json's object. Its dump(2) plus a newline is the file `spifit fit` writes.
+nlohmann::json to_json(const FitRecord& record);
+
+// Reads a fit.json object. Throws io::InputError naming `file` and the key path (for example
+// parameters.swift.K.value) when a key has the wrong type or `parameters` / `experiments` are
+// missing. Keys it does not know are ignored; multistart is read leniently.
+FitRecord fit_record_from_json(const nlohmann::json& j, const std::string& file);
+
+// Reads and parses the file; io::InputError when it cannot be read or is not valid JSON.
+FitRecord read_fit_record(const std::filesystem::path& file);
+
+}  // namespace spifit::inverse

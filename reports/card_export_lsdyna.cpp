@@ -1,0 +1,111 @@
+// The LS-DYNA deck (*MAT_HILL_3R + *DEFINE_CURVE, long format): docs/exports.md "LS-DYNA".
+#include "reports/card_export.hpp"
+#include "reports/card_export_text.hpp"
+
+#include <cmath>
+#include <sstream>
+
+namespace spifit::reports {
+
+using material::KinematicLaw;
+using material::MaterialCard;
+using namespace deck;
+
+namespace {
+
+constexpr int kW = 20;  // LS-DYNA long-format field width
+
+std::string field(double v) {
+  std::string s = format_real(v, kW - 1);  // keep one blank between fields
+  return std::string(static_cast<std::size_t>(kW) - s.size(), ' ') + s;
+}
+std::string field(int v) {
+  std::string s = std::to_string(v);
+  return std::string(static_cast<std::size_t>(kW) - s.size(), ' ') + s;
+}
+std::string blank() { return std::string(kW, ' '); }
+std::string labels(std::initializer_list<const char*> names) {
+  std::string s = "$#";
+  bool first = true;
+  for (const char* n : names) {
+    std::string f(n);
+    const std::size_t w = first ? kW - 2 : kW;
+    if (f.size() >= w) f = f.substr(0, w - 1);
+    s += std::string(w - f.size(), ' ') + f;
+    first = false;
+  }
+  return s + "\n";
+}
+
+std::vector<std::string> lsdyna_notes(const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o) {
+  const auto& p = card.params;
+  auto n = common_notes(card, law, o, "*DEFINE_CURVE, effective plastic strain vs yield stress",
+                        "LS-DYNA extrapolates the last segment of the curve");
+  n.push_back("keyword file in long format (*KEYWORD LONG=Y, 20-character fields) so that every number keeps 14 "
+              "significant digits; include it as a separate file.");
+  if (!p.plastic) {
+    n.push_back("*MAT_ELASTIC (MAT_001).");
+    return n;
+  }
+  n.push_back("*MAT_HILL_3R (MAT_122): Hill 1948 for shell elements (plane stress), given by r-values r00 = H/G, r45 = "
+              "(2N - F - G)/(2(F + G)), r90 = H/F (thesis eq. C.2) and the RD hardening curve: exact for the in-plane "
+              "Hill coefficients; the card's out-of-plane L, M are not used.");
+  n.push_back("material axes: AOPT = 2 with a = global x = RD and d = global y = TD (spifit's convention); change A/D "
+              "(or AOPT) to match the mesh.");
+  if (law.kinematic == KinematicLaw::none) {
+    n.push_back("analytic alternative: HR = 2 (sigma = P1 (E0 + ebar)^P2) with P1 = K h^-(1+n) = " +
+                num(p.K * std::pow(law.h, -(1.0 + p.n))) + ", P2 = n = " + num(p.n) + ", E0 = h eps0 = " +
+                num(law.h * p.eps0) + " gives the same curve; the deck uses HR = 3 (load curve).");
+  } else {
+    const double xmax = law.gamma > 0 ? law.C / law.gamma : rd_back_stress(law.C, law.gamma, o.max_plastic_strain);
+    n.push_back("APPROXIMATION: *MAT_122 has no kinematic hardening. The curve is the card's monotonic RD tension "
+                "(isotropic size + RD back-stress (C/gamma)(1 - exp(-gamma ebar)), C = " + num(law.C) +
+                " MPa, gamma = " + num(law.gamma) + "), i.e. isotropic hardening equivalent in monotonic RD tension" +
+                (law.kinematic_exact ? "" : " (itself the nearest Ziegler-form fit of Hill + Armstrong-Frederick)") +
+                "; there is no Bauschinger effect: after a reversal the reverse yield stress is too high by 2 X_RD "
+                "(up to " + fixed(2.0 * xmax, 1) + " MPa), a difference that decays over a reverse strain of a few "
+                "1/gamma.");
+  }
+  return n;
+}
+
+}  // namespace
+
+std::string export_lsdyna(const MaterialCard& card, std::vector<std::string>* notes_out, const ExportOptions& o) {
+  const ExportedLaw law = exported_law(card, o);
+  const auto notes = lsdyna_notes(card, law, o);
+  append(notes_out, notes);
+  const auto& p = card.params;
+  std::ostringstream os;
+  write_header(os, "$ ", "LS-DYNA (keyword, units mm-t-s-N-MPa)", card, notes, 76);
+  os << "*KEYWORD LONG=Y\n";
+  if (!law.plastic) {
+    os << "*MAT_ELASTIC_TITLE\n" << deck_material_name(card) << "\n";
+    os << labels({"MID", "RO", "E", "PR"});
+    os << field(o.lsdyna_material_id) << field(card.density) << field(p.E) << field(p.nu) << "\n";
+    os << "*END\n";
+    return os.str();
+  }
+  os << "*MAT_HILL_3R_TITLE\n" << deck_material_name(card) << "\n";
+  os << labels({"MID", "RO", "E", "PR", "HR", "P1", "P2"});
+  os << field(o.lsdyna_material_id) << field(card.density) << field(p.E) << field(p.nu) << field(3.0) << field(0.0)
+     << field(0.0) << "\n";
+  os << labels({"R00", "R45", "R90", "LCID", "E0"});
+  os << field(law.lankford.r0) << field(law.lankford.r45) << field(law.lankford.r90) << field(o.lsdyna_curve_id)
+     << field(0.0) << "\n";
+  os << labels({"AOPT"});
+  os << field(2.0) << "\n";
+  os << labels({"", "", "", "A1", "A2", "A3"});
+  os << blank() << blank() << blank() << field(1.0) << field(0.0) << field(0.0) << "\n";
+  os << labels({"V1", "V2", "V3", "D1", "D2", "D3", "BETA"});
+  os << field(0.0) << field(0.0) << field(0.0) << field(0.0) << field(1.0) << field(0.0) << field(0.0) << "\n";
+  os << "*DEFINE_CURVE_TITLE\n" << deck_material_name(card) << " RD yield stress vs effective plastic strain\n";
+  os << labels({"LCID", "SIDR", "SFA", "SFO", "OFFA", "OFFO", "DATTYP"});
+  os << field(o.lsdyna_curve_id) << field(0) << field(1.0) << field(1.0) << field(0.0) << field(0.0) << field(0) << "\n";
+  os << labels({"A1 (ebar)", "O1 (MPa)"});
+  for (std::size_t i = 0; i < law.strain.size(); ++i) os << field(law.strain[i]) << field(law.monotonic[i]) << "\n";
+  os << "*END\n";
+  return os.str();
+}
+
+}  // namespace spifit::reports

@@ -1,0 +1,26 @@
+#pragma once
+// The fit report as a Document (report_document.hpp): warnings, summary, parameters,
+// experiments, curves, convergence, correlation, singular values and files, in the order
+// docs/reports.md lists them.
+#include "inverse/fit_record.hpp"
+#include "reports/experiment_data.hpp"
+#include "reports/fit_plots.hpp"
+#include "reports/fit_verdict.hpp"
+#include "reports/report_document.hpp"
+
+#include <vector>
+
+namespace spifit::reports {
+
+// Everything the report shows; the per-experiment vectors follow record.experiments.
+struct FitReportContent {
+  inverse::FitRecord record;
+  std::vector<ExperimentData> data;
+  FitVerdict verdict;
+  FitPlots plots;
+  bool plots_written = false;  // any image under plots/ (the Files section names the folder)
+};
+
+Document fit_report_document(const FitReportContent& content);
+
+}  // namespace spifit::reports
