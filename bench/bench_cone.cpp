@@ -1,4 +1,4 @@
-// Wall time of the bundled cone scenes (issue 6 speed goals on 2 cores: cone70 fine mesh,
+// Wall time of the bundled cone scenes (speed goals on 2 cores: cone70 fine mesh,
 // 60 contours < 10 min; vwall on the 45-degree pie, 5 stages < 1 h; thesis: 101 h for vwall).
 // Each benchmark runs the scene file as `spifit run` would (outputs to a temporary directory,
 // removed afterwards) and prints the median wall time, Newton iterations, increments, cut-backs,
@@ -16,7 +16,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
-#include "forward/scenes/cone/cone_scene.hpp"
+#include "forward/scenes/cone/cone_run.hpp"
 #include "inverse/measurement.hpp"
 
 #include <benchmark/benchmark.h>
@@ -74,9 +74,9 @@ LastContour last_contour(const std::filesystem::path& csv) {
 void cone_scene(benchmark::State& state, const Case& c) {
   const scene::ConeScene s = scene::read_cone_scene(std::string(SPIFIT_SOURCE_DIR) + "/" + c.file);
   LastContour lc;
-  const bench::SceneRuns runs = bench::run_scene_repeatedly(state, c.name, [&](const io::OutputDirectory& out) {
+  const bench::SceneRuns runs = bench::run_scene_repeatedly(state, c.name, [&](const scene::RunFiles& out) {
     auto report = scene::run_cone_scene(s, out);
-    lc = last_contour(out.path() / "contours.csv");  // before the directory is removed
+    lc = last_contour(out.directory()->path() / "contours.csv");  // before the directory is removed
     return report;
   });
   if (runs.walls.empty()) return;

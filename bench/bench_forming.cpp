@@ -1,4 +1,4 @@
-// Wall time of the bundled FE forming scenes (issue 5 speed goals on 2 cores: indent < 1 s,
+// Wall time of the bundled FE forming scenes (speed goals on 2 cores: indent < 1 s,
 // indent_line < 2 s, line half model < 10 s, full model < 30 s). Each benchmark runs the scene
 // file as `spifit run` would (outputs to a temporary directory, removed afterwards) and reports
 // the median wall time of its repetitions, the Newton iterations and increments, where the time
@@ -10,7 +10,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
-#include "forward/scenes/forming/forming_scene.hpp"
+#include "forward/scenes/forming/forming_run.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>
@@ -42,7 +42,7 @@ const Case kCases[] = {
 
 void forming_scene(benchmark::State& state, const Case& c) {
   const scene::FormingScene s = scene::read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/" + c.file);
-  const bench::SceneRuns runs = bench::run_scene_repeatedly(state, c.name, [&](const io::OutputDirectory& out) { return scene::run_forming_scene(s, out); });
+  const bench::SceneRuns runs = bench::run_scene_repeatedly(state, c.name, [&](const scene::RunFiles& out) { return scene::run_forming_scene(s, out); });
   if (runs.walls.empty()) return;
   const nlohmann::json& last = runs.last;
   const std::size_t k = runs.walls.size();

@@ -3,6 +3,7 @@
 // iteration into a temporary output directory (removed afterwards) and collect the wall times
 // from its summary.json. A failed run stops the benchmark with the run's message.
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/common/run_files.hpp"
 
 #include <benchmark/benchmark.h>
 #include <nlohmann/json.hpp>
@@ -24,20 +25,20 @@ struct SceneRuns {
   }
 };
 
-// run(out) returns the scene's report (fields ok and summary).
+// run(files) returns the scene's typed result (a scene::SceneResult).
 template <typename Run>
 SceneRuns run_scene_repeatedly(benchmark::State& state, const std::string& name, Run run) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("spifit_bench_" + name + "_" + std::to_string(::getpid()));
   SceneRuns r;
   for (auto _ : state) {
     const auto out = io::OutputDirectory::prepare(dir.string(), true);
-    const auto rep = run(out);
-    if (!rep.ok) {
-      state.SkipWithError(("run failed: " + rep.summary.value("message", std::string("?"))).c_str());
+    const auto rep = run(scene::RunFiles(out));
+    if (!rep.ok()) {
+      state.SkipWithError(("run failed: " + rep.message).c_str());
       break;
     }
-    r.walls.push_back(rep.summary["wall_seconds"].template get<double>());
-    r.last = rep.summary;
+    r.walls.push_back(rep.wall_seconds);
+    r.last = rep.to_json();
   }
   std::filesystem::remove_all(dir);
   std::sort(r.walls.begin(), r.walls.end());

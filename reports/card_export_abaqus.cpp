@@ -2,7 +2,7 @@
 #include "reports/card_export.hpp"
 #include "reports/card_export_text.hpp"
 
-#include "forward/scenes/material_point_test.hpp"
+#include "forward/scenes/material_point/material_point_run.hpp"
 
 #include <algorithm>
 #include <cmath>

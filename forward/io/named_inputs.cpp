@@ -38,7 +38,7 @@ std::string InputInfo::check(double v) const {
   if (type == InputType::boolean) return v == 0.0 || v == 1.0 ? std::string() : std::string("takes true (1) or false (0)");
   if (type == InputType::integer && v != std::floor(v)) return "takes integer values";
   if (!range.contains(v)) {
-    const std::string t = range.text();
+    const std::string t = range.text() + (unit.empty() ? "" : " " + unit);
     return t[0] == '[' || t[0] == '(' ? "must lie in " + t : "must be " + t;
   }
   return {};

@@ -1,5 +1,7 @@
 #include "forward/model/rotation_frames.hpp"
 
+#include <Eigen/Geometry>
+
 #include <stdexcept>
 
 namespace spifit::model {

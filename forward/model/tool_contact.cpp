@@ -167,4 +167,9 @@ void ToolContact::load_state(io::BinaryReader& r) {
   offset_release_ = r.f64();
 }
 
+ToolContact& attach_tool(ShellModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
+                         double spin_per_load_factor) {
+  return model.add_contribution(std::make_unique<ToolContact>(model.mesh(), radius, std::move(path), options, spin_per_load_factor));
+}
+
 }  // namespace spifit::model

@@ -80,4 +80,8 @@ class ToolContact final : public ElementContribution {
   void place(const Eigen::Vector3d& centre_committed, const Eigen::Vector3d& centre, const Eigen::Vector3d& spin);
 };
 
+// Adds a tool to the model (ShellModel::add_contribution) and returns it.
+ToolContact& attach_tool(ShellModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
+                         double spin_per_load_factor = 0.0);
+
 }  // namespace spifit::model

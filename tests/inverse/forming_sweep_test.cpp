@@ -1,10 +1,10 @@
 // Sweeps of the FE forming scenes: metrics equal those of direct runs, outputs per point in
-// DIR/points/NNN, window metrics from force.csv, sensitivities, and input errors that name the
-// file and the key before anything runs.
+// DIR/points/NNN, window metrics equal to those of force.csv, sensitivities, and input errors
+// that name the file and the key before anything runs.
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
-#include "inverse/forming_sweep.hpp"
 #include "inverse/sweep.hpp"
 
 #include <gtest/gtest.h>
@@ -103,10 +103,10 @@ TEST(FormingSweep, PenaltyPointsEqualDirectRunsAndWindowMetrics) {
   for (const auto& n : names) list += (list.empty() ? "\"" : ", \"") + n + "\"";
   const fs::path f = write_sweep(tmp.path, sweep_head(scene, list) + "window = [0.1, 0.4]\n[inputs.\"contact.penalty\"]\nvalues = [100.0, 1000.0]\n");
   const auto spec = inverse::read_sweep_file(f.string());
-  ASSERT_TRUE(spec.forming.has_value());
+  EXPECT_EQ(spec.kind->family, "forming");
   EXPECT_FALSE(spec.sensitivities);  // default for forming sweeps
   const auto out = io::OutputDirectory::prepare((tmp.path / "out").string(), false);
-  const auto r = inverse::run_sweep(spec, {1, &out, false});
+  const auto r = inverse::run_sweep(spec, {1, &out, {}});
   ASSERT_EQ(r.points.size(), 2u);
   EXPECT_TRUE(r.sensitivities.empty());
 
@@ -118,9 +118,9 @@ TEST(FormingSweep, PenaltyPointsEqualDirectRunsAndWindowMetrics) {
     auto sc = scene::read_forming_scene(scene.string());
     sc.contact.penalty = p.inputs[0];
     const auto direct = io::OutputDirectory::prepare((tmp.path / ("direct_" + std::to_string(i))).string(), false);
-    const auto rep = scene::run_forming_scene(sc, direct);
-    ASSERT_TRUE(rep.ok);
-    const auto& s = rep.summary;
+    const auto rep = scene::run_forming_scene(sc, scene::RunFiles(direct));
+    ASSERT_TRUE(rep.ok());
+    const auto s = rep.to_json();
     const auto m = [&](const std::string& n) { return p.metrics[index_of(names, n)]; };
     expect_rel(m("peak_fz"), s["peak_force"][2].get<double>(), 1e-12);
     expect_rel(m("peak_fx"), s["peak_force"][0].get<double>(), 1e-12);
@@ -154,14 +154,14 @@ TEST(FormingSweep, PenaltyPointsEqualDirectRunsAndWindowMetrics) {
   EXPECT_NE(csv.substr(0, csv.find('\n')).find(",wall_seconds,ok"), std::string::npos);
 
   // A window the tool never reaches: NaN for the window metrics, the others unaffected.
-  inverse::FormingSweepSetup far = *spec.forming;
+  scene::ObservableOptions far;
   far.window = std::array<double, 2>{10.0, 20.0};
-  nlohmann::json summary;
-  std::ifstream(tmp.path / "out" / "points" / "000" / "summary.json") >> summary;
-  const auto v = inverse::forming_metrics(summary, (tmp.path / "out" / "points" / "000" / "force.csv").string(), far, names);
-  EXPECT_TRUE(std::isnan(v[index_of(names, "mean_fz")]));
-  EXPECT_TRUE(std::isnan(v[index_of(names, "ripple_fz")]));
-  EXPECT_EQ(v[0], r.points[0].metrics[0]);
+  auto sc = scene::read_forming_scene(scene.string());
+  sc.contact.penalty = r.points[0].inputs[0];
+  const auto rep = scene::run_forming_scene(sc);  // in memory
+  EXPECT_TRUE(std::isnan(spec.kind->find_observable("mean_fz")->value(rep, far)));
+  EXPECT_TRUE(std::isnan(spec.kind->find_observable("ripple_fz")->value(rep, far)));
+  EXPECT_EQ(spec.kind->find_observable("peak_fz")->value(rep, far), r.points[0].metrics[0]);
 }
 
 // Sensitivities at the scene's own values: d ln(peak Fz) / d ln(K_p) in (0, 1); friction's base
@@ -174,7 +174,7 @@ TEST(FormingSweep, SensitivitiesAtTheScenesValues) {
                                                "[inputs.\"contact.friction\"]\nvalues = [0.0]\n[inputs.\"contact.points\"]\nvalues = [2]\n");
   const auto spec = inverse::read_sweep_file(f.string());
   const auto out = io::OutputDirectory::prepare((tmp.path / "out").string(), false);
-  const auto r = inverse::run_sweep(spec, {1, &out, false});
+  const auto r = inverse::run_sweep(spec, {1, &out, {}});
   ASSERT_EQ(r.points.size(), 1u);
   ASSERT_EQ(r.sensitivities.size(), 3u);  // inputs in key order: friction, penalty, points
   const auto sens = [&](const std::string& input) {
@@ -215,7 +215,7 @@ TEST(FormingSweep, InputErrorsNameFileAndKey) {
                {"inputs.sheet.elements", "5.5", "integer"});
   // Values the scene reader would refuse fail at read time.
   expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"contact.friction\"]\nvalues = [0.1, 3.0]\n",
-               {"inputs.contact.friction.values", "3", "friction must lie in [0, 2]"});
+               {"inputs.contact.friction.values", "3", "must lie in [0, 2]"});
   expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"tool.radius\"]\nvalues = [0.0]\n", {"inputs.tool.radius.values", "> 0"});
   expect_error(sweep_head(scene, "\"peak_fz\"") + "[inputs.\"swift.n\"]\nvalues = [1.5]\n", {"inputs.swift.n.values", "1.5"});
   // Forming metric on a material-point scene, and the other way round.
@@ -243,7 +243,7 @@ TEST(FormingSweep, BundledSweepFilesRead) {
   const auto f = inverse::read_sweep_file(src("experiments/aa3003o/sweep_indent_line_friction.toml"));
   EXPECT_EQ(f.inputs[0].values, (std::vector<double>{0.0, 0.05, 0.1, 0.15}));
   const auto l = inverse::read_sweep_file(src("experiments/aa3003o/sweep_line_friction.toml"));
-  ASSERT_TRUE(l.forming && l.forming->window);
-  EXPECT_EQ((*l.forming->window)[0], 25.0);
-  EXPECT_EQ((*l.forming->window)[1], 85.0);
+  ASSERT_TRUE(l.options.window);
+  EXPECT_EQ((*l.options.window)[0], 25.0);
+  EXPECT_EQ((*l.options.window)[1], 85.0);
 }

@@ -15,7 +15,7 @@ std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) 
 
 TEST(Sweep, BundledHillNSweep) {
   const auto spec = inverse::read_sweep_file(src("experiments/aa3003o/sweep_hill_n.toml"));
-  const auto r = inverse::run_sweep(spec, 2);
+  const auto r = inverse::run_sweep(spec, {2, nullptr, {}});
   ASSERT_EQ(r.points.size(), 27u);  // 9 x 3, last input fastest
   EXPECT_EQ(r.points[0].inputs, (std::vector<double>{2.5, 0.18}));
   EXPECT_EQ(r.points[1].inputs, (std::vector<double>{2.5, 0.21}));
@@ -38,22 +38,26 @@ TEST(Sweep, BundledHillNSweep) {
   }
   EXPECT_TRUE(found);
   // Same results with one thread.
-  const auto r1 = inverse::run_sweep(spec, 1);
+  const auto r1 = inverse::run_sweep(spec, {1, nullptr, {}});
   for (std::size_t i = 0; i < r.points.size(); ++i) EXPECT_EQ(r.points[i].metrics, r1.points[i].metrics);
 }
 
-// A grid point with an invalid card (negative N) fails alone; the others run.
-TEST(Sweep, FailingPointIsReportedNotFatal) {
+// A grid point with an invalid card (negative N) is an input error naming the file, the key and
+// the value, before anything runs; so is an unknown metric.
+TEST(Sweep, InvalidGridValueIsAnInputError) {
   const auto dir = std::filesystem::temp_directory_path() / ("spifit_sweep_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   const auto f = dir / "s.toml";
   std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_45.toml")
                    << "\"\nmetrics = [\"r_value\"]\nsensitivities = false\n[inputs.\"hill.N\"]\nvalues = [-1.0, 3.0]\n";
-  const auto r = inverse::run_sweep(inverse::read_sweep_file(f.string()), 2);
-  ASSERT_EQ(r.points.size(), 2u);
-  EXPECT_FALSE(r.points[0].ok);
-  EXPECT_NE(r.points[0].message.find("hill.N"), std::string::npos);
-  EXPECT_TRUE(r.points[1].ok);
+  try {
+    inverse::read_sweep_file(f.string());
+    ADD_FAILURE() << "hill.N = -1 accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.file(), f.string());
+    EXPECT_EQ(e.key(), "inputs.hill.N.values");
+    EXPECT_EQ(e.value(), "-1");
+  }
   std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_45.toml") << "\"\nmetrics = [\"r_valu\"]\n[inputs.\"hill.N\"]\nvalues = [3.0]\n";
   EXPECT_THROW(inverse::read_sweep_file(f.string()), io::InputError);
   std::filesystem::remove_all(dir);

@@ -35,6 +35,7 @@ struct FeOutputOptions {
 };
 
 struct FeRunSetup {
+  explicit FeRunSetup(toolpath::ToolPath path) : tool_path(std::move(path)) {}
   std::string kind, name;
   // Files whose contents identify the run, (role, path): ("scene", ...), ("material card", ...),
   // ("G-code", ...). A checkpoint keeps their contents, and a resume with others is refused.
@@ -44,11 +45,11 @@ struct FeRunSetup {
   material::MaterialParams<double> material;
   model::ShellModelOptions model;
   // The tool: a sphere whose centre follows tool_path at load_map.travel(lambda) mm.
+  toolpath::ToolPath tool_path;
   double tool_radius = 5.0;
   contact::ContactOptions contact;
   std::vector<double> tool_copies_deg;  // virtual tools of a pie (ToolContact::set_copies)
   double spin_per_load_factor = 0.0;    // rad per unit load factor
-  toolpath::ToolPath tool_path;
   LoadMap load_map;
   std::function<double(double travel)> time_of_travel;  // s
   // Supports and ties on the model's DOFs, finalised (the model's rotation frames set in it).

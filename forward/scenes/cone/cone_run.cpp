@@ -104,7 +104,7 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const mode
 }
 
 FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
-  FeRunSetup f;
+  FeRunSetup f(track.path().path);
   f.kind = "cone";
   f.name = scene.name;
   f.input_files = {{"scene", scene.file}, {"material card", scene.card.file}};
@@ -117,7 +117,6 @@ FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
   f.tool_radius = scene.tool_radius;
   f.contact = scene.contact;
   f.tool_copies_deg = tool_copies(scene);
-  f.tool_path = track.path().path;
   const double length = f.tool_path.length(), duration = f.tool_path.duration();
   ConeLoadMap map = cone_load_map(track.path(), scene.travel_per_increment, scene.move_increments);
   // Spin [rad per unit load factor] = omega [rad/s] x the time per unit load factor where the

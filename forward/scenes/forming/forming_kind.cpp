@@ -14,7 +14,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class FormingSceneFile final : public TableScene<FormingScene> {
  public:
-  explicit FormingSceneFile(FormingScene s) : TableScene(s.kind, std::move(s), &forming_inputs()) {}
+  FormingSceneFile(std::string kind, FormingScene s) : TableScene(std::move(kind), std::move(s), &forming_inputs()) {}
   std::vector<std::string> input_files() const override {
     std::vector<std::string> f{data_.file, data_.card.file};
     if (!data_.gcode.empty()) f.push_back(data_.gcode);
@@ -97,7 +97,11 @@ SceneKind forming_kind(const char* name, const char* doc) {
   k.family = "forming";
   k.doc = doc;
   k.resumable = true;
-  k.read = [](const std::string& file) -> std::unique_ptr<Scene> { return std::make_unique<FormingSceneFile>(read_forming_scene(file)); };
+  k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
+    FormingScene s = read_forming_scene(file);
+    std::string kind = s.kind;
+    return std::make_unique<FormingSceneFile>(std::move(kind), std::move(s));
+  };
   k.inputs = forming_inputs().infos();
   k.observables = forming_observables();
   return k;

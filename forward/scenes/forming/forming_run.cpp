@@ -39,7 +39,7 @@ solver::DofConstraints sheet_constraints(const FormingScene& s, model::ShellMode
 }
 
 FeRunSetup forming_setup(const FormingScene& s) {
-  FeRunSetup f;
+  FeRunSetup f(forming_centre_path(s));
   f.kind = s.kind;
   f.name = s.name;
   f.input_files = {{"scene", s.file}, {"material card", s.card.file}, {"G-code", s.gcode}};
@@ -49,7 +49,6 @@ FeRunSetup forming_setup(const FormingScene& s) {
   f.model.shell.thickness_points = s.thickness_points;
   f.tool_radius = s.radius;
   f.contact = s.contact;
-  f.tool_path = forming_centre_path(s);
   const double length = f.tool_path.length();
   // Spin [rad per unit load factor] = omega [rad/s] x travel time L / feed [s].
   f.spin_per_load_factor = s.spin * 2.0 * std::numbers::pi / 60.0 * length / s.feed;

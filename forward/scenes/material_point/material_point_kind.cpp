@@ -13,7 +13,7 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class MaterialPointSceneFile final : public TableScene<MaterialPointScene> {
  public:
-  explicit MaterialPointSceneFile(MaterialPointScene s) : TableScene(to_string(s.setup.kind), std::move(s), nullptr) {}
+  MaterialPointSceneFile(std::string kind, MaterialPointScene s) : TableScene(std::move(kind), std::move(s), nullptr) {}
   std::vector<std::string> input_files() const override { return {data_.file, data_.card.file}; }
   std::unique_ptr<Scene> clone() const override { return std::make_unique<MaterialPointSceneFile>(*this); }
   std::unique_ptr<SceneResult> run(const RunFiles& files, const RunControl& control) const override {
@@ -61,7 +61,9 @@ SceneKind material_point_kind(MaterialPointKind kind, const char* doc) {
   k.doc = doc;
   k.parallel_sweeps = true;
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
-    return std::make_unique<MaterialPointSceneFile>(read_material_point_scene(file));
+    MaterialPointScene s = read_material_point_scene(file);
+    std::string kind = to_string(s.setup.kind);
+    return std::make_unique<MaterialPointSceneFile>(std::move(kind), std::move(s));
   };
   k.observables = material_point_observables();
   return k;

@@ -2,6 +2,7 @@
 #include "forward/element/quad_shape.hpp"
 #include "forward/mesh/benchmark_meshes.hpp"
 #include "forward/mesh/square_sheet.hpp"
+#include "forward/model/tool_contact.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -243,7 +244,7 @@ double drag_ratio(double mu) {
   co.friction = mu;
   co.points = 3;
   const double R = 5.0, top = 0.5, depth = 0.05;
-  sheet.set_tool(R, [=](double lambda) {
+  const model::ToolContact& tool = model::attach_tool(sheet, R, [=](double lambda) {
     const double press = std::min(lambda / 0.2, 1.0), travel = std::max(lambda - 0.2, 0.0) / 0.8;
     return Eigen::Vector3d(-3.0 + 6.0 * travel, 0.0, top + R - depth * press);
   }, co);
@@ -256,8 +257,8 @@ double drag_ratio(double mu) {
   solver::NewtonSolver s(sheet, c, o);
   const auto r = s.solve();
   EXPECT_TRUE(r.converged) << r.message;
-  const Eigen::Vector3d f = sheet.tool_force();
-  const ContactSummary cs = sheet.contact_summary();
+  const Eigen::Vector3d f = tool.force();
+  const ContactSummary cs = tool.summary();
   std::printf("mu %.2f: tool force (%.5f, %.5f, %.5f) N, Fx/Fz %.5f, penetration %.5f mm, %d points, %d iterations\n", mu, f.x(),
               f.y(), f.z(), f.x() / f.z(), cs.max_penetration, cs.active_points, r.counters.iterations);
   EXPECT_GT(f.z(), 0.0);  // the sheet pushes the tool up

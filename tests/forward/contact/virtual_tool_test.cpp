@@ -1,9 +1,10 @@
-// Virtual tools of a pie model (thesis Fig. 8.4; ShellModel::set_tool_copies): the tangent with
+// Virtual tools of a pie model (thesis Fig. 8.4; ToolContact::set_copies): the tangent with
 // a copy in contact matches finite differences, and a 90 deg pie with cyclic ties indented by a
 // tool exactly on its edge gives the tool force of the full disc.
 #include "forward/element/director.hpp"
 #include "forward/mesh/disc_mesh.hpp"
 #include "forward/model/cyclic_symmetry.hpp"
+#include "forward/model/tool_contact.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -66,16 +67,16 @@ double worst_tangent_error(double mu, bool phong, int* copy_elements, int* touch
   // The real tool straddles the edge theta = 0 (centre 0.3 mm outside the pie), the copy at
   // +90 deg straddles theta = 90 deg from inside; 0.05 mm deep, then dragged and pressed.
   const Eigen::Vector3d c0(7.0, -0.3, 0.5 * t + R - 0.05), drag(0.01, 0.004, -0.005);
-  twin.with.set_tool(R, [=](double lambda) -> Eigen::Vector3d { return c0 + lambda * drag; }, co);
-  twin.with.set_tool_copies({90.0, -90.0});
+  model::ToolContact& tool = model::attach_tool(twin.with, R, [=](double lambda) -> Eigen::Vector3d { return c0 + lambda * drag; }, co);
+  tool.set_copies({90.0, -90.0});
   // Committed contact state (friction history) at lambda = 0, then a small deformation and
   // the drag over the increment.
   twin.with.begin_increment(0.0, 0.0);
   twin.with.internal_forces();
   twin.with.commit(0.0);
-  EXPECT_GT(twin.with.contact_summary_of_tool(0).active_points, 0);
-  EXPECT_GT(twin.with.contact_summary_of_tool(1).active_points, 0);  // the copy at +90 deg
-  EXPECT_EQ(twin.with.contact_summary_of_tool(2).active_points, 0);  // the copy at -90 deg misses the pie
+  EXPECT_GT(tool.summary_of_tool(0).active_points, 0);
+  EXPECT_GT(tool.summary_of_tool(1).active_points, 0);  // the copy at +90 deg
+  EXPECT_EQ(tool.summary_of_tool(2).active_points, 0);  // the copy at -90 deg misses the pie
   Eigen::VectorXd delta = Eigen::VectorXd::Zero(twin.with.num_dofs());
   for (int n = 0; n < twin.mesh.num_nodes(); ++n) {
     const Eigen::Vector3d& p = twin.mesh.nodes[static_cast<std::size_t>(n)];
@@ -88,7 +89,7 @@ double worst_tangent_error(double mu, bool phong, int* copy_elements, int* touch
   twin.with.begin_increment(0.0, 1.0);
 
   ShellModel real_only(twin.mesh, t, elastic(), {});  // the same without copies: which elements does a copy touch?
-  real_only.set_tool(R, [=](double lambda) -> Eigen::Vector3d { return c0 + lambda * drag; }, co);
+  model::attach_tool(real_only, R, [=](double lambda) -> Eigen::Vector3d { return c0 + lambda * drag; }, co);
   real_only.set_trial(delta, 1.0);
   real_only.accept_trial();
   real_only.begin_increment(0.0, 1.0);
@@ -153,7 +154,7 @@ TEST(VirtualTool, TangentMatchesFiniteDifferencesWithACopyInContact) {
 // mutual influence is small (tool 2 mm from the clamp: 0.3 % on the force; at 3 mm from the
 // clamp of a 20 mm disc it was 2.7 %, at 5 mm 9.5 %).
 struct Indent {
-  Eigen::Vector3d tool_force;       // ShellModel::tool_force (real tool + copies rotated back)
+  Eigen::Vector3d tool_force;       // ToolContact::force (real tool + copies rotated back)
   Eigen::Vector3d real_tool_force;  // the real tool's own contact only
   int iterations = 0;
 };
@@ -170,8 +171,8 @@ Indent indent(double angle_deg, const std::vector<double>& copies) {
   ShellModel model(m, t, elastic(), {});
   contact::ContactOptions co;
   co.points = 3;
-  model.set_tool(R, [=](double lambda) { return Eigen::Vector3d(kToolAt, 0.0, 0.5 * t + R - depth * lambda); }, co);
-  model.set_tool_copies(copies);
+  spifit::model::ToolContact& tool = spifit::model::attach_tool(model, R, [=](double lambda) { return Eigen::Vector3d(kToolAt, 0.0, 0.5 * t + R - depth * lambda); }, co);
+  tool.set_copies(copies);
   solver::DofConstraints c(model.num_dofs());
   if (angle_deg < 360.0) tie_cyclic_edges(m, "edge_theta0", "edge_theta1", angle_deg, &c);
   for (int n : m.node_sets.at("rim"))
@@ -187,7 +188,7 @@ Indent indent(double angle_deg, const std::vector<double>& copies) {
   solver::NewtonSolver s(model, c, no);
   const auto r = s.solve();
   EXPECT_TRUE(r.converged) << r.message;
-  return {model.tool_force(), -model.contact_summary_of_tool(0).force_on_sheet, r.counters.iterations};
+  return {tool.force(), -tool.summary_of_tool(0).force_on_sheet, r.counters.iterations};
 }
 
 TEST(VirtualTool, PieIndentedOnItsEdgeGivesTheToolForceOfTheFullDisc) {

@@ -1,11 +1,13 @@
-// Saving and restoring the state of a shell model with a tool (ShellModel::save_state /
-// load_state) and of the Newton solver (NewtonSolver::state / set_state / resume): a plastic
+// Saving and restoring the state of a shell model with a tool (model::save_model_state /
+// load_model_state) and of the Newton solver (NewtonSolver::state / set_state / resume): a plastic
 // sheet ploughed by a spinning tool with friction and two rotated tool copies, stopped after a
 // few increments, saved, restored into freshly built objects and continued, follows the
 // uninterrupted run bit for bit (forces, displacements, iterations, cut-backs).
 #include "forward/io/binary_archive.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/mesh/square_sheet.hpp"
+#include "forward/model/model_archive.hpp"
+#include "forward/model/tool_contact.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -25,6 +27,7 @@ std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 struct Rig {
   mesh::Mesh mesh;
   std::unique_ptr<ShellModel> model;
+  model::ToolContact* tool = nullptr;
   std::unique_ptr<solver::DofConstraints> constraints;
   std::unique_ptr<solver::NewtonSolver> solver;
 
@@ -43,11 +46,11 @@ struct Rig {
     co.points = 2;
     const double R = 3.0, top = 0.5;
     // Plunge 0.4 mm at x = 2, then drag along y; the copies at +-90 deg touch the sheet too.
-    model->set_tool(R, [=](double lambda) {
+    tool = &model::attach_tool(*model, R, [=](double lambda) {
       const double press = std::min(lambda / 0.3, 1.0), travel = std::max(lambda - 0.3, 0.0) / 0.7;
       return Eigen::Vector3d(2.0, -1.0 + 2.0 * travel, top + R - 0.4 * press);
     }, co, 3.0);
-    model->set_tool_copies({90.0, -90.0});
+    tool->set_copies({90.0, -90.0});
     constraints = std::make_unique<solver::DofConstraints>(model->num_dofs());
     for (int n : mesh.node_sets.at("boundary"))
       for (int k = 0; k < 6; ++k) constraints->prescribe(ShellModel::dof(n, k));
@@ -75,8 +78,8 @@ struct Rig {
 struct Trace {
   std::vector<std::uint64_t> force_bits;  // tool force after each increment
   std::vector<int> iterations;
-  void add(const ShellModel& m, const solver::IncrementReport& r) {
-    const Eigen::Vector3d f = m.tool_force();
+  void add(const model::ToolContact& t, const solver::IncrementReport& r) {
+    const Eigen::Vector3d f = t.force();
     for (int i = 0; i < 3; ++i) force_bits.push_back(bits(f(i)));
     iterations.push_back(r.iterations);
   }
@@ -84,14 +87,14 @@ struct Trace {
 
 std::string save(const Rig& rig) {
   io::BinaryWriter w("model-state-test", 1);
-  rig.model->save_state(w);
+  model::save_model_state(w, *rig.model);
   solver::save_newton_state(w, rig.solver->state());
   return w.finish();
 }
 
 void load(Rig& rig, const std::string& bytes) {
   io::BinaryReader r(bytes, "model-state-test", 1);
-  rig.model->load_state(r);
+  model::load_model_state(r, rig.model.get());
   rig.solver->set_state(solver::load_newton_state(r));
   r.finish();
 }
@@ -100,7 +103,7 @@ TEST(ShellModelState, ResumedRunFollowsTheUninterruptedOneBitForBit) {
   Rig whole;
   Trace a;
   const auto ra = whole.solver->solve(0.0, 1.0, [&](const solver::IncrementReport& r) {
-    a.add(*whole.model, r);
+    a.add(*whole.tool, r);
     return true;
   });
   ASSERT_TRUE(ra.converged) << ra.message;
@@ -108,14 +111,14 @@ TEST(ShellModelState, ResumedRunFollowsTheUninterruptedOneBitForBit) {
   std::printf("uninterrupted: %d increments, %d iterations, %d cut-backs, factorisations %d CHOLMOD + %d UMFPACK\n",
               ra.counters.increments, ra.counters.iterations, ra.counters.cutbacks, ra.counters.cholmod_factorisations,
               ra.counters.umfpack_factorisations);
-  EXPECT_GT(whole.model->contact_summary_of_tool(1).active_points + whole.model->contact_summary_of_tool(2).active_points, 0)
+  EXPECT_GT(whole.tool->summary_of_tool(1).active_points + whole.tool->summary_of_tool(2).active_points, 0)
       << "the copies should touch the sheet";
 
   const int stop = 9;
   Rig first;
   Trace b;
   const auto rb = first.solver->solve(0.0, 1.0, [&](const solver::IncrementReport& r) {
-    b.add(*first.model, r);
+    b.add(*first.tool, r);
     return r.index < stop;
   });
   ASSERT_FALSE(rb.converged);
@@ -128,7 +131,7 @@ TEST(ShellModelState, ResumedRunFollowsTheUninterruptedOneBitForBit) {
   EXPECT_EQ(save(second), bytes) << "save(load(x)) must be x";
   EXPECT_EQ(second.fingerprint(), first.fingerprint());
   const auto rc = second.solver->resume(1.0, [&](const solver::IncrementReport& r) {
-    b.add(*second.model, r);
+    b.add(*second.tool, r);
     return true;
   });
   ASSERT_TRUE(rc.converged) << rc.message;
@@ -153,7 +156,7 @@ TEST(ShellModelState, AStateOfAnotherModelIsRefused) {
   ShellModel other(other_mesh, 1.0, elastic, {});
   io::BinaryReader r(bytes, "model-state-test", 1);
   try {
-    other.load_state(r);
+    model::load_model_state(r, &other);
     ADD_FAILURE() << "a state of 169 nodes loaded into a model of 121";
   } catch (const io::ArchiveError& e) {
     EXPECT_NE(std::string(e.what()).find("169 nodes, the model has 121"), std::string::npos) << e.what();

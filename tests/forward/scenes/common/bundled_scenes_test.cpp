@@ -1,9 +1,9 @@
 // Every bundled scene file loads and runs, and its summary matches the stored golden values
 // (tests/golden/bundled_scene_summaries.json, a regression guard; correctness is checked
 // against closed forms and fine-step references elsewhere). Same input -> identical output.
-#include "forward/scenes/cone/cone_scene.hpp"
-#include "forward/scenes/forming/forming_scene.hpp"
+#include "forward/io/output_directory.hpp"
 #include "forward/scenes/material_point/material_point_scene.hpp"
+#include "forward/scenes/scene_registry.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -25,8 +25,8 @@ TEST(BundledScenes, RunAndMatchGoldenSummaries) {
   for (const auto& e : fs::directory_iterator(scenes_dir())) {
     // Material-point scenes only (the FE forming and cone scenes have their own tests).
     if (e.path().extension() != ".toml") continue;
-    const std::string kind = scene::scene_kind(e.path().string());
-    if (!scene::is_forming_kind(kind) && !scene::is_cone_kind(kind)) files.push_back(e.path());
+    const scene::SceneKind* kind = scene::find_scene_kind(scene::scene_kind_of_file(e.path().string()));
+    if (kind && kind->family == "material_point") files.push_back(e.path());
   }
   std::sort(files.begin(), files.end());
   ASSERT_GE(files.size(), 13u);
@@ -35,12 +35,13 @@ TEST(BundledScenes, RunAndMatchGoldenSummaries) {
     SCOPED_TRACE(f.filename().string());
     const auto scene = scene::read_material_point_scene(f.string());
     const auto dir = io::OutputDirectory::prepare(out.string(), true);
-    const auto rep = scene::run_material_point_scene(scene, dir);
-    ASSERT_TRUE(rep.ok) << rep.summary.dump();
+    const auto rep = scene::run_material_point_scene(scene, scene::RunFiles(dir));
+    const auto summary = rep.to_json();
+    ASSERT_TRUE(rep.ok()) << summary.dump();
     ASSERT_TRUE(golden.contains(scene.name)) << "no golden summary for " << scene.name;
     for (const auto& [key, value] : golden[scene.name].items()) {
-      ASSERT_TRUE(rep.summary.contains(key)) << key;
-      const double v = rep.summary[key].get<double>(), g = value.get<double>();
+      ASSERT_TRUE(summary.contains(key)) << key;
+      const double v = summary[key].get<double>(), g = value.get<double>();
       EXPECT_NEAR(v, g, 1e-9 * std::max(1.0, std::abs(g))) << key;
     }
   }

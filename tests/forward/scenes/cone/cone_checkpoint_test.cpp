@@ -7,7 +7,9 @@
 // file, before any output is touched.
 #include "forward/io/input_error.hpp"
 #include "forward/io/text_file.hpp"
-#include "forward/scenes/cone/cone_checkpoint.hpp"
+#include "forward/scenes/common/run_checkpoint.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/scenes/cone/cone_run.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
 #include "tests/support/csv_rows.hpp"
 
@@ -51,14 +53,14 @@ int data_rows(const fs::path& csv) {
   return n;
 }
 
-ConeReport run(const ConeScene& scene, const fs::path& dir, ConeRunOptions o = {}) {
+ConeResult run(const ConeScene& scene, const fs::path& dir, RunControl o = {}) {
   if (!o.resume) fs::remove_all(dir);
   const auto out = o.resume ? io::OutputDirectory::existing(dir.string()) : io::OutputDirectory::prepare(dir.string(), false);
-  return run_cone_scene(scene, out, o);
+  return run_cone_scene(scene, RunFiles(out), o);
 }
 
 // Everything but wall times and the checkpoint bookkeeping must be identical.
-void expect_same_outputs(const fs::path& ref, const ConeReport& ref_report, const fs::path& dir, const ConeReport& report) {
+void expect_same_outputs(const fs::path& ref, const ConeResult& ref_report, const fs::path& dir, const ConeResult& report) {
   for (const char* f : {"force.csv", "energies.csv", "contours.csv", "sections.csv", "stages.csv", "history.csv", "vtu/sheet.pvd"}) {
     EXPECT_EQ(fs::exists(dir / f), fs::exists(ref / f)) << f;
     EXPECT_EQ(slurp(dir / f), slurp(ref / f)) << f << " differs";
@@ -71,8 +73,8 @@ void expect_same_outputs(const fs::path& ref, const ConeReport& ref_report, cons
   for (const auto& e : fs::directory_iterator(dir / "vtu")) other.insert("../vtu/" + e.path().filename().string());
   EXPECT_EQ(other, names);
   for (const auto& n : names) EXPECT_EQ(slurp(dir / "sections" / n), slurp(ref / "sections" / n)) << n << " differs";
-  const auto& a = ref_report.summary;
-  const auto& b = report.summary;
+  const auto a = ref_report.to_json();
+  const auto b = report.to_json();
   for (const char* k : {"status", "increments", "newton_iterations", "cutbacks", "factorisations", "factorisations_by_solver",
                         "travel_reached", "contours_completed", "peak_force", "peak_polar_force", "final_force", "final_polar_force",
                         "max_penetration", "max_surface_penetration", "model", "path", "warnings", "observables", "stabilised"})
@@ -99,48 +101,48 @@ TEST(ConeCheckpoint, ResumedAfterAContourOrAKillTheRunEndsAsAnUninterruptedOne) 
   ASSERT_EQ(scene.checkpoint_every, 1);
 
   const fs::path ref = temp("ref");
-  const ConeReport r0 = run(scene, ref);
-  ASSERT_TRUE(r0.ok) << r0.summary.dump();
-  ASSERT_EQ(r0.summary["contours_completed"].get<int>(), 2);
+  const ConeResult r0 = run(scene, ref);
+  ASSERT_TRUE(r0.ok()) << r0.to_json().dump();
+  ASSERT_EQ(r0.to_json()["contours_completed"].get<int>(), 2);
   ASSERT_TRUE(fs::exists(ref / "history.csv"));
-  const auto& ck = r0.summary["checkpoints"];
+  const auto ck = r0.to_json()["checkpoints"];
   EXPECT_EQ(ck["written"].get<int>(), 2);
   EXPECT_TRUE(fs::exists(ref / "checkpoint" / "state.bin"));
   std::printf("tiny cone, 2 contours: %d increments, %d iterations, %.2f s; checkpoint %zu bytes, %d written in %.4f s\n",
-              r0.summary["increments"].get<int>(), r0.summary["newton_iterations"].get<int>(), r0.summary["wall_seconds"].get<double>(),
+              r0.to_json()["increments"].get<int>(), r0.to_json()["newton_iterations"].get<int>(), r0.to_json()["wall_seconds"].get<double>(),
               ck["bytes"].get<std::size_t>(), ck["written"].get<int>(), ck["write_seconds"].get<double>());
 
   // Stopped right after the checkpoint of contour 1 (a copy of the directory is kept for the
   // kill below), then resumed.
   const fs::path a = temp("stop_resume"), b = temp("kill_resume");
-  ConeRunOptions stop;
-  stop.stop_after_contours = 1;
-  const ConeReport s1 = run(scene, a, stop);
-  ASSERT_TRUE(s1.stopped) << s1.summary.dump();
+  RunControl stop;
+  stop.stop_after_marks = 1;
+  const ConeResult s1 = run(scene, a, stop);
+  ASSERT_TRUE((s1.status == RunStatus::stopped)) << s1.to_json().dump();
   const int k1 = increments_to_first_contour(scene, ref);
   ASSERT_GT(k1, 0);
   EXPECT_EQ(data_rows(a / "force.csv"), k1);
   fs::remove_all(b);
   fs::copy(a, b, fs::copy_options::recursive);
-  ConeRunOptions resume;
+  RunControl resume;
   resume.resume = true;
-  const ConeReport s2 = run(scene, a, resume);
-  ASSERT_TRUE(s2.ok) << s2.summary.dump();
-  EXPECT_EQ(s2.summary["resumed_at_contour"].get<int>(), 1);
+  const ConeResult s2 = run(scene, a, resume);
+  ASSERT_TRUE(s2.ok()) << s2.to_json().dump();
+  EXPECT_EQ(s2.to_json()["resumed_at_contour"].get<int>(), 1);
   expect_same_outputs(ref, r0, a, s2);
 
   // Killed 10 increments into contour 2 (not a contour end), in a resumed session: the rows
   // written after the checkpoint are then in force.csv, and the next resume starts again from
   // the end of contour 1.
-  ConeRunOptions kill = resume;
+  RunControl kill = resume;
   kill.stop_after_increments = k1 + 10;
-  ASSERT_LT(k1 + 10, r0.summary["increments"].get<int>() - 10);
-  const ConeReport k = run(scene, b, kill);
-  ASSERT_TRUE(k.stopped);
+  ASSERT_LT(k1 + 10, r0.to_json()["increments"].get<int>() - 10);
+  const ConeResult k = run(scene, b, kill);
+  ASSERT_TRUE((k.status == RunStatus::stopped));
   EXPECT_EQ(data_rows(b / "force.csv"), k1 + 10);
-  const ConeReport k2 = run(scene, b, resume);
-  ASSERT_TRUE(k2.ok) << k2.summary.dump();
-  EXPECT_EQ(k2.summary["resumed_at_contour"].get<int>(), 1);
+  const ConeResult k2 = run(scene, b, resume);
+  ASSERT_TRUE(k2.ok()) << k2.to_json().dump();
+  EXPECT_EQ(k2.to_json()["resumed_at_contour"].get<int>(), 1);
   expect_same_outputs(ref, r0, b, k2);
 
   for (const auto& d : {ref, a, b}) fs::remove_all(d);
@@ -151,7 +153,7 @@ TEST(ConeCheckpoint, ResumedAfterAContourOrAKillTheRunEndsAsAnUninterruptedOne) 
 // DIR are untouched.
 void expect_refused(const ConeScene& scene, const fs::path& dir, const std::string& fragment) {
   const std::string before = slurp(dir / "force.csv") + slurp(dir / "summary.json");
-  ConeRunOptions resume;
+  RunControl resume;
   resume.resume = true;
   try {
     run(scene, dir, resume);
@@ -168,16 +170,16 @@ TEST(ConeCheckpoint, AnotherSceneOrADamagedCheckpointIsRefused) {
   const fs::path file = write("one.toml", tiny_scene(1));
   const ConeScene scene = read_cone_scene(file.string());
   const fs::path dir = temp("refuse");
-  ConeRunOptions stop;
-  stop.stop_after_contours = 1;
-  ASSERT_TRUE(run(scene, dir, stop).stopped);
+  RunControl stop;
+  stop.stop_after_marks = 1;
+  ASSERT_EQ(run(scene, dir, stop).status, RunStatus::stopped);
   const fs::path state = dir / "checkpoint" / "state.bin";
   const std::string good = slurp(state);
   ASSERT_GT(good.size(), 1000u);
 
   // Another scene (one key differs; the same mesh, so only the contents tell).
   const fs::path other = write("other.toml", tiny_scene(1, "[contact]\npenalty = 1200.0\n"));
-  expect_refused(read_cone_scene(other.string()), dir, "written for another scene: the contents of " + other.string());
+  expect_refused(read_cone_scene(other.string()), dir, "written with another scene: the contents of " + other.string());
   // Truncated, corrupted, missing.
   std::ofstream(state, std::ios::binary | std::ios::trunc) << good.substr(0, good.size() / 2);
   expect_refused(scene, dir, "truncated or corrupted");
@@ -191,9 +193,9 @@ TEST(ConeCheckpoint, AnotherSceneOrADamagedCheckpointIsRefused) {
   expect_refused(scene, dir, "no checkpoint");
   // The intact checkpoint still resumes.
   std::ofstream(state, std::ios::binary | std::ios::trunc) << good;
-  ConeRunOptions resume;
+  RunControl resume;
   resume.resume = true;
-  EXPECT_TRUE(run(scene, dir, resume).ok);
+  EXPECT_TRUE(run(scene, dir, resume).ok());
   fs::remove_all(dir);
   fs::remove(file);
   fs::remove(other);

@@ -2,6 +2,8 @@
 // cone on a coarse 90 deg pie with [output] history_element; the files exist, have the
 // documented columns and agree with each other.
 #include "forward/io/input_error.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/scenes/cone/cone_run.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -66,11 +68,11 @@ TEST(ConeObservables, SectionsStagesAndElementHistoryOfOneContour) {
   const fs::path dir = temp("out");
   fs::remove_all(dir);
   const auto out = io::OutputDirectory::prepare(dir.string(), true);
-  const ConeReport r = run_cone_scene(scene, out);
-  ASSERT_TRUE(r.ok) << r.summary.dump();
-  const auto& obs = r.summary["observables"];
+  const ConeResult r = run_cone_scene(scene, RunFiles(out));
+  ASSERT_TRUE(r.ok()) << r.to_json().dump();
+  const auto obs = r.to_json()["observables"];
   std::printf("observables: %s\n", obs.dump().c_str());
-  const int increments = r.summary["increments"].get<int>();
+  const int increments = r.to_json()["increments"].get<int>();
 
   // history.csv: one row per increment; E_rr = (lambda_r^2 - 1)/2; the middle layer (zeta = 0) is
   // the membrane; the element at r = 18 mm is thinned by the contour (tool centre at r = 16 mm).
@@ -93,7 +95,7 @@ TEST(ConeObservables, SectionsStagesAndElementHistoryOfOneContour) {
               last[static_cast<std::size_t>(h.column("gamma_rt"))], last[static_cast<std::size_t>(eq1)], last[static_cast<std::size_t>(eq3)]);
   EXPECT_LT(last[static_cast<std::size_t>(th)], 0.99);
   EXPECT_GT(last[static_cast<std::size_t>(eq1)] + last[static_cast<std::size_t>(eq3)], 0.0);
-  EXPECT_DOUBLE_EQ(last[0], r.summary["travel_reached"].get<double>());
+  EXPECT_DOUBLE_EQ(last[0], r.to_json()["travel_reached"].get<double>());
 
   // Section after contour 1: top and bottom h apart along the director, the axis node and the
   // clamped rim do not turn; depth = t0/2 - z_top.
@@ -127,7 +129,7 @@ TEST(ConeObservables, SectionsStagesAndElementHistoryOfOneContour) {
   ASSERT_EQ(st.rows.size(), 1u);
   EXPECT_EQ(st.rows[0][0], 1.0);
   EXPECT_EQ(st.rows[0][1], 45.0);
-  EXPECT_DOUBLE_EQ(st.rows[0][2], r.summary["travel_reached"].get<double>());
+  EXPECT_DOUBLE_EQ(st.rows[0][2], r.to_json()["travel_reached"].get<double>());
   EXPECT_DOUBLE_EQ(st.rows[0][4], -st.rows[0][3]);
   EXPECT_EQ(obs["stages"].size(), 1u);
   fs::remove_all(dir);

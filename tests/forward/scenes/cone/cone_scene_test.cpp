@@ -1,8 +1,10 @@
-// The cone scene (issue 6): a tiny one-contour cone on a 90 deg pie runs, pushes the tool up,
+// The cone scene: a tiny one-contour cone on a 90 deg pie runs, pushes the tool up,
 // and writes polar force components consistent with the Cartesian ones; the reader names file
 // and key of bad inputs.
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/cone/cone_load_map.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/scenes/cone/cone_run.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
 #include "tests/support/csv_rows.hpp"
 
@@ -46,9 +48,9 @@ TEST(ConeScene, OneContourOnAPieRunsAndItsPolarForcesMatchTheCartesianOnes) {
   const fs::path dir = temp("tiny_out");
   fs::remove_all(dir);
   const auto out = io::OutputDirectory::prepare(dir.string(), true);
-  const ConeReport r = run_cone_scene(scene, out);
-  ASSERT_TRUE(r.ok) << r.summary.dump();
-  const auto& s = r.summary;
+  const ConeResult r = run_cone_scene(scene, RunFiles(out));
+  ASSERT_TRUE(r.ok()) << r.to_json().dump();
+  const auto s = r.to_json();
   std::printf("tiny cone: %d elements, %d increments, %d iterations, %.2f s; peak force (%.2f, %.2f, %.2f) N, peak polar (%.2f, %.2f, %.2f) N\n",
               s["model"]["elements"].get<int>(), s["increments"].get<int>(), s["newton_iterations"].get<int>(),
               s["wall_seconds"].get<double>(), s["peak_force"][0].get<double>(), s["peak_force"][1].get<double>(),
@@ -152,25 +154,25 @@ TEST(ConeLoadMap, ShortensEveryPieMoveToItsIncrementsAndInvertsExactly) {
   const toolpath::ConePath path = toolpath::annotated_cone_path(toolpath::cone70(3, 45.0));
   const std::vector<double> d = path.path.waypoint_distances();
   const double length = d.back();
-  const ConeLoadMap off(path, 1.0, 0);
-  EXPECT_TRUE(off.breakpoints().empty());
-  EXPECT_EQ(off.effective_length(), length);
-  for (double l : {0.0, 0.123, 0.5, 0.987, 1.0}) EXPECT_EQ(off.travel(l), l * length);
-  const ConeLoadMap map(path, 1.0, 2);
-  EXPECT_EQ(map.shortened_moves(), 2);  // between contours 1-2 and 2-3
-  ASSERT_EQ(map.breakpoints().size(), 4u);
+  const ConeLoadMap off = cone_load_map(path, 1.0, 0);
+  EXPECT_TRUE(off.breakpoints.empty());
+  EXPECT_EQ(off.map.effective_length(), length);
+  for (double l : {0.0, 0.123, 0.5, 0.987, 1.0}) EXPECT_EQ(off.map.travel(l), l * length);
+  const ConeLoadMap map = cone_load_map(path, 1.0, 2);
+  EXPECT_EQ(map.shortened_moves, 2);  // between contours 1-2 and 2-3
+  ASSERT_EQ(map.breakpoints.size(), 4u);
   double moves = 0.0;
   for (std::size_t i = 1; i < d.size(); ++i) {
     if (path.segments[i].move != toolpath::ConeMove::move) continue;
     moves += d[i] - d[i - 1];
-    const double l0 = map.lambda(d[i - 1]), l1 = map.lambda(d[i]);
-    EXPECT_NEAR((l1 - l0) * map.effective_length(), 2.0, 1e-9) << "move ending at waypoint " << i;
-    EXPECT_NEAR(map.travel(0.5 * (l0 + l1)), 0.5 * (d[i - 1] + d[i]), 1e-9);  // linear inside the move
+    const double l0 = map.map.lambda(d[i - 1]), l1 = map.map.lambda(d[i]);
+    EXPECT_NEAR((l1 - l0) * map.map.effective_length(), 2.0, 1e-9) << "move ending at waypoint " << i;
+    EXPECT_NEAR(map.map.travel(0.5 * (l0 + l1)), 0.5 * (d[i - 1] + d[i]), 1e-9);  // linear inside the move
   }
   EXPECT_GT(moves, 80.0);  // two chords of about 2 x 90 sin(22.5 deg) = 69 mm: the saving is real
-  EXPECT_NEAR(map.effective_length(), length - moves + 4.0, 1e-9);
-  for (double s : {0.0, 10.0, 0.4 * length, 0.77 * length, length}) EXPECT_NEAR(map.travel(map.lambda(s)), s, 1e-9 * length);
-  EXPECT_EQ(map.travel(1.0), length);
+  EXPECT_NEAR(map.map.effective_length(), length - moves + 4.0, 1e-9);
+  for (double s : {0.0, 10.0, 0.4 * length, 0.77 * length, length}) EXPECT_NEAR(map.map.travel(map.map.lambda(s)), s, 1e-9 * length);
+  EXPECT_EQ(map.map.travel(1.0), length);
 }
 
 // [solver] estimate_next_correction (NewtonOptions): the tiny cone with and without it; the
@@ -182,10 +184,10 @@ TEST(ConeScene, EstimatedNextCorrectionKeepsTheForceWithFewerIterations) {
     const fs::path file = write_scene("estimate" + std::to_string(on), std::string(kTiny) + "estimate_next_correction = " + (on ? "true" : "false") + "\n");
     const fs::path dir = temp("estimate_out" + std::to_string(on));
     fs::remove_all(dir);
-    const ConeReport r = run_cone_scene(read_cone_scene(file.string()), io::OutputDirectory::prepare(dir.string(), true));
-    ASSERT_TRUE(r.ok) << r.summary.dump();
-    EXPECT_EQ(r.summary["solver"]["estimate_next_correction"].get<bool>(), on == 1);
-    iterations[on] = r.summary["newton_iterations"].get<int>();
+    const ConeResult r = run_cone_scene(read_cone_scene(file.string()), RunFiles(io::OutputDirectory::prepare(dir.string(), true)));
+    ASSERT_TRUE(r.ok()) << r.to_json().dump();
+    EXPECT_EQ(r.to_json()["solver"]["estimate_next_correction"].get<bool>(), on == 1);
+    iterations[on] = r.to_json()["newton_iterations"].get<int>();
     const auto means = read_rows(dir / "contours.csv");
     ASSERT_EQ(means.size(), 1u);
     fz[on] = means[0][5];
@@ -208,10 +210,10 @@ TEST(ConeScene, PieMoveInOneIncrementKeepsTheNextContoursForce) {
     const fs::path file = write_scene("move" + std::to_string(n), two + "move_increments = " + std::to_string(n) + "\n");
     const fs::path dir = temp("move_out" + std::to_string(n));
     fs::remove_all(dir);
-    const ConeReport r = run_cone_scene(read_cone_scene(file.string()), io::OutputDirectory::prepare(dir.string(), true));
-    ASSERT_TRUE(r.ok) << r.summary.dump();
-    EXPECT_EQ(r.summary["solver"]["move_increments"].get<int>(), n);
-    increments[n] = r.summary["increments"].get<int>();
+    const ConeResult r = run_cone_scene(read_cone_scene(file.string()), RunFiles(io::OutputDirectory::prepare(dir.string(), true)));
+    ASSERT_TRUE(r.ok()) << r.to_json().dump();
+    EXPECT_EQ(r.to_json()["solver"]["move_increments"].get<int>(), n);
+    increments[n] = r.to_json()["increments"].get<int>();
     for (const auto& row : read_rows(dir / "force.csv")) move_rows[n] += row[12] == 5.0 ? 1 : 0;
     const auto means = read_rows(dir / "contours.csv");
     ASSERT_EQ(means.size(), 2u);
@@ -245,9 +247,9 @@ TEST(ConeScene, EnergyAccountBalancesTheToolsWork) {
     const fs::path file = write_scene("energy", body);
     const fs::path dir = temp("energy_out");
     fs::remove_all(dir);
-    const ConeReport r = run_cone_scene(read_cone_scene(file.string()), io::OutputDirectory::prepare(dir.string(), true));
-    ASSERT_TRUE(r.ok) << r.summary.dump();
-    const auto& e = r.summary["energies"];
+    const ConeResult r = run_cone_scene(read_cone_scene(file.string()), RunFiles(io::OutputDirectory::prepare(dir.string(), true)));
+    ASSERT_TRUE(r.ok()) << r.to_json().dump();
+    const auto e = r.to_json()["energies"];
     const double work = e["external_work"].get<double>(), error = e["balance_error"].get<double>();
     std::printf("tiny cone, mu %.2f, %.3f mm per increment: work %.2f N mm, plastic %.2f, elastic %.2f, friction %.2f, offset release %.2f, error %.3f (%.2e)\n",
                 c.mu, c.travel, work, e["plastic"].get<double>(), e["elastic"].get<double>(), e["friction_dissipation"].get<double>(),
@@ -259,7 +261,7 @@ TEST(ConeScene, EnergyAccountBalancesTheToolsWork) {
     else EXPECT_EQ(e["friction_dissipation"].get<double>(), 0.0);
     // energies.csv: one row per increment, the last equal to the summary's account.
     const auto rows = read_rows(dir / "energies.csv");
-    ASSERT_EQ(static_cast<int>(rows.size()), r.summary["increments"].get<int>());
+    ASSERT_EQ(static_cast<int>(rows.size()), r.to_json()["increments"].get<int>());
     ASSERT_EQ(rows.back().size(), 9u);
     EXPECT_NEAR(rows.back()[1], work, 1e-9 * work);
     EXPECT_NEAR(rows.back()[8], error, 1e-9 * work);

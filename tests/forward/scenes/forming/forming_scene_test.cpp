@@ -1,6 +1,8 @@
-// The FE forming scenes with the spherical tool (issue 5): the §7.1 indent and its penalty
+// The FE forming scenes with the spherical tool: the §7.1 indent and its penalty
 // study, G-code vs built-in path, and the input checks of the scene reader.
 #include "forward/io/input_error.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
 
 #include <gtest/gtest.h>
@@ -28,12 +30,12 @@ fs::path temp_dir(const std::string& name) {
 nlohmann::json run(FormingScene s, const std::string& name) {
   const fs::path d = temp_dir(name);
   const auto out = io::OutputDirectory::prepare(d.string(), true);
-  const FormingReport r = run_forming_scene(s, out);
-  EXPECT_TRUE(r.ok) << r.summary.dump();
+  const FormingResult r = run_forming_scene(s, RunFiles(out));
+  EXPECT_TRUE(r.ok()) << r.to_json().dump();
   EXPECT_TRUE(fs::exists(d / "force.csv"));
   EXPECT_TRUE(fs::exists(d / "vtu" / "sheet.pvd"));
   fs::remove_all(d);
-  return r.summary;
+  return r.to_json();
 }
 
 TEST(FormingScene, IndentPenaltyStudyConvergesAndTheForceSettles) {
