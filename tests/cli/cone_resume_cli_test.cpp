@@ -10,13 +10,9 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
-#include <csignal>
-#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <sys/wait.h>
-#include <thread>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -77,33 +73,9 @@ TEST(ConeResumeCli, AKilledRunResumesToTheUninterruptedResult) {
   ASSERT_EQ(r.code, 0) << r.err;
 
   // Start the same run and kill it (SIGKILL) a little after its first checkpoint appears.
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const int null = ::open("/dev/null", O_WRONLY);
-    ::dup2(null, 1);
-    ::dup2(null, 2);
-    ::execl(SPIFIT_EXE, SPIFIT_EXE, "-q", "run", scene.c_str(), "--out", out.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
   const fs::path state = out / "checkpoint" / "state.bin";
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
-  int status = 0;
-  bool exited = false;
-  while (!fs::exists(state) && std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) {
-      exited = true;
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  const bool killed = spifit::test::run_and_kill(scene, out, state, std::chrono::milliseconds(700));  // into contour 2
   ASSERT_TRUE(fs::exists(state)) << "no checkpoint appeared";
-  if (!exited) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(700));  // into contour 2
-    ::kill(pid, SIGKILL);
-    ::waitpid(pid, &status, 0);
-  }
-  const bool killed = WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
   std::printf("run %s; force.csv then had %zu bytes (uninterrupted: %zu)\n", killed ? "killed by SIGKILL" : "finished before the kill",
               slurp(out / "force.csv").size(), slurp(ref / "force.csv").size());
   if (killed) {

@@ -108,6 +108,7 @@ class FeRun::Stepper {
     const bool by_marks = o.checkpoint_every > 0 && log.marks_reached >= last_checkpoint_marks_ + o.checkpoint_every;
     const bool by_count = o.checkpoint_increments > 0 && log.increments >= last_checkpoint_increments_ + o.checkpoint_increments;
     if (!by_marks && !by_count) return;
+    if (run_.model_->load_factor() >= 1.0 - 1e-12) return;  // the end of the path: nothing left to resume
     // The solver has chosen its next increment already (NewtonSolver's callback), so its state
     // is where the run goes on.
     const auto c0 = Clock::now();

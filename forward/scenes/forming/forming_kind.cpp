@@ -83,8 +83,8 @@ std::vector<Observable> forming_observables() {
       window_mean("mean_fy", "mean Fy over the travel window", 1),
       window_mean("mean_fz", "mean Fz over the travel window", 2),
       {"ripple_fz", "", "(max - min) / mean of Fz over the travel window", Observable::Needs::window, false,
-       [](const SceneResult& r, const ObservableOptions& o) {
-         const WindowStats s = window_stats(forming(r).force, *o.window);
+       [](const SceneResult& r, const ObservableOptions& options) {
+         const WindowStats s = window_stats(forming(r).force, *options.window);
          return s.rows == 0 ? kNaN : (s.max_fz - s.min_fz) / (s.sum[2] / static_cast<double>(s.rows));
        }},
   };

@@ -51,9 +51,11 @@ struct FormingScene {
   int vtu_every = 0;
   std::vector<std::string> sections;  // path point names where the y = 0 section is written
   // Checkpoints (DIR/checkpoint/state.bin, --resume): after every checkpoint_every named points
-  // (G-code: corners) and every checkpoint_increments increments; 0: none of that kind.
+  // (G-code: corners) and every checkpoint_increments increments, but not at the end of the
+  // path; 0: none of that kind. line_half writes 5.5 MB per checkpoint in about 20 ms
+  // (docs/contact.md, "Checkpoints and resume").
   int checkpoint_every = 1;
-  int checkpoint_increments = 20;
+  int checkpoint_increments = 50;
 };
 
 // Throws io::InputError naming file, key and value (also for a path that never reaches the

@@ -1,0 +1,109 @@
+// Checkpoints and resume of the forming scenes (docs/contact.md, "Checkpoints and resume"): an
+// indent_line or line run stopped after a checkpoint -- at a named path point or in the middle
+// of a segment -- and resumed writes the force history, energies, sections and VTU steps of the
+// uninterrupted run, byte for byte, with the same counts.
+#include "forward/io/input_error.hpp"
+#include "forward/io/output_directory.hpp"
+#include "forward/io/text_file.hpp"
+#include "forward/scenes/forming/forming_run.hpp"
+#include "tests/support/tiny_scenes.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace spifit::scene {
+namespace {
+
+fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_forming_resume_" + std::to_string(::getpid()) + "_" + name); }
+
+std::string slurp(const fs::path& f) { return fs::exists(f) ? io::read_text_file(f.string()) : std::string("(missing)"); }
+
+FormingResult run(const FormingScene& s, const fs::path& dir, RunControl c = {}) {
+  if (!c.resume) fs::remove_all(dir);
+  const auto out = c.resume ? io::OutputDirectory::existing(dir.string()) : io::OutputDirectory::prepare(dir.string(), false);
+  return run_forming_scene(s, RunFiles(out), c);
+}
+
+void expect_same(const fs::path& ref, const FormingResult& a, const fs::path& dir, const FormingResult& b) {
+  std::vector<std::string> files{"force.csv", "energies.csv", "vtu/sheet.pvd"};
+  for (const auto& e : fs::directory_iterator(ref / "vtu")) files.push_back("vtu/" + e.path().filename().string());
+  if (fs::exists(ref / "sections"))
+    for (const auto& e : fs::directory_iterator(ref / "sections")) files.push_back("sections/" + e.path().filename().string());
+  for (const auto& f : files) EXPECT_EQ(slurp(dir / f), slurp(ref / f)) << f << " differs";
+  EXPECT_EQ(b.run.counters.increments, a.run.counters.increments);
+  EXPECT_EQ(b.run.counters.iterations, a.run.counters.iterations);
+  EXPECT_EQ(b.run.counters.cutbacks, a.run.counters.cutbacks);
+  EXPECT_EQ(b.force.peak(), a.force.peak());
+  EXPECT_EQ(b.final_energies.external_work, a.final_energies.external_work);
+  EXPECT_EQ(b.run.marks_reached, a.run.marks_reached);
+}
+
+// Stopped (as a kill would) by `stop`, then resumed from the last checkpoint.
+void stop_and_resume(const FormingScene& s, const std::string& name, RunControl stop) {
+  const fs::path ref = temp(name + "_ref"), dir = temp(name);
+  const FormingResult a = run(s, ref);
+  ASSERT_TRUE(a.ok()) << a.message;
+  const FormingResult stopped = run(s, dir, stop);
+  ASSERT_EQ(stopped.status, RunStatus::stopped) << stopped.message;
+  ASSERT_TRUE(fs::exists(dir / "checkpoint" / "state.bin"));
+  RunControl resume;
+  resume.resume = true;
+  const FormingResult b = run(s, dir, resume);
+  ASSERT_TRUE(b.ok()) << b.message;
+  EXPECT_GE(b.run.resumed_at_mark, 0);
+  std::printf("%s: %d increments, %d checkpoints in the stopped run (%zu bytes), resumed at mark %d\n", name.c_str(),
+              a.run.counters.increments, stopped.run.checkpoints.written, stopped.run.checkpoints.bytes, b.run.resumed_at_mark);
+  expect_same(ref, a, dir, b);
+  fs::remove_all(ref);
+  fs::remove_all(dir);
+}
+
+TEST(FormingResume, IndentLineStoppedMidwayResumesBitForBit) {
+  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_line.toml");
+  s.checkpoint_increments = 3;
+  RunControl stop;
+  stop.stop_after_increments = 7;  // checkpoint after 6
+  stop_and_resume(s, "indent_line", stop);
+}
+
+TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
+  const fs::path file = test::write_tiny_line(temp("line.toml"), "checkpoint_increments = 10\n");
+  const FormingScene s = read_forming_scene(file.string());
+  RunControl at_c;
+  at_c.stop_after_marks = 2;  // B and C reached: the section at C is written before the stop
+  stop_and_resume(s, "line_at_c", at_c);
+  RunControl mid;
+  mid.stop_after_increments = 57;  // between C and D, 7 increments after a checkpoint
+  stop_and_resume(s, "line_mid", mid);
+  fs::remove(file);
+}
+
+TEST(FormingResume, AnotherSceneIsRefusedBeforeAnyOutputIsTouched) {
+  const fs::path file = test::write_tiny_line(temp("line_a.toml"), "checkpoint_increments = 10\n");
+  const fs::path dir = temp("refused");
+  RunControl stop;
+  stop.stop_after_increments = 15;
+  ASSERT_EQ(run(read_forming_scene(file.string()), dir, stop).status, RunStatus::stopped);
+  const std::string before = slurp(dir / "force.csv") + slurp(dir / "summary.json");
+  const fs::path other = test::write_tiny_line(temp("line_b.toml"), "checkpoint_increments = 11\n");
+  RunControl resume;
+  resume.resume = true;
+  try {
+    run(read_forming_scene(other.string()), dir, resume);
+    ADD_FAILURE() << "resumed with another scene";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.file(), (dir / "checkpoint" / "state.bin").string());
+    EXPECT_NE(std::string(e.what()).find("written with another scene"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(slurp(dir / "force.csv") + slurp(dir / "summary.json"), before);
+  fs::remove_all(dir);
+  fs::remove(file);
+  fs::remove(other);
+}
+
+}  // namespace
+}  // namespace spifit::scene
