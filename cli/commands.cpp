@@ -3,6 +3,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/input_reference.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "reports/card_export.hpp"
 
@@ -124,6 +125,30 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       for (const auto& w : result->warnings) std::printf("  warning: %s\n", w.c_str());
     }
     exit_code = 0;
+  });
+}
+
+void add_inputs_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  struct Opts { std::string kind; bool markdown = false; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("inputs", "List the scene kinds, or one kind's keys (unit, valid values, meaning) and observables");
+  cmd->add_option("KIND", o->kind, "a scene kind (e.g. cone); none: every kind");
+  cmd->add_flag("--markdown", o->markdown, "print the whole reference as Markdown (docs/input-reference.md)");
+  cmd->callback([o, &g, &exit_code] {
+    exit_code = 0;
+    if (o->markdown) {
+      std::cout << scene::input_reference_markdown();
+      return;
+    }
+    if (o->kind.empty()) {
+      if (g.quiet) return;
+      for (const auto& k : scene::scene_kinds())
+        std::printf("%-16s %-16s %s%s\n", k.name.c_str(), k.family.c_str(), k.doc.c_str(), k.resumable ? " [resumable]" : "");
+      return;
+    }
+    const scene::SceneKind* k = scene::find_scene_kind(o->kind);
+    if (!k) throw io::InputError("", "KIND", o->kind, "unknown scene kind (known: " + scene::scene_kind_names() + ")");
+    if (!g.quiet) std::cout << scene::kind_reference_markdown(*k);
   });
 }
 

@@ -17,6 +17,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
+void add_inputs_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_scan_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, const std::string& command_line);
 

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   spifit::cli::add_sweep_command(app, g, exit_code);
   spifit::cli::add_report_command(app, g, exit_code);
   spifit::cli::add_scan_command(app, g, exit_code);
+  spifit::cli::add_inputs_command(app, g, exit_code);
   std::string command_line = "spifit";
   for (int i = 1; i < argc; ++i) command_line += std::string(" ") + argv[i];
   spifit::cli::add_synth_command(app, g, exit_code, command_line);

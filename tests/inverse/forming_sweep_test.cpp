@@ -232,7 +232,7 @@ TEST(FormingSweep, InputErrorsNameFileAndKey) {
   expect_error(sweep_head(scene, "\"peak_fy\"") + "[inputs.\"contact.penalty\"]\nvalues = [1.0]\n", {"sweep.metrics", "ripple_fz"});
 }
 
-// The bundled forming sweep files read (the runs are on demand: README, docs/cli.md).
+// The bundled FE sweep files read (the runs are on demand: README, docs/cli.md).
 TEST(FormingSweep, BundledSweepFilesRead) {
   const auto p = inverse::read_sweep_file(src("experiments/aa3003o/sweep_indent_penalty.toml"));
   ASSERT_EQ(p.inputs.size(), 1u);
@@ -246,4 +246,9 @@ TEST(FormingSweep, BundledSweepFilesRead) {
   ASSERT_TRUE(l.options.window);
   EXPECT_EQ((*l.options.window)[0], 25.0);
   EXPECT_EQ((*l.options.window)[1], 85.0);
+  const auto c = inverse::read_sweep_file(src("experiments/aa3003o/sweep_cone70_friction.toml"));
+  EXPECT_EQ(c.kind->name, "cone");
+  EXPECT_EQ(c.inputs[0].values, (std::vector<double>{0.0, 0.05, 0.15}));
+  ASSERT_TRUE(c.options.contours);
+  EXPECT_EQ(c.options.contours->first, 3);
 }
