@@ -1,4 +1,5 @@
 #include "cli/commands.hpp"
+#include "cli/cli_errors.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
@@ -110,7 +111,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const scene::SceneKind* kind = scene::find_scene_kind(scene->kind());
     if (o->resume && !kind->resumable)
       throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + scene->kind() + " (it writes no checkpoints)");
-    const auto dir = o->resume ? io::OutputDirectory::existing(o->out) : io::OutputDirectory::prepare(o->out, o->force, scene->input_files());
+    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, scene->input_files());
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
     if (g.verbose) control.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "  %s\n", e.text.c_str()); };

@@ -1,5 +1,6 @@
 // `spifit fit` and `spifit synth`: thin wrappers over inverse/.
 #include "cli/commands.hpp"
+#include "cli/cli_errors.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
@@ -39,7 +40,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file);
-    const auto dir = io::OutputDirectory::prepare(o->out, o->force, {o->file, problem.parameters->base().file});
+    const auto dir = prepare_output(o->out, o->force, {o->file, problem.parameters->base().file});
     nlohmann::json running{{"status", "running"}, {"fit_file", o->file}};
     dir.write_file("summary.json", running.dump(2) + "\n");
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -100,7 +101,8 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
     if (!o->material.empty()) scene.card = material::load_material_card(o->material);
     if (std::filesystem::exists(o->out) && !o->force) throw io::InputError("", "--out", o->out, "file exists; pass --force to overwrite");
     o->syn.command = command_line;
-    const std::string csv = inverse::synthetic_measurement_csv(scene, o->syn);
+    const std::string csv = with_option_names({{"x", "--x"}, {"y", "--y"}, {"every", "--every"}, {"noise", "--noise"}},
+                                              [&] { return inverse::synthetic_measurement_csv(scene, o->syn); });
     const std::string tmp = o->out + ".tmp";
     {
       std::ofstream f(tmp, std::ios::trunc);
@@ -159,7 +161,7 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
   cmd->callback([o, &g, &exit_code] {
     const auto spec = inverse::read_sweep_file(o->file);
-    const auto dir = io::OutputDirectory::prepare(o->out, o->force, inverse::sweep_input_files(spec));
+    const auto dir = prepare_output(o->out, o->force, inverse::sweep_input_files(spec));
     dir.write_file("summary.json", nlohmann::json{{"status", "running"}, {"kind", "sweep"}}.dump(2) + "\n");
     inverse::SweepRunOptions ro;
     ro.threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));

@@ -1,6 +1,7 @@
 // `spifit scan`: a laser-scan point cloud averaged into a cross section with a 90 % band
 // (inverse/scan_section.hpp; thesis §8.2.1, footnotes 4 and 5).
 #include "cli/commands.hpp"
+#include "cli/cli_errors.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
@@ -12,16 +13,21 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <map>
 #include <stdexcept>
 
 namespace spifit::cli {
 namespace {
 
-// "KEY = VALUE: message" (ScanSectionOptions::validate) as an InputError.
+// "FIELD = VALUE: message" (ScanSectionOptions::validate) as an InputError on the option.
 [[noreturn]] void option_error(const std::string& text) {
+  static const std::map<std::string, std::string> option{{"bin", "--bin"}, {"origin_z", "--origin-z"}, {"min_points", "--min-points"},
+                                                          {"band", "--band"}, {"shift_thickness", "--shift-by-half-thickness"}};
   const std::size_t eq = text.find(" = "), colon = text.find(": ", eq == std::string::npos ? 0 : eq);
   if (eq == std::string::npos || colon == std::string::npos) throw io::InputError("", "", "", text);
-  throw io::InputError("", text.substr(0, eq), text.substr(eq + 3, colon - eq - 3), text.substr(colon + 2));
+  const std::string field = text.substr(0, eq);
+  const auto it = option.find(field);
+  throw io::InputError("", it == option.end() ? field : it->second, text.substr(eq + 3, colon - eq - 3), text.substr(colon + 2));
 }
 
 std::vector<std::string> section_plot(const std::filesystem::path& dir, const inverse::ScanSection& s, const std::string& cloud) {
@@ -91,7 +97,7 @@ void add_scan_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     } catch (const std::invalid_argument& e) {
       throw io::InputError(o->cloud, "--min-points", std::to_string(opts.min_points), e.what());
     }
-    const auto dir = io::OutputDirectory::prepare(o->out, o->force, {o->cloud});
+    const auto dir = prepare_output(o->out, o->force, {o->cloud});
     const bool by_angle = opts.binning == inverse::ScanBinning::angle;
     char head[600];
     std::snprintf(head, sizeof head,

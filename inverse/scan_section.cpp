@@ -47,12 +47,12 @@ std::vector<Eigen::Vector3d> read_scan_cloud(const std::string& path) {
 
 std::string ScanSectionOptions::validate() const {
   const auto bad = [](const std::string& key, double v, const std::string& what) { return key + " = " + io::format_number(v) + ": " + what; };
-  if (!(bin > 0.0 && std::isfinite(bin))) return bad("--bin", bin, "must be > 0");
-  if (binning == ScanBinning::angle && !(bin <= 90.0)) return bad("--bin", bin, "an angle bin must be at most 90 deg");
-  if (!std::isfinite(origin_z)) return bad("--origin-z", origin_z, "must be finite");
-  if (min_points < 1) return bad("--min-points", min_points, "must be >= 1");
-  if (!(band > 0.0 && band < 1.0)) return bad("--band", band, "must lie in (0, 1)");
-  if (!std::isfinite(shift_thickness)) return bad("--shift-by-half-thickness", shift_thickness, "must be finite");
+  if (!(bin > 0.0 && std::isfinite(bin))) return bad("bin", bin, "must be > 0");
+  if (binning == ScanBinning::angle && !(bin <= 90.0)) return bad("bin", bin, "an angle bin must be at most 90 deg");
+  if (!std::isfinite(origin_z)) return bad("origin_z", origin_z, "must be finite");
+  if (min_points < 1) return bad("min_points", min_points, "must be >= 1");
+  if (!(band > 0.0 && band < 1.0)) return bad("band", band, "must lie in (0, 1)");
+  if (!std::isfinite(shift_thickness)) return bad("shift_thickness", shift_thickness, "must be finite");
   return "";
 }
 

@@ -25,10 +25,10 @@ double GaussianNoise::next() {
 
 std::string synthetic_measurement_csv(const scene::MaterialPointScene& sc, const SyntheticOptions& o) {
   scene::CurvePoint<double> probe;
-  if (!scene::curve_abscissa(probe, o.x)) throw io::InputError("", "--x", o.x, std::string("not an abscissa (known: ") + scene::curve_abscissa_names() + ")");
-  if (!scene::curve_response(probe, o.y)) throw io::InputError("", "--y", o.y, std::string("not a response (known: ") + scene::curve_response_names() + ")");
-  if (o.every < 1) throw io::InputError("", "--every", std::to_string(o.every), "must be >= 1");
-  if (!(o.noise >= 0)) throw io::InputError("", "--noise", io::format_number(o.noise), "must be >= 0");
+  if (!scene::curve_abscissa(probe, o.x)) throw io::InputError("", "x", o.x, std::string("not an abscissa (known: ") + scene::curve_abscissa_names() + ")");
+  if (!scene::curve_response(probe, o.y)) throw io::InputError("", "y", o.y, std::string("not a response (known: ") + scene::curve_response_names() + ")");
+  if (o.every < 1) throw io::InputError("", "every", std::to_string(o.every), "must be >= 1");
+  if (!(o.noise >= 0)) throw io::InputError("", "noise", io::format_number(o.noise), "must be >= 0");
   const auto r = scene::run_material_point(sc.card.params, sc.setup);
   if (!r.ok) throw std::runtime_error("scene " + sc.name + " failed: " + r.message);
   GaussianNoise noise(o.seed);

@@ -10,26 +10,27 @@ namespace spifit::io {
 
 namespace fs = std::filesystem;
 
-OutputDirectory OutputDirectory::prepare(const std::string& path, bool force, const std::vector<std::string>& inputs) {
+OutputDirectory OutputDirectory::prepare(const std::string& path, bool replace, const std::vector<std::string>& inputs) {
+  using R = OutputDirectoryError::Reason;
   const fs::path p(path);
   std::error_code ec;
   if (fs::exists(p, ec)) {
-    if (!fs::is_directory(p, ec)) throw InputError("", "--out", path, "exists and is not a directory");
+    if (!fs::is_directory(p, ec)) throw OutputDirectoryError(R::not_a_directory, path, "exists and is not a directory");
     const bool empty = fs::is_empty(p, ec);
-    if (ec) throw InputError("", "--out", path, "cannot read the output directory: " + ec.message());
-    if (!empty && !force) throw InputError("", "--out", path, "output directory exists and is not empty; pass --force to replace it");
+    if (ec) throw OutputDirectoryError(R::cannot_clear, path, "cannot read the output directory: " + ec.message());
+    if (!empty && !replace) throw OutputDirectoryError(R::not_empty, path, "output directory exists and is not empty");
     if (!empty) {
-      // --force replaces an earlier spifit result, never an arbitrary directory, and never
-      // one that holds this run's own inputs.
+      // Only an earlier spifit result is replaced, never an arbitrary directory, and never one
+      // that holds this run's own inputs.
       if (!fs::exists(p / "summary.json", ec)) {
-        throw InputError("", "--out", path, "--force only replaces a spifit output directory (one with summary.json); this one has none");
+        throw OutputDirectoryError(R::not_spifit_output, path, "only a spifit output directory (one with summary.json) is replaced; this one has none");
       }
       const fs::path dir = fs::weakly_canonical(p, ec);
       for (const auto& in : inputs) {
         const fs::path f = fs::weakly_canonical(in, ec);
         const auto rel = f.lexically_relative(dir);
         if (!rel.empty() && *rel.begin() != "..") {
-          throw InputError("", "--out", path, "holds an input of this run (" + in + "); choose another output directory");
+          throw OutputDirectoryError(R::holds_input, path, "holds an input of this run (" + in + "); choose another output directory");
         }
       }
       std::string failed;
@@ -39,18 +40,19 @@ OutputDirectory OutputDirectory::prepare(const std::string& path, bool force, co
         if (rm && failed.empty()) failed = it->path().string() + ": " + rm.message();
       }
       if (ec && failed.empty()) failed = ec.message();
-      if (!failed.empty()) throw InputError("", "--out", path, "cannot clear the output directory: " + failed);
+      if (!failed.empty()) throw OutputDirectoryError(R::cannot_clear, path, "cannot clear the output directory: " + failed);
     }
   } else {
     fs::create_directories(p, ec);
-    if (ec) throw InputError("", "--out", path, "cannot create the output directory: " + ec.message());
+    if (ec) throw OutputDirectoryError(R::cannot_create, path, "cannot create the output directory: " + ec.message());
   }
   return OutputDirectory(p);
 }
 
 OutputDirectory OutputDirectory::existing(const std::string& path) {
   std::error_code ec;
-  if (!fs::is_directory(path, ec)) throw InputError("", "--out", path, "no output directory to resume (--resume continues an earlier run's directory)");
+  if (!fs::is_directory(path, ec))
+    throw OutputDirectoryError(OutputDirectoryError::Reason::missing, path, "no output directory to resume (a resume continues an earlier run's directory)");
   return OutputDirectory(fs::path(path));
 }
 

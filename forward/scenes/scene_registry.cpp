@@ -6,11 +6,13 @@
 #include "forward/scenes/forming/forming_kind.hpp"
 #include "forward/scenes/material_point/material_point_kind.hpp"
 
+#include <stdexcept>
+
 namespace spifit::scene {
 namespace {
 
-std::vector<SceneKind> all_kinds() {
-  std::vector<SceneKind> k;
+std::deque<SceneKind> all_kinds() {
+  std::deque<SceneKind> k;
   auto add = [&k](std::vector<SceneKind> more) {
     for (auto& x : more) k.push_back(std::move(x));
   };
@@ -22,11 +24,18 @@ std::vector<SceneKind> all_kinds() {
   return k;
 }
 
+std::deque<SceneKind>& registry() {
+  static std::deque<SceneKind> kinds = all_kinds();
+  return kinds;
+}
+
 }  // namespace
 
-const std::vector<SceneKind>& scene_kinds() {
-  static const std::vector<SceneKind> kinds = all_kinds();
-  return kinds;
+const std::deque<SceneKind>& scene_kinds() { return registry(); }
+
+void register_scene_kind(SceneKind kind) {
+  if (find_scene_kind(kind.name)) throw std::invalid_argument("scene kind " + kind.name + " is registered already");
+  registry().push_back(std::move(kind));
 }
 
 const SceneKind* find_scene_kind(const std::string& name) {

@@ -4,13 +4,18 @@
 // its own plus its line in scene_registry.cpp (docs/extending.md).
 #include "forward/scenes/common/scene.hpp"
 
+#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace spifit::scene {
 
-const std::vector<SceneKind>& scene_kinds();
+// In registration order; references stay valid as kinds are added.
+const std::deque<SceneKind>& scene_kinds();
+// Adds a kind defined outside this library (an extension, a test's example kind);
+// std::invalid_argument when its name is taken. Call before the kind is used.
+void register_scene_kind(SceneKind kind);
 // nullptr for an unknown name.
 const SceneKind* find_scene_kind(const std::string& name);
 // "tensile, shear, ..., cone"

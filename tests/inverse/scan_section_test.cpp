@@ -208,7 +208,7 @@ TEST(ScanSection, MalformedCloudsNameFileLineAndValue) {
   fs::remove(f);
   ScanSectionOptions o;
   o.bin = 0.0;
-  EXPECT_EQ(o.validate(), "--bin = 0: must be > 0");
+  EXPECT_EQ(o.validate(), "bin = 0: must be > 0");
   o.bin = 1.0;
   EXPECT_THROW(average_scan_section({{1.0, 0.0, 0.0}}, o), std::invalid_argument);  // fewer than 5 points in every bin
 }

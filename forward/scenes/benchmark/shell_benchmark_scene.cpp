@@ -198,9 +198,9 @@ ShellBenchmarkResult run_shell_benchmark_scene(const ShellBenchmarkScene& scene,
   const solver::NewtonSummary r = solver.solve(1.0, [&](const solver::IncrementReport& ir) {
     const double residual = ir.residual_norms.empty() ? 0.0 : ir.residual_norms.back();
     out.increments.add_row({double(ir.index), ir.lambda, ir.increment, double(ir.iterations), double(ir.line_searches), residual});
-    char line[160];
-    std::snprintf(line, sizeof line, "%d,%.10g,%.6g,%d,%d,%.3e\n", ir.index, ir.lambda, ir.increment, ir.iterations, ir.line_searches, residual);
-    inc += line;
+    char row[160];
+    std::snprintf(row, sizeof row, "%d,%.10g,%.6g,%d,%d,%.3e\n", ir.index, ir.lambda, ir.increment, ir.iterations, ir.line_searches, residual);
+    inc += row;
     write_increments();
     if (pvd && scene.vtu_every > 0 && ir.index % scene.vtu_every == 0) {
       pvd->write_step(ir.lambda, *b.mesh, model::vtu_frame(*b.model));

@@ -38,9 +38,9 @@ std::string Scene::set_input(const std::string& name, double value) {
   return {};
 }
 
-const Observable* SceneKind::find_observable(const std::string& name) const {
+const Observable* SceneKind::find_observable(const std::string& observable) const {
   for (const auto& o : observables)
-    if (o.name == name) return &o;
+    if (o.name == observable) return &o;
   return nullptr;
 }
 

@@ -81,7 +81,7 @@ struct SceneKind {
   std::function<std::unique_ptr<Scene>(const std::string& file)> read;  // io::InputError naming file, key, value
   std::vector<io::InputInfo> inputs;  // the kind's own (the card's parameters come from material_inputs)
   std::vector<Observable> observables;
-  const Observable* find_observable(const std::string& name) const;
+  const Observable* find_observable(const std::string& observable) const;
 };
 
 }  // namespace spifit::scene

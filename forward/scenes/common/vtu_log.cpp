@@ -8,7 +8,7 @@
 
 namespace spifit::scene {
 
-VtuLog::VtuLog(const RunFiles& files, int every, const std::string& stem) : every_(every), files_(files), stem_(stem) {}
+VtuLog::VtuLog(const RunFiles& files, int every, const std::string& stem) : files_(files), stem_(stem), every_(every) {}
 
 void VtuLog::open() {
   if (pvd_ || !files_.enabled()) return;

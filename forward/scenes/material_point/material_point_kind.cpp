@@ -62,8 +62,8 @@ SceneKind material_point_kind(MaterialPointKind kind, const char* doc) {
   k.parallel_sweeps = true;
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
     MaterialPointScene s = read_material_point_scene(file);
-    std::string kind = to_string(s.setup.kind);
-    return std::make_unique<MaterialPointSceneFile>(std::move(kind), std::move(s));
+    std::string name = to_string(s.setup.kind);
+    return std::make_unique<MaterialPointSceneFile>(std::move(name), std::move(s));
   };
   k.observables = material_point_observables();
   return k;
