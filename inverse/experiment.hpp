@@ -1,5 +1,5 @@
 #pragma once
-// An experiment = a scene + what is measured + how residuals are weighted (SPEC §6).
+// An experiment = a scene + what is measured + how residuals are weighted (docs/identification.md).
 // The identification sees the forward model only through this interface: parameter values
 // in, conditioned residuals out. Material-point experiments evaluate with Jets (exact
 // derivatives); black-box FE experiments (later issues) will report supports_jets() = false

@@ -1,5 +1,5 @@
 #pragma once
-// Laser-scan processing as the thesis did it (SPEC §4; thesis §8.2.1 and its footnotes 4, 5):
+// Laser-scan processing as the thesis did it (thesis §8.2.1 and its footnotes 4, 5):
 // a point cloud of the part's outer surface, centred on the cone axis (z axis), is averaged
 // into one cross section with a 90 % band, then shifted by half the thickness to compare with
 // the simulated mid-surface.

@@ -1,5 +1,5 @@
 #pragma once
-// Uncertainty and identifiability of a least-squares fit (SPEC §6): covariance
+// Uncertainty and identifiability of a least-squares fit (docs/identification.md): covariance
 // sigma^2 (J^T J)^+ with sigma^2 = SSE / (m - p), from a dense SVD of the Jacobian scaled by
 // the parameter magnitudes, so that a rank-deficient Jacobian is reported, not crashed on.
 #include <Eigen/Core>

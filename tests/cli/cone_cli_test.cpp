@@ -1,4 +1,4 @@
-// spifit run dispatches kind = "cone" to the cone scene (issue 6): a one-contour pie runs and
+// spifit run dispatches kind = "cone" to the cone scene: a one-contour pie runs and
 // writes its outputs; a bad scene exits 2 with one line naming file and key, before the output
 // directory is touched.
 #include "tests/cli/cli_support.hpp"

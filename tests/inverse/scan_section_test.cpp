@@ -1,4 +1,4 @@
-// Laser-scan processing (SPEC §4; thesis §8.2.1, footnotes 4, 5): synthetic point clouds of
+// Laser-scan processing (thesis §8.2.1, footnotes 4, 5): synthetic point clouds of
 // known surfaces with seeded Gaussian noise. The bin means must recover the surface, the 90 %
 // band must hold about 90 % of the points of a second, independent cloud, the shifts must move
 // the section by T/2 vertically or along the normal; malformed files name file, line and value.

@@ -1,4 +1,4 @@
-(spifit: the line-test tool path of SPEC 3.2 as G-code, tool TIP coordinates, mm)
+(spifit: the line-test tool path A-B-C-D-E of thesis 4.1.1 as G-code, tool TIP coordinates, mm)
 (z = 0 is the sheet's initial top surface; A -> B -> C -> D -> E)
 %
 N10 G21 G90 G17

@@ -1,5 +1,5 @@
 #pragma once
-// The shell element's obstacle course (NUMERICS.md; issue 4): each benchmark builds its mesh,
+// The shell element's obstacle course (docs/shell-benchmarks.md): each benchmark builds its mesh,
 // material, supports and loads, says whether it is a linear or a nonlinear analysis, and
 // extracts one value to compare with a published or closed-form reference. Sources and
 // normalisations: docs/shell-benchmarks.md.

@@ -1,5 +1,5 @@
 #pragma once
-// Observables of the cone scenes (SPEC §4): polar force components at the tool's polar angle,
+// Observables of the cone scenes (thesis §8.3, §9.3): polar force components at the tool's polar angle,
 // where the tool is along an annotated cone path (contour, move kind), and contour averages
 // over the central third of each contour (thesis §8.3, footnote 8).
 #include "forward/mesh/mesh.hpp"
@@ -61,7 +61,7 @@ struct ContourMean {
 // Means of the samples in the central third of each of the first `contours` contours.
 std::vector<ContourMean> contour_means(const ConeTrack& track, const std::vector<ForceSample>& samples, int contours);
 
-// Steady state (SPEC §4; thesis §9.3 uses contours 60-80 of the 100-contour cone70): the mean of
+// Steady state (thesis §9.3 uses contours 60-80 of the 100-contour cone70): the mean of
 // the central-third means of contours `from`..`to` (1-based, path order), over those of them that
 // are completed and have samples (`contours` says how many; 0: NaN means).
 struct SteadyState {
@@ -70,7 +70,7 @@ struct SteadyState {
 };
 SteadyState steady_state(const std::vector<ContourMean>& means, int from, int to);
 
-// Shape section (SPEC §4): the nodes of the initial mesh on the radial line at the polar angle
+// Shape section (thesis §8.2.1, §9.2): the nodes of the initial mesh on the radial line at the polar angle
 // section_angle_deg(pie_angle), sorted by radius (the axis node first). The angle is the middle
 // of the first O-grid sub-sector of disc_mesh, a line of nodes: the pie middle for pies up to
 // 90 deg (22.5 deg for 45, 45 deg for 90), 45 deg for the full disc.

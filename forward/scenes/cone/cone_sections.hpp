@@ -1,5 +1,5 @@
 #pragma once
-// Radial shape sections of a cone (SPEC §4; docs/cone-scene.md "Observables"): the nodes of
+// Radial shape sections of a cone (thesis §8.2.1, §9.2; docs/cone-scene.md "Observables"): the nodes of
 // the initial radial line at the pie middle (cone_observables.hpp, radial_line_nodes) in the
 // current state, with
 //  - the mid-surface point (r, theta, z) and the nodal thickness h;

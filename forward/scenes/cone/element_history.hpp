@@ -1,5 +1,5 @@
 #pragma once
-// History of one element of a cone (SPEC §4; thesis §9.4 follows element 1469 of the fine
+// History of one element of a cone (thesis §9.4 follows element 1469 of the fine
 // 70-degree cone, at r = 75.55 mm, theta = 22.5 deg): strains, curvatures and stresses in the
 // initial polar frame, per integration point through the thickness, after every increment.
 //

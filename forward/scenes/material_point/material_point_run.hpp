@@ -1,5 +1,5 @@
 #pragma once
-// Material-point experiments (SPEC §3): tensile (uniaxial stress at angle alpha to RD),
+// Material-point experiments (thesis App. C): tensile (uniaxial stress at angle alpha to RD),
 // shear and bauschinger (simple shear, with reversals), plane_strain and biaxial (given
 // stress ratio). Plane stress, strain-controlled along a piecewise-linear path of the control
 // strain, recorded at every increment. Templated on the scalar type (double or ceres::Jet).

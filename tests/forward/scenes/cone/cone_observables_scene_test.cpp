@@ -1,4 +1,4 @@
-// The shape, stage and element observables in a run (SPEC §4): one contour of a small 45 deg
+// The shape, stage and element observables in a run: one contour of a small 45 deg
 // cone on a coarse 90 deg pie with [output] history_element; the files exist, have the
 // documented columns and agree with each other.
 #include "forward/io/input_error.hpp"

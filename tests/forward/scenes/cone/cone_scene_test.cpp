@@ -228,7 +228,7 @@ TEST(ConeScene, PieMoveInOneIncrementKeepsTheNextContoursForce) {
   EXPECT_NEAR(fz[1], fz[0], 0.02 * std::abs(fz[0]));
 }
 
-// Energy account (SPEC §4) of two contours of the tiny cone: the tool's work equals the
+// Energy account of two contours of the tiny cone: the tool's work equals the
 // layers' elastic and plastic energy, the shear energy, the penalty energy, the frictional
 // dissipation and the energy released by the contact offset at the thickness updates
 // (model::ModelEnergies). Measured: -0.74 % of the work without friction at 0.5 mm per

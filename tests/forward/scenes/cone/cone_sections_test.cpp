@@ -1,4 +1,4 @@
-// Shape sections of a cone (SPEC §4): top and bottom surfaces along the director, depth, wall
+// Shape sections of a cone (thesis §8.2.1, §9.2): top and bottom surfaces along the director, depth, wall
 // angle, twist, radial elongation, the wall-thickness plateau against the sine law, and the
 // ends of the stages of a multistage path. Synthetic sections with known answers.
 #include "forward/scenes/cone/cone_observable_log.hpp"

@@ -1,4 +1,4 @@
-// Element history (SPEC §4, thesis §9.4): the nearest element, centre strains and curvatures in
+// Element history (thesis §9.4): the nearest element, centre strains and curvatures in
 // the initial polar frame for known homogeneous deformations, tensor rotation, von Mises, and
 // the committed layer stresses of a real ShellModel under a prescribed homogeneous strain.
 #include "forward/element/thickness_rule.hpp"

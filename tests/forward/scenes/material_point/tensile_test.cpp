@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(Cards, TensileVonMisesKinematic,
                          ::testing::Values("aa3003o_c6_ziegler_brick", "aa3003o_c8_ziegler_shell", "aa3003o_c5_af_brick",
                                            "aa3003o_c7_af_shell", "aa3003o_c3c4"));
 
-// The AF saturation limit itself (SPEC §2): offset -> 1.5 Xsat after large strain.
+// The AF saturation limit itself (docs/material-point-scenes.md): offset -> 1.5 Xsat after large strain.
 TEST(TensileVonMisesKinematic, ArmstrongFrederickSaturatesAtOnePointFiveXsat) {
   auto card = test::von_mises_copy(test::card("aa3003o_c7_af_shell"));
   const auto r = scene::run_material_point(card.params, test::tensile(0.0, {1.0}, 400));
