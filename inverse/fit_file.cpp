@@ -68,11 +68,10 @@ ParameterSpec read_parameter(const io::TomlTable& t, const std::string& name, co
 
 }  // namespace
 
-FitProblem read_fit_file(const std::string& path) {
-  const auto root = io::TomlTable::parse_file(path);
-  root.allow_only({"fit", "parameters", "experiment"});
-  FitProblem fp;
-  fp.file = path;
+namespace {
+
+// [fit]: name, starting card, optimiser settings. Returns the card; *normalise = normalise_hill.
+material::MaterialCard read_fit_table(const io::TomlTable& root, const std::string& path, FitProblem& fp, bool* normalise) {
   const auto ft = root.table("fit");
   if (!ft) root.fail("fit", "required table [fit] is missing");
   ft->allow_only({"name", "description", "card", "normalise_hill", "algorithm", "max_iterations", "function_tolerance",
@@ -84,8 +83,8 @@ FitProblem read_fit_file(const std::string& path) {
   fp.description = ft->string("description", "");
   const std::string card_path = resolve(path, ft->string("card"));
   if (!fs::exists(card_path)) ft->fail("card", "starting card not found at " + card_path);
-  const auto card = material::load_material_card(card_path);
-  const bool normalise = ft->boolean("normalise_hill", true);
+  auto card = material::load_material_card(card_path);
+  *normalise = ft->boolean("normalise_hill", true);
   auto& st = fp.settings;
   st.algorithm = ft->string("algorithm", st.algorithm);
   if (!is_fit_algorithm(st.algorithm)) ft->fail("algorithm", std::string("unknown algorithm (known: ") + fit_algorithm_names() + ")");
@@ -97,7 +96,11 @@ FitProblem read_fit_file(const std::string& path) {
   for (const char* k : {"function_tolerance", "parameter_tolerance", "gradient_tolerance"}) {
     if (ft->has(k) && !(ft->number(k) >= 0)) ft->fail(k, "must be >= 0");
   }
+  return card;
+}
 
+// [parameters."NAME"]: the parameter set over the card.
+void read_parameters(const io::TomlTable& root, const material::MaterialCard& card, bool normalise, FitProblem& fp) {
   std::vector<ParameterSpec> specs;
   const auto pt = root.table("parameters");
   if (!pt) root.fail("parameters", "required table [parameters] is missing");
@@ -116,8 +119,11 @@ FitProblem read_fit_file(const std::string& path) {
     fp.notes.push_back("normalise_hill: the starting card has G + H = " + format_number(card.params.G + card.params.H) +
                        "; the fit uses H = 2 - G");
   }
-  // The card must stay valid at the start and with each free parameter at either bound
-  // (else the fit could return a card spifit itself rejects).
+}
+
+// The card must stay valid at the start and with each free parameter at either bound (else the
+// fit could return a card spifit itself rejects).
+void check_card_at_bounds(const std::string& path, const FitProblem& fp) {
   auto check_card = [&](const std::vector<double>& internal, const std::string& key, double value, const std::string& where) {
     try {
       material::validate_material_card(fp.parameters->card_for(internal));
@@ -137,80 +143,103 @@ FitProblem read_fit_file(const std::string& path) {
       check_card(x, "parameters." + s.name + (side == 0 ? ".lower" : ".upper"), side == 0 ? s.lower : s.upper, "this bound");
     }
   }
+}
 
+// A scalar [[experiment]] (an observable of a material-point scene against a value).
+std::unique_ptr<Experiment> scalar_experiment(const io::TomlTable& e, const std::string& name, scene::MaterialPointScene sc, double noise,
+                                              double weight) {
+  ScalarExperimentSpec s;
+  s.name = name;
+  s.scene = std::move(sc);
+  s.observable = e.string("observable");
+  if (!is_scalar_observable(s.observable)) e.fail("observable", std::string("unknown observable (known: ") + scalar_observable_names() + ")");
+  if (s.observable == "reverse_yield_stress" && s.scene.setup.strain_path.size() < 2)
+    e.fail("observable", "reverse_yield_stress needs a scene whose strain path reverses");
+  if (s.observable == "r_value" || s.observable == "yield_stress") {
+    if (s.scene.setup.kind != scene::MaterialPointKind::tensile) e.fail("observable", "r_value and yield_stress need a tensile scene");
+  }
+  s.value = e.number("value");
+  s.noise = noise;
+  s.weight = weight;
+  s.source = e.string("source", "");
+  return make_scalar_experiment(std::move(s));
+}
+
+// A curve [[experiment]]: a column of a measurement CSV against a simulated curve's.
+std::unique_ptr<Experiment> curve_experiment(const io::TomlTable& e, const std::string& path, const std::string& name,
+                                             scene::MaterialPointScene sc, double noise, double weight) {
+  CurveExperimentSpec c;
+  c.name = name;
+  c.scene = std::move(sc);
+  c.noise = noise;
+  c.weight = weight;
+  c.x = e.string("x", "strain");
+  c.y = e.string("y", "stress");
+  scene::CurvePoint<double> probe;
+  if (!scene::curve_abscissa(probe, c.x)) e.fail("x", std::string("not an abscissa of a simulated curve (known: ") + scene::curve_abscissa_names() + ")");
+  if (!scene::curve_response(probe, c.y)) e.fail("y", std::string("not a column of a simulated curve (known: ") + scene::curve_response_names() + ")");
+  const std::string data_path = resolve(path, e.string("data"));
+  const auto table = read_measurement_csv(data_path);
+  c.xs = table.column(c.x);
+  c.ys = table.column(c.y);
+  c.x_unit = table.units.at(c.x);
+  c.y_unit = table.units.at(c.y);
+  if (e.has("weight_column")) {
+    c.point_weights = table.column(e.string("weight_column"));
+    for (double w : c.point_weights) if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
+  }
+  bool monotone = true;
+  const auto [x_lo, x_hi] = abscissa_range(c.scene.setup, c.x, &monotone);
+  if (!monotone) e.fail("x", "the scene's strain reverses: use x = \"cumulative_strain\" (or \"increment\") for curves that reverse");
+  for (std::size_t i = 0; i < c.xs.size(); ++i) {
+    if (i > 0 && !(c.xs[i] > c.xs[i - 1]))
+      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
+    if (c.xs[i] < x_lo - 1e-12 || c.xs[i] > x_hi + 1e-12)
+      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]),
+                       "outside the simulated range [" + format_number(x_lo) + ", " + format_number(x_hi) + "] of scene " + c.scene.name);
+  }
+  return make_curve_experiment(std::move(c));
+}
+
+std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::string& path, const FitProblem& fp) {
+  const bool scalar = e.has("observable");
+  if (scalar) e.allow_only({"name", "scene", "observable", "value", "noise", "weight", "source"});
+  else e.allow_only({"name", "scene", "data", "x", "y", "noise", "weight", "weight_column"});
+  const std::string scene_path = resolve(path, e.string("scene"));
+  if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
+  auto sc = scene::read_material_point_scene(scene_path);
+  const std::string name = e.string("name", sc.name);
+  // Names become file names (DIR/experiments/NAME.csv): plain and unique.
+  const bool plain = !name.empty() && name[0] != '.' &&
+                     std::all_of(name.begin(), name.end(), [](char ch) {
+                       return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
+                     });
+  if (!plain) e.fail("name", "experiment names may use letters, digits, _ - . and must not start with '.'");
+  for (const auto& other : fp.experiments) {
+    if (other->name() == name) e.fail("name", "two experiments have this name");
+  }
+  const double noise = e.number("noise", 0.0);
+  if (noise < 0) e.fail("noise", "must be >= 0 (0: condition by the range of the data)");
+  const double weight = e.number("weight", 1.0);
+  if (!(weight > 0)) e.fail("weight", "must be > 0");
+  if (scalar) return scalar_experiment(e, name, std::move(sc), noise, weight);
+  return curve_experiment(e, path, name, std::move(sc), noise, weight);
+}
+
+}  // namespace
+
+FitProblem read_fit_file(const std::string& path) {
+  const auto root = io::TomlTable::parse_file(path);
+  root.allow_only({"fit", "parameters", "experiment"});
+  FitProblem fp;
+  fp.file = path;
+  bool normalise = true;
+  const material::MaterialCard card = read_fit_table(root, path, fp, &normalise);
+  read_parameters(root, card, normalise, fp);
+  check_card_at_bounds(path, fp);
   const auto exps = root.table_array("experiment");
   if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
-  for (const auto& e : exps) {
-    const bool scalar = e.has("observable");
-    if (scalar) e.allow_only({"name", "scene", "observable", "value", "noise", "weight", "source"});
-    else e.allow_only({"name", "scene", "data", "x", "y", "noise", "weight", "weight_column"});
-    const std::string scene_path = resolve(path, e.string("scene"));
-    if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
-    auto sc = scene::read_material_point_scene(scene_path);
-    const std::string name = e.string("name", sc.name);
-    // Names become file names (DIR/experiments/NAME.csv): plain and unique.
-    const bool plain = !name.empty() && name[0] != '.' &&
-                       std::all_of(name.begin(), name.end(), [](char ch) {
-                         return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
-                       });
-    if (!plain) e.fail("name", "experiment names may use letters, digits, _ - . and must not start with '.'");
-    for (const auto& other : fp.experiments) {
-      if (other->name() == name) e.fail("name", "two experiments have this name");
-    }
-    const double noise = e.number("noise", 0.0);
-    if (noise < 0) e.fail("noise", "must be >= 0 (0: condition by the range of the data)");
-    const double weight = e.number("weight", 1.0);
-    if (!(weight > 0)) e.fail("weight", "must be > 0");
-    if (scalar) {
-      ScalarExperimentSpec s;
-      s.name = name;
-      s.scene = std::move(sc);
-      s.observable = e.string("observable");
-      if (!is_scalar_observable(s.observable)) e.fail("observable", std::string("unknown observable (known: ") + scalar_observable_names() + ")");
-      if (s.observable == "reverse_yield_stress" && s.scene.setup.strain_path.size() < 2)
-        e.fail("observable", "reverse_yield_stress needs a scene whose strain path reverses");
-      if (s.observable == "r_value" || s.observable == "yield_stress") {
-        if (s.scene.setup.kind != scene::MaterialPointKind::tensile) e.fail("observable", "r_value and yield_stress need a tensile scene");
-      }
-      s.value = e.number("value");
-      s.noise = noise;
-      s.weight = weight;
-      s.source = e.string("source", "");
-      fp.experiments.push_back(make_scalar_experiment(std::move(s)));
-      continue;
-    }
-    CurveExperimentSpec c;
-    c.name = name;
-    c.scene = std::move(sc);
-    c.noise = noise;
-    c.weight = weight;
-    c.x = e.string("x", "strain");
-    c.y = e.string("y", "stress");
-    scene::CurvePoint<double> probe;
-    if (!scene::curve_abscissa(probe, c.x)) e.fail("x", std::string("not an abscissa of a simulated curve (known: ") + scene::curve_abscissa_names() + ")");
-    if (!scene::curve_response(probe, c.y)) e.fail("y", std::string("not a column of a simulated curve (known: ") + scene::curve_response_names() + ")");
-    const std::string data_path = resolve(path, e.string("data"));
-    const auto table = read_measurement_csv(data_path);
-    c.xs = table.column(c.x);
-    c.ys = table.column(c.y);
-    c.x_unit = table.units.at(c.x);
-    c.y_unit = table.units.at(c.y);
-    if (e.has("weight_column")) {
-      c.point_weights = table.column(e.string("weight_column"));
-      for (double w : c.point_weights) if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
-    }
-    bool monotone = true;
-    const auto [x_lo, x_hi] = abscissa_range(c.scene.setup, c.x, &monotone);
-    if (!monotone) e.fail("x", "the scene's strain reverses: use x = \"cumulative_strain\" (or \"increment\") for curves that reverse");
-    for (std::size_t i = 0; i < c.xs.size(); ++i) {
-      if (i > 0 && !(c.xs[i] > c.xs[i - 1]))
-        throw InputError(data_path, "column " + c.x, format_number(c.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
-      if (c.xs[i] < x_lo - 1e-12 || c.xs[i] > x_hi + 1e-12)
-        throw InputError(data_path, "column " + c.x, format_number(c.xs[i]),
-                         "outside the simulated range [" + format_number(x_lo) + ", " + format_number(x_hi) + "] of scene " + c.scene.name);
-    }
-    fp.experiments.push_back(make_curve_experiment(std::move(c)));
-  }
+  for (const auto& e : exps) fp.experiments.push_back(read_experiment(e, path, fp));
   return fp;
 }
 

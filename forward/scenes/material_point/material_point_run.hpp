@@ -125,6 +125,61 @@ void find_offset_yield(MaterialPointDriver<T>& drv, const PointState<T>& before,
   out.offset_yield_strain = s_root.control_strain;
 }
 
+// One point of the curve at the driver's current state.
+template <typename T>
+CurvePoint<T> curve_point(const MaterialPointDriver<T>& drv, int c, int inc, int seg, double cumulative) {
+  const auto& s = drv.state();
+  CurvePoint<T> p;
+  p.increment = inc;
+  p.segment = seg;
+  p.control_strain = s.control_strain;
+  p.cumulative_strain = cumulative;
+  const T J = drv.jacobian(s);
+  p.stress_kirchhoff = drv.stress_loading(s.material)(c);
+  p.stress = p.stress_kirchhoff / J;
+  p.strain_loading = s.strain;
+  p.thickness_strain = drv.thickness_strain(s);
+  p.stress_material = s.material.stress / J;
+  p.plastic_strain = s.material.plastic_strain;
+  const T xzz = s.material.back_stress_zz;
+  p.back_stress << s.material.back_stress(0) + xzz, s.material.back_stress(1) + xzz, xzz, s.material.back_stress(2);
+  p.eqps = s.material.eqps;
+  return p;
+}
+
+// The r-value at the control strain r_strain, reached by a side run from `before` (the state at
+// the start of the increment that crosses it): the ratio of the width to the thickness
+// components of the flow direction. The driver is put back as it was.
+template <typename T>
+void measure_r_value(MaterialPointDriver<T>& drv, const material::ReturnMapping<T, 3>& law, const PointState<T>& before, double r_strain,
+                     MaterialPointResult<T>& out) {
+  const auto events_before = drv.yield_events();
+  const auto counters_before = drv.counters();
+  DriverStatus st = drv.advance(r_strain - before.control_strain);
+  if (st.ok && value_of(drv.state().material.eqps) > 0.0) {
+    const auto n_m = law.flow_direction(drv.state().material);
+    const auto n_l = drv.to_loading_strain(n_m);
+    const T n_zz = -(n_m(0) + n_m(1));
+    out.r_value = n_l(1) / n_zz;
+  }
+  drv.set_state(before);
+  drv.set_yield_events(events_before);
+  drv.set_counters(counters_before);
+}
+
+// The 0.2 %-offset yield stress inside the increment from `before` of size d (find_offset_yield);
+// the driver is put back at the increment's end, the side runs not counted as work of the curve.
+template <typename T>
+void measure_offset_yield(MaterialPointDriver<T>& drv, const PointState<T>& before, double d, double offset, MaterialPointResult<T>& out) {
+  const PointState<T> after = drv.state();
+  const auto events_after = drv.yield_events();
+  const auto counters_after = drv.counters();
+  find_offset_yield(drv, before, d, offset, out);
+  drv.set_state(after);
+  drv.set_yield_events(events_after);
+  drv.set_counters(counters_after);
+}
+
 template <typename T>
 MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& params, const MaterialPointSetup& setup) {
   check_setup(setup);
@@ -134,31 +189,10 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
   const int c = loading_control(setup).control;
   const bool tensile = setup.kind == MaterialPointKind::tensile;
 
-  auto record = [&](int inc, int seg, double cumulative) {
-    const auto& s = drv.state();
-    CurvePoint<T> p;
-    p.increment = inc;
-    p.segment = seg;
-    p.control_strain = s.control_strain;
-    p.cumulative_strain = cumulative;
-    const T J = drv.jacobian(s);
-    p.stress_kirchhoff = drv.stress_loading(s.material)(c);
-    p.stress = p.stress_kirchhoff / J;
-    p.strain_loading = s.strain;
-    p.thickness_strain = drv.thickness_strain(s);
-    p.stress_material = s.material.stress / J;
-    p.plastic_strain = s.material.plastic_strain;
-    const T xzz = s.material.back_stress_zz;
-    p.back_stress << s.material.back_stress(0) + xzz, s.material.back_stress(1) + xzz, xzz, s.material.back_stress(2);
-    p.eqps = s.material.eqps;
-    out.curve.push_back(p);
-  };
-  auto axial_plastic = [&](const PointState<T>& s) { return axial_plastic_strain(drv, s); };
-
   // Increments per segment, proportional to its length.
   double total = 0.0, prev = 0.0;
   for (double t : setup.strain_path) { total += std::abs(t - prev); prev = t; }
-  record(0, 0, 0.0);
+  out.curve.push_back(curve_point(drv, c, 0, 0, 0.0));
   int inc = 0;
   double cumulative = 0.0;
   prev = 0.0;
@@ -180,25 +214,13 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
     for (int k = 1; k <= n; ++k) {
       const double goal = k == n ? target : prev + (target - prev) * static_cast<double>(k) / n;
       const PointState<T> before = drv.state();
-      const auto events_before = drv.yield_events();
-      const auto counters_before = drv.counters();
       const double d = goal - before.control_strain;
       const bool first_stretch = tensile && !reversed;
       // r-value at an exact strain (tensile, first monotonic stretch); the crossing is tested
       // on the grid of increment goals, so a strain on a boundary is found once.
       if (first_stretch && setup.want_r_value && !out.r_value && (last_goal - setup.r_value_strain) * (goal - setup.r_value_strain) <= 0.0 &&
-          goal != last_goal) {
-        DriverStatus st = drv.advance(setup.r_value_strain - before.control_strain);
-        if (st.ok && value_of(drv.state().material.eqps) > 0.0) {
-          const auto n_m = law.flow_direction(drv.state().material);
-          const auto n_l = drv.to_loading_strain(n_m);
-          const T n_zz = -(n_m(0) + n_m(1));
-          out.r_value = n_l(1) / n_zz;
-        }
-        drv.set_state(before);
-        drv.set_yield_events(events_before);
-        drv.set_counters(counters_before);
-      }
+          goal != last_goal)
+        measure_r_value(drv, law, before, setup.r_value_strain, out);
       last_goal = goal;
       DriverStatus st = drv.advance(d);
       if (!st.ok) {
@@ -209,16 +231,10 @@ MaterialPointResult<T> run_material_point(const material::MaterialParams<T>& par
       ++inc;
       cumulative += std::abs(d);
       // 0.2 %-offset yield stress: root of eps_p_ll(x) = offset inside this increment.
-      if (first_stretch && setup.want_offset_yield && !out.offset_yield_stress && value_of(axial_plastic(drv.state())) >= setup.offset_strain) {
-        const PointState<T> after = drv.state();
-        const auto events_after = drv.yield_events();
-        const auto counters_after = drv.counters();
-        find_offset_yield(drv, before, d, setup.offset_strain, out);
-        drv.set_state(after);
-        drv.set_yield_events(events_after);
-        drv.set_counters(counters_after);  // side runs are not counted as work of the curve
-      }
-      record(inc, static_cast<int>(seg), cumulative);
+      if (first_stretch && setup.want_offset_yield && !out.offset_yield_stress &&
+          value_of(axial_plastic_strain(drv, drv.state())) >= setup.offset_strain)
+        measure_offset_yield(drv, before, d, setup.offset_strain, out);
+      out.curve.push_back(curve_point(drv, c, inc, static_cast<int>(seg), cumulative));
     }
     if (!out.ok) break;
     prev = target;
