@@ -1,6 +1,7 @@
-// Time of the bundled AA3003-O identification (SPEC §8 goal: fit Hill + Swift to 3 tensile
-// + 1 shear curve in < 1 s on 2 cores), with its iterations, forward runs and the largest
-// relative deviation of the fitted values from the generating card C.2 (data are synthetic).
+// Time of the bundled AA3003-O identification (goal: fit Hill + Swift to 3 tensile + 1
+// shear curve in < 1 s on 2 cores, docs/benchmarks.md, "Identification: fit_classic"), with
+// its iterations, forward runs and the largest relative deviation of the fitted values from
+// the generating card C.2 (data are synthetic).
 #include "inverse/ceres_fit.hpp"
 #include "inverse/fit_file.hpp"
 

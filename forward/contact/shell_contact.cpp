@@ -69,6 +69,89 @@ void gauss(int n, std::vector<double>* x, std::vector<double>* w) {
   *x = r.zeta;
   *w = r.weight;
 }
+
+// The element's bounding sphere (its tool-side surface within `offset` of the nodes) misses the
+// tool: a quick rejection before any contact point is evaluated.
+bool tool_misses_element(const element::NodeVectors& x, double offset, const SphereTool& tool) {
+  Eigen::Vector3d centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
+  double radius = 0.0;
+  for (const auto& xi : x) radius = std::max(radius, (xi - centre).norm());
+  return (centre - tool.centre).norm() > tool.radius + radius + 2.0 * offset;
+}
+
+// Regularised Coulomb friction at a contact point in contact (docs/contact.md, "Contact
+// formulation (ShellContact)"): the trial traction is the committed one minus kt times the
+// slip, projected on the tangent plane (P); it sticks inside the cone |t| <= mu p and is
+// returned to it otherwise. Returns the traction on the sheet t and adds its derivative with
+// respect to the point to dq. xp, xp0: the surface point now and at the start of the
+// increment; v = xp - tool centre, rho = |v|, n = v / rho.
+Eigen::Vector3d friction_traction(const Eigen::Vector3d& xp, const Eigen::Vector3d& xp0, const Eigen::Vector3d& v,
+                                  const Eigen::Vector3d& n, const Eigen::Matrix3d& P, double rho, double pressure,
+                                  const Eigen::Vector3d& committed_traction, const SphereTool& tool, double kp_n, double kt,
+                                  double mu, Eigen::Vector3d& slip_out, Eigen::Matrix3d& dq) {
+  // Slip of the sheet point relative to the tool over the increment; the committed traction
+  // is zero for a point that was not in contact.
+  // A spinning tool's surface point moves by spin x (xp - centre) on top of the translation.
+  const Eigen::Vector3d slip = (xp - xp0) - (tool.centre - tool.centre_committed) - tool.spin.cross(v);
+  slip_out = slip;
+  const Eigen::Vector3d w = committed_traction - kt * slip;
+  const Eigen::Vector3d ttr = P * w;
+  // d(P w)/dx = -kt P (I - [spin]x) - (n.w) P / rho - n (P w)^T / rho
+  Eigen::Matrix3d spin_cross;
+  spin_cross << 0.0, -tool.spin.z(), tool.spin.y(), tool.spin.z(), 0.0, -tool.spin.x(), -tool.spin.y(), tool.spin.x(), 0.0;
+  Eigen::Matrix3d dttr = -kt * P * (Eigen::Matrix3d::Identity() - spin_cross) - (n.dot(w) / rho) * P - n * (P * w).transpose() / rho;
+  const double norm = ttr.norm(), limit = mu * pressure;
+  if (norm <= limit) {
+    dq += dttr;
+    return ttr;
+  }
+  const Eigen::Vector3d dir = ttr / norm;
+  dq += mu * dir * (-kp_n * n.transpose()) + (limit / norm) * (Eigen::Matrix3d::Identity() - dir * dir.transpose()) * dttr;
+  return limit * dir;
+}
+
+// Force f on a point of the curved (Phong) surface at shape values N and its derivative kx,
+// in the p-variables pv: r_p += J^T f, k_p += J^T kx J + sum_k f_k d2x_k/dp2 (nested Jets: J
+// and the curvature of the curved surface with respect to the nodal variables).
+void add_phong_point(const std::array<double, 24>& pv, const Eigen::Vector4d& N, double offset, const Eigen::Vector3d& f,
+                     const Eigen::Matrix3d& kx, element::Vec24* rp, element::Mat24* kp) {
+  using Inner = ceres::Jet<double, 24>;
+  using Outer = ceres::Jet<Inner, 24>;
+  std::array<Outer, 24> pj;
+  for (int i = 0; i < 24; ++i) {
+    Inner a(pv[static_cast<std::size_t>(i)], i);
+    pj[static_cast<std::size_t>(i)] = Outer(a, i);
+  }
+  const Eigen::Matrix<Outer, 3, 1> xj = surface_of(pj.data(), N, offset, true);
+  Eigen::Matrix<double, 3, 24> J;
+  for (int k = 0; k < 3; ++k)
+    for (int i = 0; i < 24; ++i) J(k, i) = xj(k).v(i).a;
+  rp->noalias() += J.transpose() * f;
+  if (kp) {
+    kp->noalias() += J.transpose() * kx * J;
+    for (int k = 0; k < 3; ++k)
+      for (int i = 0; i < 24; ++i)
+        for (int j = 0; j < 24; ++j) (*kp)(i, j) += f(k) * xj(k).v(i).v(j);
+  }
+}
+
+// The same on flat facets: p = (x_I, d_I): dx/dx_I = N_I, dx/dd_I = offset N_I.
+void add_flat_point(const Eigen::Vector4d& N, double offset, const Eigen::Vector3d& f, const Eigen::Matrix3d& kx,
+                    element::Vec24* rp, element::Mat24* kp) {
+  for (int I = 0; I < 4; ++I) {
+    const double nI = N(I);
+    rp->segment<3>(6 * I) += nI * f;
+    rp->segment<3>(6 * I + 3) += (nI * offset) * f;
+    if (!kp) continue;
+    for (int J = 0; J < 4; ++J) {
+      const double nn = nI * N(J);
+      kp->block<3, 3>(6 * I, 6 * J) += nn * kx;
+      kp->block<3, 3>(6 * I, 6 * J + 3) += (nn * offset) * kx;
+      kp->block<3, 3>(6 * I + 3, 6 * J) += (nn * offset) * kx;
+      kp->block<3, 3>(6 * I + 3, 6 * J + 3) += (nn * offset * offset) * kx;
+    }
+  }
+}
 }  // namespace
 
 Eigen::Vector3d ShellContact::surface_point(const ContactOptions& o, const Eigen::Vector4d& N, const element::NodeVectors& x,
@@ -80,10 +163,7 @@ Eigen::Vector3d ShellContact::surface_point(const ContactOptions& o, const Eigen
 double ShellContact::surface_penetration(const ContactOptions& o, const element::NodeVectors& x, const element::NodeVectors& d,
                                          double offset, const SphereTool& tool, int samples) {
   if (samples < 2) throw std::invalid_argument("contact: surface_penetration needs >= 2 samples per direction");
-  Eigen::Vector3d centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
-  double radius = 0.0;
-  for (const auto& xi : x) radius = std::max(radius, (xi - centre).norm());
-  if ((centre - tool.centre).norm() > tool.radius + radius + 2.0 * offset) return 0.0;
+  if (tool_misses_element(x, offset, tool)) return 0.0;
   const auto p = pack(x, d);
   const bool phong = o.surface == ContactOptions::Surface::phong;
   double deepest = 0.0;
@@ -137,13 +217,9 @@ ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options
 bool ShellContact::element(int e, const element::NodeVectors& x, const element::NodeVectors& d, const element::NodeVectors& x0,
                            const element::NodeVectors& d0, double offset, const SphereTool& tool, element::Vec24* rp,
                            element::Mat24* kp, ContactSummary* summary, int tool_index) {
-  // Quick rejection: the element's bounding sphere (tool-side surface) misses the tool.
-  Eigen::Vector3d centre = 0.25 * (x[0] + x[1] + x[2] + x[3]);
-  double radius = 0.0;
-  for (const auto& xi : x) radius = std::max(radius, (xi - centre).norm());
   const std::size_t base = static_cast<std::size_t>(e * per_element_);                    // the element's points (areas_)
   const std::size_t state = base + static_cast<std::size_t>(tool_index) * areas_.size();  // their states with this tool
-  if ((centre - tool.centre).norm() > tool.radius + radius + 2.0 * offset) {
+  if (tool_misses_element(x, offset, tool)) {
     for (int p = 0; p < per_element_; ++p) trial_[state + static_cast<std::size_t>(p)] = PointState{};
     return false;
   }
@@ -174,26 +250,7 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
     Eigen::Matrix3d dq = -kp_n * n * n.transpose() + (pressure / rho) * P;
     Eigen::Vector3d t = Eigen::Vector3d::Zero();
     if (mu > 0.0) {
-      // Slip of the sheet point relative to the tool over the increment; the committed traction
-      // is zero for a point that was not in contact.
-      // A spinning tool's surface point moves by spin x (xp - centre) on top of the translation.
-      const Eigen::Vector3d slip = (xp - xp0) - (tool.centre - tool.centre_committed) - tool.spin.cross(v);
-      st.slip = slip;
-      const Eigen::Vector3d w = committed_[sid].traction - kt * slip;
-      const Eigen::Vector3d ttr = P * w;
-      // d(P w)/dx = -kt P (I - [spin]x) - (n.w) P / rho - n (P w)^T / rho
-      Eigen::Matrix3d spin_cross;
-      spin_cross << 0.0, -tool.spin.z(), tool.spin.y(), tool.spin.z(), 0.0, -tool.spin.x(), -tool.spin.y(), tool.spin.x(), 0.0;
-      Eigen::Matrix3d dttr = -kt * P * (Eigen::Matrix3d::Identity() - spin_cross) - (n.dot(w) / rho) * P - n * (P * w).transpose() / rho;
-      const double norm = ttr.norm(), limit = mu * pressure;
-      if (norm <= limit) {
-        t = ttr;
-        dq += dttr;
-      } else {
-        const Eigen::Vector3d dir = ttr / norm;
-        t = limit * dir;
-        dq += mu * dir * (-kp_n * n.transpose()) + (limit / norm) * (Eigen::Matrix3d::Identity() - dir * dir.transpose()) * dttr;
-      }
+      t = friction_traction(xp, xp0, v, n, P, rho, pressure, committed_[sid].traction, tool, kp_n, kt, mu, st.slip, dq);
       q += t;
     }
     st.active = true;
@@ -210,43 +267,10 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
     // r = f_int - f_ext: the contact force is external.
     const Eigen::Vector3d f = -q * da;
     const Eigen::Matrix3d kx = -dq * da;
-    if (phong) {
-      // r_p += J^T f, k_p += J^T kx J + sum_k f_k d2x_k/dp2 (nested Jets: J and the curvature
-      // of the curved surface with respect to the nodal variables).
-      using Inner = ceres::Jet<double, 24>;
-      using Outer = ceres::Jet<Inner, 24>;
-      std::array<Outer, 24> pj;
-      for (int i = 0; i < 24; ++i) {
-        Inner a(pv[static_cast<std::size_t>(i)], i);
-        pj[static_cast<std::size_t>(i)] = Outer(a, i);
-      }
-      const Eigen::Matrix<Outer, 3, 1> xj = surface_of(pj.data(), pg.N, offset, true);
-      Eigen::Matrix<double, 3, 24> J;
-      for (int k = 0; k < 3; ++k)
-        for (int i = 0; i < 24; ++i) J(k, i) = xj(k).v(i).a;
-      rp->noalias() += J.transpose() * f;
-      if (kp) {
-        kp->noalias() += J.transpose() * kx * J;
-        for (int k = 0; k < 3; ++k)
-          for (int i = 0; i < 24; ++i)
-            for (int j = 0; j < 24; ++j) (*kp)(i, j) += f(k) * xj(k).v(i).v(j);
-      }
-      continue;
-    }
-    // Flat facets: p = (x_I, d_I): dx/dx_I = N_I, dx/dd_I = offset N_I.
-    for (int I = 0; I < 4; ++I) {
-      const double nI = pg.N(I);
-      rp->segment<3>(6 * I) += nI * f;
-      rp->segment<3>(6 * I + 3) += (nI * offset) * f;
-      if (!kp) continue;
-      for (int J = 0; J < 4; ++J) {
-        const double nn = nI * pg.N(J);
-        kp->block<3, 3>(6 * I, 6 * J) += nn * kx;
-        kp->block<3, 3>(6 * I, 6 * J + 3) += (nn * offset) * kx;
-        kp->block<3, 3>(6 * I + 3, 6 * J) += (nn * offset) * kx;
-        kp->block<3, 3>(6 * I + 3, 6 * J + 3) += (nn * offset * offset) * kx;
-      }
-    }
+    if (phong)
+      add_phong_point(pv, pg.N, offset, f, kx, rp, kp);
+    else
+      add_flat_point(pg.N, offset, f, kx, rp, kp);
   }
   return any;
 }

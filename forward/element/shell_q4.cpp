@@ -24,6 +24,137 @@ constexpr double kTieXi[4] = {0.0, 0.0, -1.0, 1.0};
 constexpr double kTieEta[4] = {-1.0, 1.0, 0.0, 0.0};
 constexpr int kTieDir[4] = {0, 0, 1, 1};
 
+
+// Mid-surface tangents f_a = dx/dy_a and director derivatives dd_a = dd/dy_a at a Gauss point
+// (y_a: element frame), and the tangents g_a that the in-plane shear strain uses: the element
+// centre's with centre_membrane_shear (selective reduced integration), else f_a.
+struct PointKinematics {
+  Eigen::Vector3d f0, f1, dd0, dd1, g0, g1;
+};
+
+PointKinematics point_kinematics(const Eigen::Matrix<double, 2, 4>& dN, const Eigen::Matrix<double, 2, 4>& dN_shear,
+                                 bool centre_shear, const NodeVectors& x, const NodeVectors& d) {
+  PointKinematics k;
+  k.f0 = combine(dN.row(0).transpose(), x);
+  k.f1 = combine(dN.row(1).transpose(), x);
+  k.dd0 = combine(dN.row(0).transpose(), d);
+  k.dd1 = combine(dN.row(1).transpose(), d);
+  k.g0 = centre_shear ? combine(dN_shear.row(0).transpose(), x) : k.f0;
+  k.g1 = centre_shear ? combine(dN_shear.row(1).transpose(), x) : k.f1;
+  return k;
+}
+
+// The helpers below take the element's private point types (ShellQ4::PointGeometry as Point,
+// ShellQ4::TyingPoint as Tying) by deduction. pg is the Gauss point, ps the point of the
+// in-plane shear (the centre or pg).
+
+// Membrane Green-Lagrange strains e and bending strains kappa (engineering shear), both from
+// the reference configuration: e_ab = (f_a . f_b - F_a . F_b) / 2 (shear 2 e_01, from ps) and
+// kappa = (f_0 . dd_0, f_1 . dd_1, f_0 . dd_1 + f_1 . dd_0) - its reference value.
+template <class Point>
+void shell_strains(const Point& pg, const Point& ps, const PointKinematics& k, Vec3& e, Vec3& kappa) {
+  e << 0.5 * (k.f0.squaredNorm() - pg.F0ref.squaredNorm()), 0.5 * (k.f1.squaredNorm() - pg.F1ref.squaredNorm()),
+      k.g0.dot(k.g1) - ps.F0ref.dot(ps.F1ref);
+  kappa << k.f0.dot(k.dd0), k.f1.dot(k.dd1), k.f0.dot(k.dd1) + k.f1.dot(k.dd0);
+  kappa -= pg.kappa_ref;
+}
+
+ElementStatus point_failure(int point, const SectionStatus& ss) {
+  ElementStatus status;
+  status.ok = false;
+  status.point = point;
+  status.layer = ss.layer;
+  status.reason = ss.reason;
+  status.suggested_scale = ss.suggested_scale;
+  return status;
+}
+
+// Section forces and their tangent from the material frame to the element frame: with
+// q6 = diag(Q, Q), s6 = q6^T s6m and d6 = q6^T d6m q6, block by block.
+void to_element_frame(const Eigen::Matrix3d& Q, const Vec6& s6m, const Mat6& d6m, bool tangent, Vec6& s6, Mat6& d6) {
+  s6.head<3>().noalias() = Q.transpose() * s6m.head<3>();
+  s6.tail<3>().noalias() = Q.transpose() * s6m.tail<3>();
+  if (tangent)
+    for (int bi = 0; bi < 2; ++bi)
+      for (int bj = 0; bj < 2; ++bj)
+        d6.block<3, 3>(3 * bi, 3 * bj).noalias() = Q.transpose() * (d6m.block<3, 3>(3 * bi, 3 * bj) * Q);
+}
+
+// B = d(e, kappa, gamma)/dp, 8 x 24 (B zero on entry). The MITC4 rows interpolate the tying
+// points' derivatives with the weights c and map them from natural to element axes with K.
+template <class Point, class Tying>
+void strain_operator(const Point& pg, const Point& ps, const std::array<Tying, 4>& tying, const PointKinematics& k,
+                     const double (&c)[4], const std::array<Eigen::Vector3d, 4>& a_t,
+                     const std::array<Eigen::Vector3d, 4>& d_t, Eigen::Matrix<double, 8, 24>& B) {
+  Eigen::Matrix<double, 2, 24> Bnat = Eigen::Matrix<double, 2, 24>::Zero();
+  for (int I = 0; I < 4; ++I) {
+    const double n0 = pg.dN(0, I), n1 = pg.dN(1, I);
+    const int cx = 6 * I, cd = 6 * I + 3;
+    B.block<1, 3>(0, cx) = n0 * k.f0.transpose();
+    B.block<1, 3>(1, cx) = n1 * k.f1.transpose();
+    B.block<1, 3>(2, cx) = (ps.dN(0, I) * k.g1 + ps.dN(1, I) * k.g0).transpose();
+    B.block<1, 3>(3, cx) = n0 * k.dd0.transpose();
+    B.block<1, 3>(4, cx) = n1 * k.dd1.transpose();
+    B.block<1, 3>(5, cx) = (n0 * k.dd1 + n1 * k.dd0).transpose();
+    B.block<1, 3>(3, cd) = n0 * k.f0.transpose();
+    B.block<1, 3>(4, cd) = n1 * k.f1.transpose();
+    B.block<1, 3>(5, cd) = (n1 * k.f0 + n0 * k.f1).transpose();
+    for (std::size_t t = 0; t < 4; ++t) {
+      const int row = kTieDir[t];
+      Bnat.block<1, 3>(row, cx) += c[t] * tying[t].dN(I) * d_t[t].transpose();
+      Bnat.block<1, 3>(row, cd) += c[t] * tying[t].N(I) * a_t[t].transpose();
+    }
+  }
+  B.bottomRows<2>() = pg.K * Bnat;
+}
+
+// Tangent of one Gauss point added to kp: material part B^T D B with D = diag(d6, ks, ks), and
+// the geometric part (the second derivatives of e, kappa and gamma are scalars x identity)
+// from the section forces s6 and the shear forces Q.
+template <class Point, class Tying>
+void add_point_tangent(const Point& pg, const Point& ps, const std::array<Tying, 4>& tying, const Vec6& s6,
+                       const Mat6& d6, const Eigen::Vector2d& Q, double ks, const double (&c)[4],
+                       const Eigen::Matrix<double, 8, 24>& B, Mat24& kp) {
+  // Coefficient-wise (lazy) products; at 24 x 8 x 24 Eigen's blocked GEMM spent more time
+  // packing than multiplying.
+  Eigen::Matrix<double, 8, 24> DB;
+  DB.topRows<6>().noalias() = (pg.weight * d6).lazyProduct(B.topRows<6>());
+  DB.bottomRows<2>() = (pg.weight * ks) * B.bottomRows<2>();
+  kp.noalias() += B.transpose().lazyProduct(DB);
+  const Eigen::Vector2d qn = pg.K.transpose() * Q;  // Q . gamma = qn . gamma_nat
+  for (int I = 0; I < 4; ++I) {
+    for (int Jn = 0; Jn < 4; ++Jn) {
+      const double a0 = pg.dN(0, I) * pg.dN(0, Jn), a1 = pg.dN(1, I) * pg.dN(1, Jn);
+      const double a2 = pg.dN(0, I) * pg.dN(1, Jn) + pg.dN(1, I) * pg.dN(0, Jn);
+      const double s2 = ps.dN(0, I) * ps.dN(1, Jn) + ps.dN(1, I) * ps.dN(0, Jn);
+      const double gxx = s6(0) * a0 + s6(1) * a1 + s6(2) * s2;
+      double gxd = s6(3) * a0 + s6(4) * a1 + s6(5) * a2;
+      for (std::size_t t = 0; t < 4; ++t) gxd += qn(kTieDir[t]) * c[t] * tying[t].dN(I) * tying[t].N(Jn);
+      for (int k = 0; k < 3; ++k) {
+        kp(6 * I + k, 6 * Jn + k) += pg.weight * gxx;
+        kp(6 * I + k, 6 * Jn + 3 + k) += pg.weight * gxd;
+        kp(6 * Jn + 3 + k, 6 * I + k) += pg.weight * gxd;
+      }
+    }
+  }
+}
+
+// Drilling regularisation: tangent only (it never enters the residual). drilling_factor x the
+// mean rotational stiffness (or, with none, the mean translational one x the area) about
+// each director.
+void add_drilling_stiffness(const NodeVectors& d, double drilling_factor, double area, Mat24& ku) {
+  double rot_trace = 0.0, trans_trace = 0.0;
+  for (int I = 0; I < 4; ++I) {
+    rot_trace += ku.block<3, 3>(6 * I + 3, 6 * I + 3).trace();
+    trans_trace += ku.block<3, 3>(6 * I, 6 * I).trace();
+  }
+  const double k_drill = drilling_factor * (rot_trace > 0.0 ? rot_trace / 12.0 : trans_trace / 12.0 * area);
+  for (int I = 0; I < 4; ++I) {
+    const Eigen::Vector3d& dI = d[static_cast<std::size_t>(I)];
+    ku.block<3, 3>(6 * I + 3, 6 * I + 3) += k_drill * dI * dI.transpose();
+  }
+}
+
 }  // namespace
 
 void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku) {
@@ -167,22 +298,14 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
 
   // Tying-point shear strains and their derivatives (shared by the four Gauss points).
   const TransverseShear shear = transverse_shear(x, d);
-  const auto& a_t = shear.a_t;
-  const auto& d_t = shear.d_t;
 
   for (std::size_t q = 0; q < 4; ++q) {
     const PointGeometry& pg = points_[q];
-    const Eigen::Vector3d f0 = combine(pg.dN.row(0).transpose(), x), f1 = combine(pg.dN.row(1).transpose(), x);
-    const Eigen::Vector3d dd0 = combine(pg.dN.row(0).transpose(), d), dd1 = combine(pg.dN.row(1).transpose(), d);
     // In-plane shear from the centre (or from this point).
     const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
-    const Eigen::Vector3d g0 = options_.centre_membrane_shear ? combine(ps.dN.row(0).transpose(), x) : f0;
-    const Eigen::Vector3d g1 = options_.centre_membrane_shear ? combine(ps.dN.row(1).transpose(), x) : f1;
+    const PointKinematics k = point_kinematics(pg.dN, ps.dN, options_.centre_membrane_shear, x, d);
     Vec3 e, kappa;
-    e << 0.5 * (f0.squaredNorm() - pg.F0ref.squaredNorm()), 0.5 * (f1.squaredNorm() - pg.F1ref.squaredNorm()),
-        g0.dot(g1) - ps.F0ref.dot(ps.F1ref);
-    kappa << f0.dot(dd0), f1.dot(dd1), f0.dot(dd1) + f1.dot(dd0);
-    kappa -= pg.kappa_ref;
+    shell_strains(pg, ps, k, e, kappa);
     // Interpolation weights of the tying points at this Gauss point.
     const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
     const Eigen::Vector2d& gamma = shear.gamma[q];
@@ -191,74 +314,16 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     Vec6 s6m;
     Mat6 d6m = Mat6::Zero();
     const SectionStatus ss = sections_[q].update(pg.Q * e, pg.Q * kappa, &s6m, tangent ? &d6m : nullptr);
-    if (!ss.ok) {
-      status.ok = false;
-      status.point = static_cast<int>(q);
-      status.layer = ss.layer;
-      status.reason = ss.reason;
-      status.suggested_scale = ss.suggested_scale;
-      return status;
-    }
-    // With q6 = diag(Q, Q): s6 = q6^T s6m and d6 = q6^T d6m q6, block by block.
+    if (!ss.ok) return point_failure(static_cast<int>(q), ss);
     Vec6 s6;
-    s6.head<3>().noalias() = pg.Q.transpose() * s6m.head<3>();
-    s6.tail<3>().noalias() = pg.Q.transpose() * s6m.tail<3>();
     Mat6 d6;
-    if (tangent)
-      for (int bi = 0; bi < 2; ++bi)
-        for (int bj = 0; bj < 2; ++bj)
-          d6.block<3, 3>(3 * bi, 3 * bj).noalias() = pg.Q.transpose() * (d6m.block<3, 3>(3 * bi, 3 * bj) * pg.Q);
+    to_element_frame(pg.Q, s6m, d6m, tangent != nullptr, s6, d6);
     const Eigen::Vector2d Q = ks * gamma;
 
-    // B = d(e, kappa, gamma)/dp, 8 x 24.
     Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
-    Eigen::Matrix<double, 2, 24> Bnat = Eigen::Matrix<double, 2, 24>::Zero();
-    for (int I = 0; I < 4; ++I) {
-      const double n0 = pg.dN(0, I), n1 = pg.dN(1, I);
-      const int cx = 6 * I, cd = 6 * I + 3;
-      B.block<1, 3>(0, cx) = n0 * f0.transpose();
-      B.block<1, 3>(1, cx) = n1 * f1.transpose();
-      B.block<1, 3>(2, cx) = (ps.dN(0, I) * g1 + ps.dN(1, I) * g0).transpose();
-      B.block<1, 3>(3, cx) = n0 * dd0.transpose();
-      B.block<1, 3>(4, cx) = n1 * dd1.transpose();
-      B.block<1, 3>(5, cx) = (n0 * dd1 + n1 * dd0).transpose();
-      B.block<1, 3>(3, cd) = n0 * f0.transpose();
-      B.block<1, 3>(4, cd) = n1 * f1.transpose();
-      B.block<1, 3>(5, cd) = (n1 * f0 + n0 * f1).transpose();
-      for (std::size_t t = 0; t < 4; ++t) {
-        const int row = kTieDir[t];
-        Bnat.block<1, 3>(row, cx) += c[t] * tying_[t].dN(I) * d_t[t].transpose();
-        Bnat.block<1, 3>(row, cd) += c[t] * tying_[t].N(I) * a_t[t].transpose();
-      }
-    }
-    B.bottomRows<2>() = pg.K * Bnat;
-
+    strain_operator(pg, ps, tying_, k, c, shear.a_t, shear.d_t, B);
     rp.noalias() += pg.weight * (B.topRows<6>().transpose() * s6 + B.bottomRows<2>().transpose() * Q);
-    if (tangent) {
-      // B^T D B with D = diag(d6, ks, ks): coefficient-wise (lazy) products; at 24 x 8 x 24
-      // Eigen's blocked GEMM spent more time packing than multiplying.
-      Eigen::Matrix<double, 8, 24> DB;
-      DB.topRows<6>().noalias() = (pg.weight * d6).lazyProduct(B.topRows<6>());
-      DB.bottomRows<2>() = (pg.weight * ks) * B.bottomRows<2>();
-      kp.noalias() += B.transpose().lazyProduct(DB);
-      // Geometric terms: second derivatives of e, kappa and gamma are (scalar) x identity.
-      const Eigen::Vector2d qn = pg.K.transpose() * Q;  // Q . gamma = qn . gamma_nat
-      for (int I = 0; I < 4; ++I) {
-        for (int Jn = 0; Jn < 4; ++Jn) {
-          const double a0 = pg.dN(0, I) * pg.dN(0, Jn), a1 = pg.dN(1, I) * pg.dN(1, Jn);
-          const double a2 = pg.dN(0, I) * pg.dN(1, Jn) + pg.dN(1, I) * pg.dN(0, Jn);
-          const double s2 = ps.dN(0, I) * ps.dN(1, Jn) + ps.dN(1, I) * ps.dN(0, Jn);
-          const double gxx = s6(0) * a0 + s6(1) * a1 + s6(2) * s2;
-          double gxd = s6(3) * a0 + s6(4) * a1 + s6(5) * a2;
-          for (std::size_t t = 0; t < 4; ++t) gxd += qn(kTieDir[t]) * c[t] * tying_[t].dN(I) * tying_[t].N(Jn);
-          for (int k = 0; k < 3; ++k) {
-            kp(6 * I + k, 6 * Jn + k) += pg.weight * gxx;
-            kp(6 * I + k, 6 * Jn + 3 + k) += pg.weight * gxd;
-            kp(6 * Jn + 3 + k, 6 * I + k) += pg.weight * gxd;
-          }
-        }
-      }
-    }
+    if (tangent) add_point_tangent(pg, ps, tying_, s6, d6, Q, ks, c, B, kp);
   }
 
   Vec24 ru;
@@ -272,17 +337,7 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
   }
   if (residual) *residual = ru;
   if (tangent) {
-    // Drilling regularisation: tangent only (it never enters the residual).
-    double rot_trace = 0.0, trans_trace = 0.0;
-    for (int I = 0; I < 4; ++I) {
-      rot_trace += ku.block<3, 3>(6 * I + 3, 6 * I + 3).trace();
-      trans_trace += ku.block<3, 3>(6 * I, 6 * I).trace();
-    }
-    const double k_drill = options_.drilling_factor * (rot_trace > 0.0 ? rot_trace / 12.0 : trans_trace / 12.0 * area_);
-    for (int I = 0; I < 4; ++I) {
-      const Eigen::Vector3d& dI = d[static_cast<std::size_t>(I)];
-      ku.block<3, 3>(6 * I + 3, 6 * I + 3) += k_drill * dI * dI.transpose();
-    }
+    add_drilling_stiffness(d, options_.drilling_factor, area_, ku);
     *tangent = ku;
   }
   return status;

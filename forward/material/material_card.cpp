@@ -117,7 +117,8 @@ void validate_material_card(const MaterialCard& card) {
   };
   if (!(p.E > 0)) bad("elastic.E", p.E, "Young's modulus must be > 0 MPa");
   if (!(p.nu > -1.0 && p.nu < 0.5)) bad("elastic.nu", p.nu, "Poisson's ratio must lie in (-1, 0.5)");
-  // Hill convexity (SPEC §2); name the coefficient involved in the violated condition.
+  // Hill convexity (thesis eq. 3.5: a positive definite quadratic form); name the coefficient
+  // involved in the violated condition.
   if (!(p.N > 0)) bad("hill.N", p.N, "must be > 0");
   if (!(p.L > 0)) bad("hill.L", p.L, "must be > 0");
   if (!(p.M > 0)) bad("hill.M", p.M, "must be > 0");

@@ -1,5 +1,5 @@
 #pragma once
-// One integration point with a committed state s0 and a trial state s1 (NUMERICS.md):
+// One integration point with a committed state s0 and a trial state s1:
 // update() computes s1 from s0; commit() accepts it once the global step converged;
 // revert() discards it (line search, cut-back).
 #include "forward/material/return_mapping.hpp"

@@ -32,15 +32,31 @@ std::vector<double> ring_layers(int n, double r0, double r1, const DiscOptions& 
   return out;
 }
 
-}  // namespace
+// What every sub-sector shares: its angle, the kite and the node layers of the ring.
+struct DiscLayout {
+  int sectors = 0;      // sub-sectors of at most max_sector_deg
+  double beta = 0.0;    // sub-sector angle [rad]
+  int n = 0;            // elements along each kite side (2 n along the rim of a sub-sector)
+  double rc = 0.0;      // core radius: the kite's corners on the sub-sector's edges
+  double r_inner = 0.0; // where the transition ends: ring_start, or the rim
+  int mt = 0;           // transition layers
+  // Fractions s in [0, 1] of the transition layers from the kite's sides (0) to r_inner (1),
+  // then the radii of the circular layers beyond ring_start (none without ring_start).
+  std::vector<double> transition, radii;
+  int layers_total = 0;  // mt + radii.size()
+};
 
-Mesh disc_mesh(const DiscOptions& o) {
+void check_disc_options(const DiscOptions& o) {
   if (!(o.radius > 0)) throw std::invalid_argument("radius must be > 0");
   if (!(o.angle_deg > 0 && o.angle_deg <= 360)) throw std::invalid_argument("angle must lie in (0, 360]");
   if (o.elements_per_45deg < 2) throw std::invalid_argument("elements_per_45deg must be >= 2");
   if (!(o.radial_grading > 0 && o.band_factor > 0)) throw std::invalid_argument("grading and band factor must be > 0");
-  const double pi = std::numbers::pi;
   if (!(o.max_sector_deg == 45.0 || o.max_sector_deg == 90.0)) throw std::invalid_argument("max_sector_deg must be 45 or 90");
+}
+
+DiscLayout disc_layout(const DiscOptions& o) {
+  const double pi = std::numbers::pi;
+  DiscLayout l;
   const int sectors = static_cast<int>(std::ceil(o.angle_deg / o.max_sector_deg - 1e-9));
   const double beta = o.angle_deg / sectors * pi / 180.0;  // sub-sector angle
   // Even number of rim elements per sub-sector: n per kite side.
@@ -58,71 +74,98 @@ Mesh disc_mesh(const DiscOptions& o) {
   if (o.rim_ring_width < 0.0 || (o.rim_ring_width > 0.0 && !circular) ||
       (circular && !(o.rim_ring_width < o.radius - o.ring_start)))
     throw std::invalid_argument("rim_ring_width needs ring_start and must be smaller than radius - ring_start");
-  const double r_inner = circular ? o.ring_start : o.radius;
   const double r_spaced = o.radius - o.rim_ring_width;  // end of the spaced circular layers
   const int m_default = std::max(1, static_cast<int>(std::lround((o.radius - rc) / rim_h)));
   const int m = o.radial_elements > 0 ? o.radial_elements : m_default;
-  const int mt = !circular ? m
-                 : o.transition_elements > 0
-                     ? o.transition_elements
-                     : std::max(1, static_cast<int>(std::lround((o.ring_start - rc) / (o.ring_start * beta / (2 * n)))));
-  std::vector<double> transition = circular ? graded_points(0.0, 1.0, mt, 1.0) : ring_layers(m, rc, o.radius, o);
-  std::vector<double> radii;  // circular layers beyond the transition's last (ring_start)
+  l.mt = !circular ? m
+         : o.transition_elements > 0
+             ? o.transition_elements
+             : std::max(1, static_cast<int>(std::lround((o.ring_start - rc) / (o.ring_start * beta / (2 * n)))));
+  l.transition = circular ? graded_points(0.0, 1.0, l.mt, 1.0) : ring_layers(m, rc, o.radius, o);
   if (circular) {
-    for (double s : ring_layers(m, o.ring_start, r_spaced, o)) radii.push_back(o.ring_start + s * (r_spaced - o.ring_start));
-    radii.erase(radii.begin());
-    if (o.rim_ring_width > 0.0) radii.push_back(o.radius);
-    radii.back() = o.radius;
+    for (double s : ring_layers(m, o.ring_start, r_spaced, o)) l.radii.push_back(o.ring_start + s * (r_spaced - o.ring_start));
+    l.radii.erase(l.radii.begin());
+    if (o.rim_ring_width > 0.0) l.radii.push_back(o.radius);
+    l.radii.back() = o.radius;
   }
-  const int layers_total = mt + static_cast<int>(radii.size());
+  l.sectors = sectors;
+  l.beta = beta;
+  l.n = n;
+  l.rc = rc;
+  l.r_inner = circular ? o.ring_start : o.radius;
+  l.layers_total = l.mt + static_cast<int>(l.radii.size());
+  return l;
+}
 
-  Mesh mesh;
-  auto add = [&](const Eigen::Vector2d& p) {
-    mesh.nodes.emplace_back(p.x(), p.y(), 0.0);
-    return static_cast<int>(mesh.nodes.size()) - 1;
-  };
-  for (int s = 0; s < sectors; ++s) {
-    const double t0 = s * beta;
-    const Eigen::Vector2d O(0, 0), A = rc * Eigen::Vector2d(std::cos(t0), std::sin(t0)),
-                          B = rc * Eigen::Vector2d(std::cos(t0 + beta), std::sin(t0 + beta));
-    // Bisector point of a right-angled kite (A-M perpendicular to O-A): corner angles beta at
-    // the axis, 90 deg at A and B, 180 deg - beta at M; a square for beta = 90 deg.
-    const Eigen::Vector2d M = rc / std::cos(0.5 * beta) * Eigen::Vector2d(std::cos(t0 + 0.5 * beta), std::sin(t0 + 0.5 * beta));
-    // Core: transfinite (Coons) patch on O -> A -> M -> B, parameters (u along OA, v along OB).
-    auto edge = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, double t) -> Eigen::Vector2d { return p + t * (q - p); };
-    std::vector<int> core((n + 1) * (n + 1));
-    for (int j = 0; j <= n; ++j) {
-      for (int i = 0; i <= n; ++i) {
-        const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
-        const Eigen::Vector2d bottom = edge(O, A, u), top = edge(B, M, u), left = edge(O, B, v), right = edge(A, M, v);
-        const Eigen::Vector2d p = (1 - v) * bottom + v * top + (1 - u) * left + u * right -
-                                  ((1 - u) * (1 - v) * O + u * (1 - v) * A + u * v * M + (1 - u) * v * B);
-        core[j * (n + 1) + i] = add(p);
-      }
-    }
-    auto cid = [&](int i, int j) { return core[j * (n + 1) + i]; };
-    for (int j = 0; j < n; ++j) {
-      for (int i = 0; i < n; ++i) mesh.quads.push_back({cid(i, j), cid(i + 1, j), cid(i + 1, j + 1), cid(i, j + 1)});
-    }
-    // Ring: inner polyline A -> M -> B (2n segments), outer arc; layers s in [0, 1].
-    std::vector<Eigen::Vector2d> inner(2 * n + 1);
-    for (int k = 0; k <= 2 * n; ++k) inner[k] = k <= n ? edge(A, M, static_cast<double>(k) / n) : edge(M, B, static_cast<double>(k - n) / n);
-    std::vector<int> ring((layers_total + 1) * (2 * n + 1));
-    for (int j = 0; j <= layers_total; ++j) {
-      for (int k = 0; k <= 2 * n; ++k) {
-        const double th = t0 + beta * k / (2 * n);
-        const Eigen::Vector2d dir(std::cos(th), std::sin(th));
-        const Eigen::Vector2d p = j <= mt ? Eigen::Vector2d(inner[k] + transition[static_cast<std::size_t>(j)] * (r_inner * dir - inner[k]))
-                                          : Eigen::Vector2d(radii[static_cast<std::size_t>(j - mt - 1)] * dir);
-        ring[j * (2 * n + 1) + k] = add(p);
-      }
-    }
-    auto rid = [&](int k, int j) { return ring[j * (2 * n + 1) + k]; };
-    for (int j = 0; j < layers_total; ++j) {
-      for (int k = 0; k < 2 * n; ++k) mesh.quads.push_back({rid(k, j), rid(k, j + 1), rid(k + 1, j + 1), rid(k + 1, j)});
+int add_node(Mesh& mesh, const Eigen::Vector2d& p) {
+  mesh.nodes.emplace_back(p.x(), p.y(), 0.0);
+  return static_cast<int>(mesh.nodes.size()) - 1;
+}
+
+Eigen::Vector2d edge(const Eigen::Vector2d& p, const Eigen::Vector2d& q, double t) { return p + t * (q - p); }
+
+// Core of a sub-sector: transfinite (Coons) patch on O -> A -> M -> B, parameters (u along OA,
+// v along OB), n x n elements.
+void add_core(Mesh& mesh, const Eigen::Vector2d& O, const Eigen::Vector2d& A, const Eigen::Vector2d& M,
+              const Eigen::Vector2d& B, int n) {
+  std::vector<int> core((n + 1) * (n + 1));
+  for (int j = 0; j <= n; ++j) {
+    for (int i = 0; i <= n; ++i) {
+      const double u = static_cast<double>(i) / n, v = static_cast<double>(j) / n;
+      const Eigen::Vector2d bottom = edge(O, A, u), top = edge(B, M, u), left = edge(O, B, v), right = edge(A, M, v);
+      const Eigen::Vector2d p = (1 - v) * bottom + v * top + (1 - u) * left + u * right -
+                                ((1 - u) * (1 - v) * O + u * (1 - v) * A + u * v * M + (1 - u) * v * B);
+      core[j * (n + 1) + i] = add_node(mesh, p);
     }
   }
-  merge_coincident_nodes(mesh, 1e-9 * o.radius);
+  auto cid = [&](int i, int j) { return core[j * (n + 1) + i]; };
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) mesh.quads.push_back({cid(i, j), cid(i + 1, j), cid(i + 1, j + 1), cid(i, j + 1)});
+  }
+}
+
+// Ring of the sub-sector starting at polar angle t0: inner polyline A -> M -> B (2n segments),
+// transition layers to r_inner, then the circular layers.
+void add_ring(Mesh& mesh, const DiscLayout& l, double t0, const Eigen::Vector2d& A, const Eigen::Vector2d& M,
+              const Eigen::Vector2d& B) {
+  const int n = l.n, mt = l.mt, layers_total = l.layers_total;
+  const double beta = l.beta;
+  std::vector<Eigen::Vector2d> inner(2 * n + 1);
+  for (int k = 0; k <= 2 * n; ++k) inner[k] = k <= n ? edge(A, M, static_cast<double>(k) / n) : edge(M, B, static_cast<double>(k - n) / n);
+  std::vector<int> ring((layers_total + 1) * (2 * n + 1));
+  for (int j = 0; j <= layers_total; ++j) {
+    for (int k = 0; k <= 2 * n; ++k) {
+      const double th = t0 + beta * k / (2 * n);
+      const Eigen::Vector2d dir(std::cos(th), std::sin(th));
+      const Eigen::Vector2d p = j <= mt ? Eigen::Vector2d(inner[k] + l.transition[static_cast<std::size_t>(j)] * (l.r_inner * dir - inner[k]))
+                                        : Eigen::Vector2d(l.radii[static_cast<std::size_t>(j - mt - 1)] * dir);
+      ring[j * (2 * n + 1) + k] = add_node(mesh, p);
+    }
+  }
+  auto rid = [&](int k, int j) { return ring[j * (2 * n + 1) + k]; };
+  for (int j = 0; j < layers_total; ++j) {
+    for (int k = 0; k < 2 * n; ++k) mesh.quads.push_back({rid(k, j), rid(k, j + 1), rid(k + 1, j + 1), rid(k + 1, j)});
+  }
+}
+
+// Sub-sector s (polar angles s beta to (s + 1) beta): its core, then its ring. Neighbouring
+// sub-sectors duplicate their shared edge's nodes (merged afterwards).
+void add_sector(Mesh& mesh, const DiscLayout& l, int s) {
+  const double rc = l.rc, beta = l.beta;
+  const double t0 = s * beta;
+  const Eigen::Vector2d O(0, 0), A = rc * Eigen::Vector2d(std::cos(t0), std::sin(t0)),
+                        B = rc * Eigen::Vector2d(std::cos(t0 + beta), std::sin(t0 + beta));
+  // Bisector point of a right-angled kite (A-M perpendicular to O-A): corner angles beta at
+  // the axis, 90 deg at A and B, 180 deg - beta at M; a square for beta = 90 deg.
+  const Eigen::Vector2d M = rc / std::cos(0.5 * beta) * Eigen::Vector2d(std::cos(t0 + 0.5 * beta), std::sin(t0 + 0.5 * beta));
+  add_core(mesh, O, A, M, B, l.n);
+  add_ring(mesh, l, t0, A, M, B);
+}
+
+// Element set "all"; node sets "axis", "rim" and, for a pie, its edges "edge_theta0" (along +x)
+// and "edge_theta1" (at angle_deg).
+void name_disc_sets(Mesh& mesh, const DiscOptions& o) {
+  const double pi = std::numbers::pi;
   std::vector<int> all(mesh.quads.size());
   for (std::size_t e = 0; e < all.size(); ++e) all[e] = static_cast<int>(e);
   mesh.element_sets["all"] = all;
@@ -137,6 +180,17 @@ Mesh disc_mesh(const DiscOptions& o) {
       return std::abs(e1.x() * p.y() - e1.y() * p.x()) <= tol && e1.dot(p.head<2>()) >= -tol;
     });
   }
+}
+
+}  // namespace
+
+Mesh disc_mesh(const DiscOptions& o) {
+  check_disc_options(o);
+  const DiscLayout layout = disc_layout(o);
+  Mesh mesh;
+  for (int s = 0; s < layout.sectors; ++s) add_sector(mesh, layout, s);
+  merge_coincident_nodes(mesh, 1e-9 * o.radius);
+  name_disc_sets(mesh, o);
   return mesh;
 }
 

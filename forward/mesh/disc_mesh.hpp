@@ -1,11 +1,12 @@
 #pragma once
-// Circular discs and pies (sectors) of any angle in the x-y plane, the first edge along +x,
-// for the cone scenes (SPEC §3.3). The centre is an O-grid: each sub-sector of at most 90 deg
-// has a quadrilateral "kite" core (origin, a point on each edge at the core radius, and one on
-// the bisector making right angles at the edge points) meshed as an n x n structured block, and a structured ring from the kite's
-// outer sides to the rim, so no element is degenerate at the axis. The ring's radial spacing
-// is uniform, geometric (radial_grading), or denser in a band (band_factor times as many
-// elements per mm between band_inner and band_outer; the band replaces the grading).
+// Circular discs and pies (sectors) of any angle in the x-y plane, the first edge along +x, for the
+// cone scenes (thesis §4.1.2, §8.1.2, §9.1.2). The centre is an O-grid: each sub-sector of at most
+// 90 deg has a quadrilateral "kite" core (origin, a point on each edge at the core radius, and one
+// on the bisector making right angles at the edge points) meshed as an n x n structured block, and
+// a structured ring from the kite's outer sides to the rim, so no element is degenerate at the
+// axis. The ring's radial spacing is uniform, geometric (radial_grading), or denser in a band
+// (band_factor times as many elements per mm between band_inner and band_outer; the band replaces
+// the grading).
 //
 // Circular rings (the vwall meshes of thesis Table 8.1: regular between r = 33 and 64 mm, denser
 // between 45 and 55 mm, one ring of elements between 64 and 65.5 mm): with ring_start > 0 the

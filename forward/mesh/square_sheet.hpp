@@ -1,6 +1,6 @@
 #pragma once
 // Structured square (rectangular) sheets centred on the origin in the x-y plane: full, or
-// half with the symmetry plane y = 0 kept (line test, SPEC §3.2), uniform or graded (elements
+// half with the symmetry plane y = 0 kept (line test, thesis §4.1.1), uniform or graded (elements
 // smallest at the centre lines and growing geometrically towards the edges).
 #include "forward/mesh/mesh.hpp"
 

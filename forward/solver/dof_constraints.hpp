@@ -1,7 +1,7 @@
 #pragma once
-// Linear constraints of the implicit solver (NUMERICS.md "Constraints"): the full DOF vector
-// is u = T u_bar + g, where u_bar are the free (reduced) unknowns, g the prescribed values
-// and T maps every DOF to a combination of reduced ones:
+// Linear constraints of the implicit solver (docs/numerics-shell.md, "Global solution"): the full
+// DOF vector is u = T u_bar + g, where u_bar are the free (reduced) unknowns, g the prescribed
+// values and T maps every DOF to a combination of reduced ones:
 //   * free DOF: its own reduced unknown;
 //   * prescribed DOF (supports, symmetry planes, imposed displacements): no reduced unknown,
 //     value = amplitude x load factor;

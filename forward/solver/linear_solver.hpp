@@ -1,9 +1,9 @@
 #pragma once
-// Direct sparse solvers from SuiteSparse (NUMERICS.md): UMFPACK for general (non-symmetric)
-// tangents — large rotations, friction — and CHOLMOD for symmetric positive definite ones.
-// The symbolic analysis (fill-reducing ordering) depends only on the pattern and is done once
-// per pattern; each factorize() redoes only the numeric factorisation. Failures are statuses
-// with a message (singular, not positive definite), never exceptions.
+// Direct sparse solvers from SuiteSparse (docs/meshes.md, "Sparse linear algebra"): UMFPACK for
+// general (non-symmetric) tangents — large rotations, friction — and CHOLMOD for symmetric positive
+// definite ones. The symbolic analysis (fill-reducing ordering) depends only on the pattern and is
+// done once per pattern; each factorize() redoes only the numeric factorisation. Failures are
+// statuses with a message (singular, not positive definite), never exceptions.
 #include "forward/solver/sparse_matrix.hpp"
 
 #include <memory>

@@ -1,8 +1,8 @@
 #pragma once
-// Sparse matrices of the implicit FE solver (NUMERICS.md "Global solution"): a CSR pattern
-// built once from the element connectivity, an assembly map giving, for every element, the
-// positions of its entries in the value array, and deterministic assembly (element matrices
-// may be computed in parallel; they are added in element order).
+// Sparse matrices of the implicit FE solver (docs/numerics-shell.md, "Global solution"): a CSR
+// pattern built once from the element connectivity, an assembly map giving, for every element, the
+// positions of its entries in the value array, and deterministic assembly (element matrices may be
+// computed in parallel; they are added in element order).
 #include <Eigen/Core>
 
 #include <vector>

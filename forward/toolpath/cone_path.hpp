@@ -1,6 +1,6 @@
 #pragma once
-// Contour tool paths of SPIF cones (SPEC §3.3, §3.4; thesis §4.1.2, §8.1, Figs. 8.2 and 8.5,
-// §9.1). The waypoints are positions of the tool CENTRE in the global frame of SPEC §1: the
+// Contour tool paths of SPIF cones (thesis §4.1.2, §8.1, Figs. 8.2 and 8.5, §9.1). The
+// waypoints are positions of the tool CENTRE in the global frame of the project: the
 // sheet's mid-surface is z = 0, its initial top (tool-side) surface z = t/2, the tool comes
 // from +z, the cone axis is the z axis, polar angle theta measured from +x towards +y.
 // docs/cone-paths.md describes the same with the numbers of the presets.
@@ -16,7 +16,7 @@
 //     z_k = t/2 - k dz,   r_k = r_top - k dz / tan(alpha).
 // - The tool centre is the touching point moved by R along n:
 //     r_c(k) = r_k - R sin(alpha),   z_c(k) = z_k + R cos(alpha),
-//   so the tool tip (z_c - R) lies R (1 - cos alpha) below the touching point (SPEC §3.3). The
+//   so the tool tip (z_c - R) lies R (1 - cos alpha) below the touching point. The
 //   centres of all contours lie on a cone parallel to the CAD surface (offset by R).
 //
 // Path of one cone (every segment at `feed`, no rapids; see docs/cone-paths.md for numbers):
@@ -61,7 +61,7 @@ struct ConePathOptions {
   bool counter_clockwise = true;   // direction of travel seen from +z, the same for all contours
   double stepdown_angle_deg = 0.0; // full disc: polar angle of the contour starts and ramps
   double ramp_angle_deg = 10.0;    // full disc: ramp descent angle in (0, alpha) (assumption)
-  double feed = 2000.0 / 60.0;     // mm/s on every segment (SPEC §3.4: 2000 mm/min)
+  double feed = 2000.0 / 60.0;     // mm/s on every segment (thesis §3.2.1: 2000 mm/min)
   double lift = 2.0;               // pie: lift above the contour just finished, mm, > 0
   double chord_tolerance = 0.005;  // max distance between an arc and its chords, mm
   double approach_clearance = 1.0; // tip height above z = t/2 at the start and end, mm, >= 0
@@ -110,7 +110,8 @@ ToolPath multistage_cone_path(const std::vector<ConePathOptions>& stages, double
 ConePath annotated_multistage_cone_path(const std::vector<ConePathOptions>& stages,
                                         double safe_z);
 
-// Presets (SPEC §3.3). Tool radius 5 mm (10 mm sphere, thesis §8.1.1, §9.1.1); feed 2000 mm/min.
+// Presets (docs/cone-paths.md, "Presets"). Tool radius 5 mm (10 mm sphere, thesis §8.1.1,
+// §9.1.1); feed 2000 mm/min.
 // cone50 (§4.1.2 = stage 1 of §8.1): alpha 50, dz 1 mm, 30 contours, t 1.5 mm, r_top 64 mm,
 // stepdown at 6 deg (stage 1's); the thesis simulated a quarter (pie 90).
 ConePathOptions cone50(double pie_deg = 90.0);

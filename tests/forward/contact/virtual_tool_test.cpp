@@ -50,6 +50,40 @@ struct Twin {
   }
 };
 
+// Central differences (step 1e-7) of element e's contact residual about the accepted
+// configuration, one column per element DOF.
+Eigen::MatrixXd fd_tangent(Twin& twin, int e, Eigen::Index rows, Eigen::Index cols) {
+  const auto& dofs = twin.with.element_dofs()[static_cast<std::size_t>(e)];
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(twin.with.num_dofs());
+  Eigen::MatrixXd kfd(rows, cols);
+  const double h = 1e-7;
+  for (std::size_t j = 0; j < dofs.size(); ++j) {
+    Eigen::VectorXd d = zero;
+    d(dofs[j]) = h;
+    twin.set_trial(d);
+    const Eigen::VectorXd rp = twin.residual(e);
+    d(dofs[j]) = -h;
+    twin.set_trial(d);
+    const Eigen::VectorXd rm = twin.residual(e);
+    kfd.col(static_cast<Eigen::Index>(j)) = (rp - rm) / (2.0 * h);
+  }
+  return kfd;
+}
+
+// The moment rows are compared in the plane normal to each node's director: the shell's
+// tangent keeps the rotational geometric term projected there (director_to_dofs), the
+// drilling moment having no stiffness to pair with. delta: the accepted nodal rotations.
+Eigen::MatrixXd projected_moment_rows(const Twin& twin, int e, const Eigen::VectorXd& delta, Eigen::MatrixXd diff) {
+  const auto& quad = twin.mesh.quads[static_cast<std::size_t>(e)];
+  for (int I = 0; I < 4; ++I) {
+    const int n = quad[static_cast<std::size_t>(I)];
+    const Eigen::Vector3d d = element::rotate_by_vector(twin.with.director(n), delta.segment<3>(ShellModel::dof(n, 3)));
+    const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - d * d.transpose();
+    diff.middleRows(6 * I + 3, 3) = P * diff.middleRows(6 * I + 3, 3);
+  }
+  return diff;
+}
+
 // Largest relative error of the contact tangent against central differences over the elements
 // the tools touch; *copy_elements counts the elements touched by a copy (not the real tool).
 double worst_tangent_error(double mu, bool phong, int* copy_elements, int* touched) {
@@ -106,30 +140,7 @@ double worst_tangent_error(double mu, bool phong, int* copy_elements, int* touch
     real_only.evaluate_element(e, &r_real, nullptr);
     twin.with.evaluate_element(e, &r_all, nullptr);
     if ((r_real - r_all).norm() > 0.0) ++*copy_elements;
-    const auto& dofs = twin.with.element_dofs()[static_cast<std::size_t>(e)];
-    Eigen::MatrixXd kfd(k.rows(), k.cols());
-    const double h = 1e-7;
-    for (std::size_t j = 0; j < dofs.size(); ++j) {
-      Eigen::VectorXd d = zero;
-      d(dofs[j]) = h;
-      twin.set_trial(d);
-      const Eigen::VectorXd rp = twin.residual(e);
-      d(dofs[j]) = -h;
-      twin.set_trial(d);
-      const Eigen::VectorXd rm = twin.residual(e);
-      kfd.col(static_cast<Eigen::Index>(j)) = (rp - rm) / (2.0 * h);
-    }
-    // The moment rows are compared in the plane normal to each node's director: the shell's
-    // tangent keeps the rotational geometric term projected there (director_to_dofs), the
-    // drilling moment having no stiffness to pair with.
-    Eigen::MatrixXd diff = k - kfd;
-    const auto& quad = twin.mesh.quads[static_cast<std::size_t>(e)];
-    for (int I = 0; I < 4; ++I) {
-      const int n = quad[static_cast<std::size_t>(I)];
-      const Eigen::Vector3d d = element::rotate_by_vector(twin.with.director(n), delta.segment<3>(ShellModel::dof(n, 3)));
-      const Eigen::Matrix3d P = Eigen::Matrix3d::Identity() - d * d.transpose();
-      diff.middleRows(6 * I + 3, 3) = P * diff.middleRows(6 * I + 3, 3);
-    }
+    const Eigen::MatrixXd diff = projected_moment_rows(twin, e, delta, k - fd_tangent(twin, e, k.rows(), k.cols()));
     worst = std::max(worst, diff.norm() / k.norm());
   }
   return worst;

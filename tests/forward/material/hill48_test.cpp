@@ -7,7 +7,7 @@
 
 using namespace spifit::material;
 
-// Thesis eq. C.3 with the measured, rounded r-values (App. C.1): SPEC §2 quotes the result.
+// Thesis eq. C.3 with the measured, rounded r-values of App. C.1.
 TEST(Hill48, LankfordRoundedThesisValues) {
   const Hill48 h = hill_from_lankford({0.68, 0.73, 0.66});
   EXPECT_NEAR(h.F, 1.2266, 1e-4);
@@ -35,7 +35,7 @@ TEST(Hill48, LankfordRoundTrip) {
   EXPECT_NEAR(back.r90, r.r90, 1e-14);
 }
 
-// Card C.3's N = 4.06 predicts r45 = 1.18, not the measured 0.73 (SPEC §2).
+// Card C.3's N = 4.06 predicts r45 = 1.18, not the measured 0.73 (eq. C.2, App. C.1).
 TEST(Hill48, CardC3PredictsR45Of118) {
   const Hill48 h{1.224, 1.193, 0.807, 4.06, 4.06, 4.06};
   EXPECT_NEAR(lankford_from_hill(h).r45, 1.1798, 1e-4);

@@ -1,5 +1,5 @@
-// Commit / revert semantics of one integration point (NUMERICS.md: s1 is only committed when
-// the global step converged).
+// Commit / revert semantics of one integration point: s1 is only committed when the global
+// step converged.
 #include "forward/material/material_point.hpp"
 #include "tests/support/cards.hpp"
 

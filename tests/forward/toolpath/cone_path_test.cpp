@@ -1,6 +1,7 @@
-// Cone tool paths (SPEC §3.3): tool centre at R from the CAD surface point it touches, chord
-// error, pie edges and lift/move/plunge, full-disc ramps and descent, one direction of travel,
-// the cone70 numbers by hand, length against the analytic sum, the vwall stages, option checks.
+// Cone tool paths (thesis §8.1, §9.1): tool centre at R from the CAD surface point it touches,
+// chord error, pie edges and lift/move/plunge, full-disc ramps and descent, one direction of
+// travel, the cone70 numbers by hand, length against the analytic sum, the vwall stages, option
+// checks.
 #include "forward/toolpath/cone_path.hpp"
 
 #include <gtest/gtest.h>

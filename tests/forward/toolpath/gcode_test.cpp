@@ -1,4 +1,4 @@
-// G-code reader: the SPIF line test (SPEC §3.2) in absolute and incremental form, units,
+// G-code reader: the SPIF line test (thesis §4.1.1) in absolute and incremental form, units,
 // comments and ignored words, arcs (I/J, R, direction, chord error, helix, full circle) and
 // the errors a user can make, each with file, line and word.
 #include "forward/toolpath/gcode.hpp"
@@ -38,8 +38,8 @@ InputError parse_error(const std::string& text, const GcodeOptions& o = {}) {
   return InputError("", "", "", "");
 }
 
-// Line test (SPEC §3.2): tool starts above the sheet at (0, 0, 50), rapid to (-50, 0, 10),
-// plunge to z = -5, one pass along x, step down to z = -10, pass back.
+// Line test (thesis §4.1.1, Fig. 4.1): tool starts above the sheet at (0, 0, 50), rapid to (-50, 0,
+// 10), plunge to z = -5, one pass along x, step down to z = -10, pass back.
 GcodeOptions above_sheet() {
   GcodeOptions o;
   o.start = Eigen::Vector3d(0, 0, 50);
@@ -87,7 +87,7 @@ ArcCheck check_arc(const std::vector<Waypoint>& w, std::size_t first, const Eige
 TEST(Gcode, LineTestAbsolute) {
   const ToolPath p = parse_gcode(
       "%\n"
-      "(SPIF line test, SPEC 3.2)\n"
+      "(SPIF line test, thesis 4.1.1)\n"
       "G21 G90 G17 G94\n"
       "G00 X-50 Y0 Z10\n"
       "G01 Z-5 F600\n"
