@@ -4,10 +4,7 @@
 // contour range (thesis §8.3, §9.3), the section, stage and element-history series, the energy
 // account and the run's counters.
 #include "forward/io/series.hpp"
-#include "forward/model/model_energies.hpp"
-#include "forward/scenes/common/fe_run.hpp"
-#include "forward/scenes/common/scene_result.hpp"
-#include "forward/scenes/common/tool_force_history.hpp"
+#include "forward/scenes/common/fe_scene_result.hpp"
 #include "forward/scenes/cone/cone_observables.hpp"
 
 #include <optional>
@@ -16,21 +13,18 @@
 
 namespace spifit::scene {
 
-class ConeResult final : public SceneResult {
+class ConeResult final : public FeSceneResult {
  public:
   nlohmann::json inputs;  // the scene as summary.json describes it
   std::string name;
   int elements = 0;
   int contours_total = 0;
-  FeRunOutcome run;
-  ToolForceHistory force;             // the real tool (a pie's virtual copies included), not scaled
+  // force: the real tool's (a pie's virtual copies included), not scaled by 360 / pie angle.
   Eigen::Vector3d peak_polar = Eigen::Vector3d::Zero();  // (r, theta, z), largest magnitude per component
   std::vector<ContourMean> contours;  // completed contours
   std::optional<SteadyState> steady_state;
   io::Series sections, stages, history;  // sections.csv, stages.csv, history.csv
   nlohmann::json observables;            // section angle, last section, stages, history element
-  io::Series energies;
-  model::ModelEnergies final_energies;
 
   Eigen::Vector3d final_polar_force() const;
   nlohmann::json to_json() const override;

@@ -179,11 +179,7 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   r.name = scene.name;
   r.elements = run.model().num_elements();
   r.contours_total = static_cast<int>(track.contours().size());
-  r.run = run.run(r.inputs);
-  r.status = r.run.status;
-  r.message = r.run.message;
-  r.wall_seconds = r.run.wall_seconds;
-  r.force = force.history();
+  r.take(run.run(r.inputs), force, energy, scene.contact.points);
   for (const ForceSample& s : polar_samples(r.force))
     for (int i = 0; i < 3; ++i)
       if (std::abs(s.polar(i)) > std::abs(r.peak_polar(i))) r.peak_polar(i) = s.polar(i);
@@ -193,10 +189,6 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   r.stages = observables.stages();
   r.history = observables.history();
   r.observables = observables.summary();
-  r.energies = energy.table();
-  r.final_energies = energy.last();
-  const std::string w = contact::ShellContact::resolution_warning(r.force.max_penetration(), r.force.max_surface_penetration(), scene.contact.points);
-  if (!w.empty()) r.warnings.push_back(w);
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;
 }

@@ -3,10 +3,7 @@
 // history (a half model's force mirrored to the whole sheet), the sections y = 0 at the named
 // path points, the energy account and the run's counters.
 #include "forward/io/series.hpp"
-#include "forward/model/model_energies.hpp"
-#include "forward/scenes/common/fe_run.hpp"
-#include "forward/scenes/common/scene_result.hpp"
-#include "forward/scenes/common/tool_force_history.hpp"
+#include "forward/scenes/common/fe_scene_result.hpp"
 
 #include <string>
 #include <vector>
@@ -18,18 +15,14 @@ struct PathSection {
   io::Series nodes;   // x0, x, y, z, thickness of the nodes on y = 0 (mid-surface) [mm]
 };
 
-class FormingResult final : public SceneResult {
+class FormingResult final : public FeSceneResult {
  public:
   nlohmann::json inputs;  // the scene as summary.json describes it
   std::string name, kind;
   int elements = 0;
   double path_length = 0.0, feed = 0.0;
   bool half = false;
-  FeRunOutcome run;
-  ToolForceHistory force;
   std::vector<PathSection> sections;
-  io::Series energies;                  // after every increment (energy_log.hpp)
-  model::ModelEnergies final_energies;
 
   nlohmann::json to_json() const override;
   std::string brief_report() const override;

@@ -120,16 +120,8 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   r.feed = scene.feed;
   r.half = scene.half;
   r.warnings = run.model().warnings();
-  r.run = run.run(r.inputs);
-  r.status = r.run.status;
-  r.message = r.run.message;
-  r.wall_seconds = r.run.wall_seconds;
-  r.force = force.history();
+  r.take(run.run(r.inputs), force, energy, scene.contact.points);
   r.sections = sections.sections();
-  r.energies = energy.table();
-  r.final_energies = energy.last();
-  const std::string w = contact::ShellContact::resolution_warning(r.force.max_penetration(), r.force.max_surface_penetration(), scene.contact.points);
-  if (!w.empty()) r.warnings.push_back(w);
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;
 }

@@ -1,0 +1,27 @@
+#pragma once
+// What the typed result of every FE forming scene holds (forming_result.hpp, cone_result.hpp):
+// the skeleton's outcome, the tool force history, the energy account after every increment and
+// at the end.
+#include "forward/io/series.hpp"
+#include "forward/model/model_energies.hpp"
+#include "forward/scenes/common/energy_log.hpp"
+#include "forward/scenes/common/fe_run.hpp"
+#include "forward/scenes/common/force_log.hpp"
+#include "forward/scenes/common/scene_result.hpp"
+#include "forward/scenes/common/tool_force_history.hpp"
+
+namespace spifit::scene {
+
+class FeSceneResult : public SceneResult {
+ public:
+  FeRunOutcome run;
+  ToolForceHistory force;
+  io::Series energies;
+  model::ModelEnergies final_energies;
+
+  // After the run: its outcome (status, message, wall time), the force and energy logs, and a
+  // warning when the tool sank deeper into the tool-side surface than its contact points felt.
+  void take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, int contact_points);
+};
+
+}  // namespace spifit::scene
