@@ -2,7 +2,7 @@
 // shear curve in < 1 s on 2 cores, docs/benchmarks.md, "Identification: fit_classic"), with
 // its iterations, forward runs and the largest relative deviation of the fitted values from
 // the generating card C.2 (data are synthetic).
-#include "inverse/ceres_fit.hpp"
+#include "inverse/run_fit.hpp"
 #include "inverse/fit_file.hpp"
 
 #include <benchmark/benchmark.h>

@@ -6,7 +6,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/material_point/material_point_file.hpp"
 #include "forward/scenes/scene_registry.hpp"
-#include "inverse/ceres_fit.hpp"
+#include "inverse/run_fit.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/fit_output.hpp"
 #include "inverse/sweep.hpp"

@@ -1,6 +1,7 @@
 #include "inverse/conflicts.hpp"
 
 #include "forward/io/input_error.hpp"
+#include "inverse/ceres_fit.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -3,7 +3,7 @@
 // DIR/experiments/NAME.csv (measured vs simulated at the start and at the solution), and the
 // terse CLI table. Schema in docs/file-formats.md.
 #include "forward/io/output_directory.hpp"
-#include "inverse/ceres_fit.hpp"
+#include "inverse/fit_result.hpp"
 #include "inverse/fit_record.hpp"
 
 #include <string>

@@ -1,5 +1,6 @@
 #include "inverse/multistart.hpp"
 
+#include "inverse/ceres_fit.hpp"
 #include "inverse/nlopt_fit.hpp"
 
 #include <chrono>

@@ -3,7 +3,7 @@
 // (seeded, in internal coordinates: uniform in ln(value) for log-scaled parameters) inside the
 // bounds; the best solution is returned, and the spread of the solutions says whether the
 // optimum is unique.
-#include "inverse/ceres_fit.hpp"
+#include "inverse/fit_result.hpp"
 
 namespace spifit::inverse {
 

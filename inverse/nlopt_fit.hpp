@@ -4,7 +4,7 @@
 // The objective is the same cost as Ceres's (1/2 sum of squared conditioned residuals); a
 // failed forward run costs kFailedRunCost (finite, never NaN). The best point seen is kept
 // and returned even when NLopt stops on round-off.
-#include "inverse/ceres_fit.hpp"
+#include "inverse/fit_result.hpp"
 
 namespace spifit::inverse {
 

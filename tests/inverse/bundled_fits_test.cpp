@@ -1,5 +1,5 @@
 // The bundled fit files do what experiments/README.md says.
-#include "inverse/ceres_fit.hpp"
+#include "inverse/run_fit.hpp"
 #include "inverse/fit_file.hpp"
 
 #include <gtest/gtest.h>

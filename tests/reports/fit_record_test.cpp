@@ -3,7 +3,7 @@
 // survive, and a broken fit.json names the file and the key path.
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
-#include "inverse/ceres_fit.hpp"
+#include "inverse/run_fit.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/fit_output.hpp"
 #include "inverse/fit_record.hpp"

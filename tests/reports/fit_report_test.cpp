@@ -3,7 +3,7 @@
 // plots must exist when gnuplot is there, and a broken gnuplot or fit.json is handled.
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
-#include "inverse/ceres_fit.hpp"
+#include "inverse/run_fit.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/fit_output.hpp"
 #include "reports/fit_report.hpp"

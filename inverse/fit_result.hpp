@@ -1,0 +1,62 @@
+#pragma once
+// The result of an identification, whatever the engine (Ceres, NLopt; docs/identification.md):
+// the fitted values and card, costs, history, uncertainty, per-experiment fits and conflicts,
+// multi-start spread; and the run options.
+#include "inverse/fit_file.hpp"
+#include "inverse/uncertainty.hpp"
+
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct ExperimentCost {
+  std::string name, kind;
+  int points = 0;
+  double cost = 0.0;  // 1/2 sum r^2 of this experiment at the solution
+  double rms = 0.0;   // root-mean-square conditioned residual
+};
+
+struct FitResult {
+  std::string algorithm, termination;
+  unsigned seed = 0;  // NLopt seed (0 for the deterministic Ceres algorithms)
+  bool usable = false;
+  std::vector<double> initial, values;  // physical values of the free parameters
+  double cost_initial = 0.0, cost_final = 0.0;  // 1/2 sum of squared conditioned residuals
+  int iterations = 0;
+  long forward_runs = 0;
+  double wall_seconds = 0.0;
+  std::vector<double> cost_history;  // per iteration
+  std::vector<ExperimentCost> experiment_costs;
+  Uncertainty uncertainty;
+  material::MaterialCard card;  // the fitted card
+  // Optional: each experiment fitted alone from the global solution (conflicts.hpp).
+  struct Alone {
+    std::string experiment;
+    bool usable = false;
+    std::vector<double> values, ci95_lower, ci95_upper;
+    std::vector<bool> identifiable;
+  };
+  std::vector<Alone> per_experiment;
+  std::vector<std::string> conflicts;  // plain words: experiments that disagree on a parameter
+  struct MultiStart {
+    int starts = 1, best_start = 0, at_best = 0;
+    struct Solution {
+      bool usable = false;
+      double cost = 0.0;
+      std::vector<double> start, values;
+    };
+    std::vector<Solution> solutions;
+    std::vector<double> spread_min, spread_max;  // over the starts that reached the best cost
+  };
+  MultiStart multistart;
+};
+
+struct FitRunOptions {
+  std::string algorithm;  // overrides the fit file when not empty
+  int threads = 1;        // parallel evaluation of experiments (Ceres num_threads)
+  unsigned seed = 42;     // NLopt's stochastic algorithms and multi-start draws (in fit.json)
+  int multistart = 0;     // overrides the fit file's multistart when > 0
+};
+
+}  // namespace spifit::inverse
