@@ -116,9 +116,8 @@ class FeRun {
   }
 
   // Runs the whole path (or resumes it). head: the summary's description of the inputs, written
-  // as DIR/summary.json with status "running" before the first increment (with
-  // "resumed_at_contour"-style information added by the caller). The final summary is the
-  // caller's to write, from its typed result.
+  // as DIR/summary.json with status "running" before the first increment. The final summary is
+  // the caller's to write, from its typed result.
   FeRunOutcome run(const nlohmann::json& head);
 
  private:
