@@ -19,7 +19,13 @@ std::string Range::text() const {
   if (!has_lo && !has_hi) return "any";
   if (has_lo && !has_hi) return std::string(lo_open ? "> " : ">= ") + format_number(lo);
   if (!has_lo) return std::string(hi_open ? "< " : "<= ") + format_number(hi);
-  return std::string(lo_open ? "(" : "[") + format_number(lo) + ", " + format_number(hi) + (hi_open ? ")" : "]");
+  // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) on the chain of + here.
+  std::string out = lo_open ? "(" : "[";
+  out += format_number(lo);
+  out += ", ";
+  out += format_number(hi);
+  out += hi_open ? ")" : "]";
+  return out;
 }
 
 const char* to_string(InputType t) {
@@ -51,6 +57,15 @@ std::string InputInfo::check(const std::string& v) const {
   return "expected " + list;
 }
 
+std::string markdown_cell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 std::string markdown_reference(const std::vector<InputInfo>& inputs) {
   std::string out = "| key | type | unit | valid values | varied by sweeps and fits | description |\n|---|---|---|---|---|---|\n";
   for (const auto& i : inputs) {
@@ -62,7 +77,7 @@ std::string markdown_reference(const std::vector<InputInfo>& inputs) {
     }
     if (i.type == InputType::boolean) valid = "`true`, `false`";
     out += "| `" + i.name + "` | " + to_string(i.type) + " | " + (i.unit.empty() ? "-" : i.unit) + " | " + valid + " | " +
-           (i.variable ? "yes" : "-") + " | " + i.doc + " |\n";
+           (i.variable ? "yes" : "-") + " | " + markdown_cell(i.doc) + " |\n";
   }
   return out;
 }

@@ -12,7 +12,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <variant>
 #include <vector>
 
 namespace spifit::io {
@@ -50,6 +49,7 @@ struct InputInfo {
 };
 
 // A Markdown table of inputs: name, type, unit, valid values, description.
+std::string markdown_cell(const std::string& text);  // '|' escaped
 std::string markdown_reference(const std::vector<InputInfo>& inputs);
 
 template <typename Owner>
@@ -65,13 +65,13 @@ class InputTable {
     std::function<bool(Owner&, const std::string&)> set;
   };
 
-  InputTable& real(InputInfo info, Real field) { return add(std::move(info), InputType::real, std::move(field)); }
-  InputTable& integer(InputInfo info, Integer field) { return add(std::move(info), InputType::integer, std::move(field)); }
-  InputTable& boolean(InputInfo info, Boolean field) { return add(std::move(info), InputType::boolean, std::move(field)); }
-  InputTable& text(InputInfo info, Text field) { return add(std::move(info), InputType::text, std::move(field)); }
+  InputTable& real(InputInfo info, Real field) { return add(std::move(info), InputType::real, Field{std::move(field), {}, {}, {}}); }
+  InputTable& integer(InputInfo info, Integer field) { return add(std::move(info), InputType::integer, Field{{}, std::move(field), {}, {}}); }
+  InputTable& boolean(InputInfo info, Boolean field) { return add(std::move(info), InputType::boolean, Field{{}, {}, std::move(field), {}}); }
+  InputTable& text(InputInfo info, Text field) { return add(std::move(info), InputType::text, Field{{}, {}, {}, std::move(field)}); }
   // An input the scene's reader handles itself (paths relative to the scene file, lists, the
   // tool path): declared for allow_only and the documentation; read() skips it, get/set refuse it.
-  InputTable& custom(InputInfo info, InputType type) { return add(std::move(info), type, Custom{}); }
+  InputTable& custom(InputInfo info, InputType type) { return add(std::move(info), type, Field{}); }
 
   const std::vector<InputInfo>& infos() const { return infos_; }
   const InputInfo* find(const std::string& name) const {
@@ -100,20 +100,26 @@ class InputTable {
   double get(const Owner& o, const std::string& name) const {
     const std::size_t k = index(name);
     Owner& w = const_cast<Owner&>(o);  // the field accessors are not const; nothing is written
-    return std::visit([&](const auto& f) { return value_of(f, w); }, fields_[k]);
+    const Field& f = fields_[k];
+    if (f.real) return f.real(w);
+    if (f.integer) return f.integer(w);
+    return f.boolean(w) ? 1.0 : 0.0;
   }
   // Sets a number or flag by name: "" when done, else why the value is invalid for it (nothing
   // set). std::invalid_argument for an unknown or text input.
   std::string set(Owner& o, const std::string& name, double v) const {
     const std::size_t k = index(name);
     if (const std::string why = infos_[k].check(v); !why.empty()) return why;
-    std::visit([&](const auto& f) { assign(f, o, v); }, fields_[k]);
+    const Field& f = fields_[k];
+    if (f.real) f.real(o) = v;
+    else if (f.integer) f.integer(o) = static_cast<int>(v);
+    else f.boolean(o) = v != 0.0;
     return {};
   }
   // Whether the input is one the reader handles itself.
   bool is_custom(const std::string& name) const {
     for (std::size_t k = 0; k < infos_.size(); ++k)
-      if (infos_[k].name == name) return std::holds_alternative<Custom>(fields_[k]);
+      if (infos_[k].name == name) return fields_[k].custom();
     return false;
   }
   std::vector<std::string> variable_names() const {
@@ -124,54 +130,49 @@ class InputTable {
   }
 
  private:
-  struct Custom {};
-  using Field = std::variant<Real, Integer, Boolean, Text, Custom>;
+  // The accessor of an input: exactly one of them is set, none for a custom input.
+  struct Field {
+    Real real;
+    Integer integer;
+    Boolean boolean;
+    Text text;
+    bool custom() const { return !real && !integer && !boolean && !text.set; }
+  };
   std::vector<InputInfo> infos_;
   std::vector<Field> fields_;
 
-  template <typename F>
-  InputTable& add(InputInfo info, InputType type, F field) {
+  InputTable& add(InputInfo info, InputType type, Field field) {
     if (find(info.name)) throw std::logic_error("input " + info.name + " declared twice");
     info.type = type;
     infos_.push_back(std::move(info));
-    fields_.push_back(Field(std::move(field)));
+    fields_.push_back(std::move(field));
     return *this;
   }
   std::size_t index(const std::string& name) const {
     for (std::size_t k = 0; k < infos_.size(); ++k)
       if (infos_[k].name == name) {
-        if (infos_[k].type == InputType::text || std::holds_alternative<Custom>(fields_[k]))
+        if (infos_[k].type == InputType::text || fields_[k].custom())
           throw std::invalid_argument("input " + name + " is not a number that can be set by name");
         return k;
       }
     throw std::invalid_argument("unknown input " + name);
   }
-  static double value_of(const Real& f, Owner& o) { return f(o); }
-  static double value_of(const Integer& f, Owner& o) { return f(o); }
-  static double value_of(const Boolean& f, Owner& o) { return f(o) ? 1.0 : 0.0; }
-  static double value_of(const Text&, Owner&) { return std::numeric_limits<double>::quiet_NaN(); }
-  static double value_of(const Custom&, Owner&) { return std::numeric_limits<double>::quiet_NaN(); }
-  static void assign(const Real& f, Owner& o, double v) { f(o) = v; }
-  static void assign(const Integer& f, Owner& o, double v) { f(o) = static_cast<int>(v); }
-  static void assign(const Boolean& f, Owner& o, double v) { f(o) = v != 0.0; }
-  static void assign(const Text&, Owner&, double) {}
-  static void assign(const Custom&, Owner&, double) {}
-  static void read_one(const TomlTable& t, const InputInfo& i, const Field& field, Owner& o) {
+  static void read_one(const TomlTable& t, const InputInfo& i, const Field& f, Owner& o) {
     const std::string key = i.key();
-    if (const auto* f = std::get_if<Real>(&field)) {
+    if (f.real) {
       const double v = t.number(key);
       if (const std::string why = i.check(v); !why.empty()) t.fail(key, why);
-      (*f)(o) = v;
-    } else if (const auto* g = std::get_if<Integer>(&field)) {
+      f.real(o) = v;
+    } else if (f.integer) {
       const int v = t.integer(key, 0);
       if (const std::string why = i.check(static_cast<double>(v)); !why.empty()) t.fail(key, why);
-      (*g)(o) = v;
-    } else if (const auto* b = std::get_if<Boolean>(&field)) {
-      (*b)(o) = t.boolean(key, false);
-    } else if (const auto* x = std::get_if<Text>(&field)) {
+      f.integer(o) = v;
+    } else if (f.boolean) {
+      f.boolean(o) = t.boolean(key, false);
+    } else if (f.text.set) {
       const std::string v = t.string(key);
       if (const std::string why = i.check(v); !why.empty()) t.fail(key, why);
-      if (!x->set(o, v)) t.fail(key, "not a value of " + i.name);
+      if (!f.text.set(o, v)) t.fail(key, "not a value of " + i.name);
     }
   }
 };

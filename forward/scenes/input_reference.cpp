@@ -9,7 +9,7 @@ std::string observables_markdown(const std::vector<Observable>& observables) {
   std::string out = "| observable | unit | needs | description |\n|---|---|---|---|\n";
   for (const auto& o : observables) {
     const char* needs = o.needs == Observable::Needs::window ? "`window`" : o.needs == Observable::Needs::contours ? "`contours`" : "-";
-    out += "| `" + o.name + "` | " + (o.unit.empty() ? "-" : o.unit) + " | " + needs + " | " + o.doc + " |\n";
+    out += "| `" + o.name + "` | " + (o.unit.empty() ? "-" : o.unit) + " | " + needs + " | " + io::markdown_cell(o.doc) + " |\n";
   }
   return out;
 }
@@ -31,15 +31,20 @@ std::string input_reference_markdown() {
       "Keys the reader handles itself (paths, lists, the tool path) are listed with their type. Unknown keys are "
       "errors. Formats and examples: docs/file-formats.md.\n\n"
       "## Scene kinds\n\n";
-  std::string family, first;
+  const SceneKind* shown = nullptr;
   for (const auto& k : scene_kinds()) {
-    // Kinds of one family share their keys and observables: the tables are shown with the first.
-    if (k.family == family) {
-      out += "### `" + k.name + "`\n\n" + k.doc + ": the keys and observables of `" + first + "` above.\n\n";
+    // A kind with the keys and observables of the last one shown refers to it.
+    const auto same = [](const std::vector<io::InputInfo>& a, const std::vector<io::InputInfo>& b) {
+      if (a.size() != b.size()) return false;
+      for (std::size_t i = 0; i < a.size(); ++i)
+        if (a[i].name != b[i].name || a[i].doc != b[i].doc) return false;
+      return true;
+    };
+    if (shown && shown->family == k.family && same(shown->inputs, k.inputs)) {
+      out += "### `" + k.name + "`\n\n" + k.doc + ": the keys and observables of `" + shown->name + "` above.\n\n";
       continue;
     }
-    family = k.family;
-    first = k.name;
+    shown = &k;
     out += kind_reference_markdown(k);
   }
   out += "## Material parameters\n\nThe parameters of a material card (docs/file-formats.md, \"Material card\") by the names fits and "
@@ -47,7 +52,7 @@ std::string input_reference_markdown() {
          "| name | card key | unit | valid values | description |\n|---|---|---|---|---|\n";
   for (const auto& m : material::material_inputs())
     out += "| `" + m.info.name + "` | `" + m.card_key + "` | " + (m.info.unit.empty() ? "-" : m.info.unit) + " | " + m.info.range.text() +
-           " | " + m.info.doc + " |\n";
+           " | " + io::markdown_cell(m.info.doc) + " |\n";
   return out;
 }
 

@@ -1,11 +1,15 @@
 // Sweeps: grid order, closed-form sensitivity, failing points, thread independence.
 #include "forward/io/input_error.hpp"
+#include "forward/material/hill48.hpp"
+#include "forward/material/material_card.hpp"
 #include "inverse/sweep.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
+#include <numbers>
+#include <unistd.h>
 
 using namespace spifit;
 
@@ -60,5 +64,34 @@ TEST(Sweep, InvalidGridValueIsAnInputError) {
   }
   std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_45.toml") << "\"\nmetrics = [\"r_valu\"]\n[inputs.\"hill.N\"]\nvalues = [3.0]\n";
   EXPECT_THROW(inverse::read_sweep_file(f.string()), io::InputError);
+  std::filesystem::remove_all(dir);
+}
+
+// A material-point scene's own named input: the r-value of card C.3 + C.4 over the loading
+// angle follows Hill's closed form r(alpha) (thesis eq. C.2 at 0, 45 and 90 deg).
+TEST(Sweep, TensileAngleIsANamedInput) {
+  const auto dir = std::filesystem::temp_directory_path() / ("spifit_sweep_angle_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto f = dir / "s.toml";
+  std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_00.toml")
+                   << "\"\nmetrics = [\"r_value\"]\nsensitivities = false\n[inputs.\"scene.angle\"]\nvalues = [0.0, 30.0, 45.0, 90.0]\n";
+  const auto spec = inverse::read_sweep_file(f.string());
+  const auto r = inverse::run_sweep(spec, {2, nullptr, {}});
+  const auto card = material::load_material_card(src("materials/aa3003o_c3c4.toml"));
+  ASSERT_EQ(r.points.size(), 4u);
+  for (const auto& p : r.points) {
+    ASSERT_TRUE(p.ok) << p.message;
+    const double closed = material::r_value_at_angle(card.hill(), p.inputs[0] * std::numbers::pi / 180.0);
+    EXPECT_NEAR(p.metrics[0] / closed, 1.0, 1e-6) << "angle " << p.inputs[0];
+  }
+  // The reader's range: an angle beyond 180 deg is refused before anything runs.
+  std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_00.toml")
+                   << "\"\nmetrics = [\"r_value\"]\n[inputs.\"scene.angle\"]\nvalues = [200.0]\n";
+  try {
+    inverse::read_sweep_file(f.string());
+    ADD_FAILURE() << "angle 200 accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("must lie in [-180, 180] deg"), std::string::npos) << e.what();
+  }
   std::filesystem::remove_all(dir);
 }

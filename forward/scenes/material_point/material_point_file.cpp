@@ -1,6 +1,9 @@
 #include "forward/scenes/material_point/material_point_file.hpp"
 
 #include "forward/io/toml_reader.hpp"
+#include "forward/scenes/material_point/material_point_inputs.hpp"
+
+#include <cmath>
 
 #include <filesystem>
 #include <stdexcept>
@@ -59,6 +62,33 @@ void check_setup(const MaterialPointSetup& s) {
   }
 }
 
+namespace {
+
+// [scene] strain_path: targets of the control strain from 0 (defaults by kind).
+void read_strain_path(const io::TomlTable& sc, MaterialPointSetup& s) {
+  const bool shear_like = s.kind == MaterialPointKind::shear || s.kind == MaterialPointKind::bauschinger;
+  if (sc.has("strain_path")) {
+    s.strain_path = sc.number_list("strain_path");
+  } else if (s.kind == MaterialPointKind::bauschinger) {
+    sc.fail("strain_path", "required for bauschinger (e.g. [0.2, -0.2]: shear, then reverse shear)");
+  } else {
+    s.strain_path = {shear_like ? 0.5 : 0.3};
+  }
+  if (s.strain_path.empty()) sc.fail("strain_path", "must hold at least one target strain");
+  double prev = 0.0;
+  for (double t : s.strain_path) {
+    if (t == prev) sc.fail("strain_path", "consecutive targets must differ (and the first must differ from 0)");
+    if (std::abs(t) > 5.0) sc.fail("strain_path", "targets beyond |5| log strain are not meaningful for a material point");
+    prev = t;
+  }
+  if (s.kind == MaterialPointKind::bauschinger && s.strain_path.size() < 2)
+    sc.fail("strain_path", "bauschinger needs at least one reversal (two or more targets)");
+  if (s.kind == MaterialPointKind::tensile && s.strain_path.front() < 0)
+    sc.fail("strain_path", "a tensile test starts in tension (first target > 0)");
+}
+
+}  // namespace
+
 MaterialPointScene read_material_point_scene(const std::string& path) {
   const auto root = io::TomlTable::parse_file(path);
   root.allow_only({"scene", "solver"});
@@ -69,72 +99,20 @@ MaterialPointScene read_material_point_scene(const std::string& path) {
   const std::string kind = sc->string("kind");
   MaterialPointSetup& s = out.setup;
   if (!material_point_kind_from_string(kind, &s.kind)) sc->fail("kind", "expected a material-point kind: tensile, shear, bauschinger, plane_strain or biaxial");
-
-  std::vector<std::string> allowed{"kind", "name", "description", "material", "angle", "strain_path", "increments"};
-  if (s.kind == MaterialPointKind::tensile) { allowed.push_back("r_value_strain"); allowed.push_back("offset_strain"); }
-  if (s.kind == MaterialPointKind::biaxial) allowed.push_back("stress_ratio");
-  sc->allow_only(allowed);
-
-  std::string stem = std::filesystem::path(path).stem().string();
-  out.name = sc->string("name", stem);
+  const auto& inputs = material_point_inputs(s.kind);
+  sc->allow_only(inputs.keys_of("scene"));
+  out.name = sc->string("name", std::filesystem::path(path).stem().string());
   out.description = sc->string("description", "");
-
   const std::string mat = sc->string("material");
   std::filesystem::path mp(mat);
   if (mp.is_relative()) mp = std::filesystem::path(path).parent_path() / mp;
   if (!std::filesystem::exists(mp)) sc->fail("material", "material card not found at " + mp.lexically_normal().string());
   out.card = material::load_material_card(mp.lexically_normal().string());
-
-  s.angle_deg = sc->number("angle", 0.0);
-  if (!(s.angle_deg >= -180.0 && s.angle_deg <= 180.0)) sc->fail("angle", "must lie in [-180, 180] degrees");
-  const bool shear_like = s.kind == MaterialPointKind::shear || s.kind == MaterialPointKind::bauschinger;
-  if (sc->has("strain_path")) {
-    s.strain_path = sc->number_list("strain_path");
-  } else if (s.kind == MaterialPointKind::bauschinger) {
-    sc->fail("strain_path", "required for bauschinger (e.g. [0.2, -0.2]: shear, then reverse shear)");
-  } else {
-    s.strain_path = {shear_like ? 0.5 : 0.3};
-  }
-  if (s.strain_path.empty()) sc->fail("strain_path", "must hold at least one target strain");
-  double prev = 0.0;
-  for (double t : s.strain_path) {
-    if (t == prev) sc->fail("strain_path", "consecutive targets must differ (and the first must differ from 0)");
-    if (std::abs(t) > 5.0) sc->fail("strain_path", "targets beyond |5| log strain are not meaningful for a material point");
-    prev = t;
-  }
-  if (s.kind == MaterialPointKind::bauschinger && s.strain_path.size() < 2)
-    sc->fail("strain_path", "bauschinger needs at least one reversal (two or more targets)");
-  if (s.kind == MaterialPointKind::tensile && s.strain_path.front() < 0)
-    sc->fail("strain_path", "a tensile test starts in tension (first target > 0)");
-  s.increments = sc->integer("increments", 200);
-  if (s.increments < 1 || s.increments > 10000000) sc->fail("increments", "must lie in [1, 1e7]");
-  if (s.kind == MaterialPointKind::tensile) {
-    s.r_value_strain = sc->number("r_value_strain", 0.10);
-    if (!(s.r_value_strain > 0)) sc->fail("r_value_strain", "must be > 0");
-    s.offset_strain = sc->number("offset_strain", 0.002);
-    if (!(s.offset_strain > 0 && s.offset_strain < 0.1)) sc->fail("offset_strain", "must lie in (0, 0.1)");
-  }
-  if (s.kind == MaterialPointKind::biaxial) {
-    s.stress_ratio = sc->number("stress_ratio", 1.0);
-    if (!(s.stress_ratio >= -1.0 && s.stress_ratio <= 1.0)) sc->fail("stress_ratio", "must lie in [-1, 1] (sigma_ww / sigma_ll)");
-  }
-
+  inputs.read(*sc, "scene", out);
+  read_strain_path(*sc, s);
   if (auto so = root.table("solver")) {
-    so->allow_only({"tolerance", "kinematic_substep", "max_substeps", "max_cutbacks", "max_newton_iterations", "return_mapping_tolerance"});
-    auto& d = s.driver;
-    d.tolerance = so->number("tolerance", d.tolerance);
-    if (!(d.tolerance > 0 && d.tolerance < 1e-2)) so->fail("tolerance", "must lie in (0, 1e-2)");
-    d.kinematic_substep = so->number("kinematic_substep", d.kinematic_substep);
-    if (!(d.kinematic_substep >= 0)) so->fail("kinematic_substep", "must be >= 0 (0 disables the accuracy sub-stepping)");
-    d.max_substeps = so->integer("max_substeps", d.max_substeps);
-    if (d.max_substeps < 1) so->fail("max_substeps", "must be >= 1");
-    d.max_cutbacks = so->integer("max_cutbacks", d.max_cutbacks);
-    if (d.max_cutbacks < 0 || d.max_cutbacks > 60) so->fail("max_cutbacks", "must lie in [0, 60]");
-    d.max_newton_iterations = so->integer("max_newton_iterations", d.max_newton_iterations);
-    if (d.max_newton_iterations < 2) so->fail("max_newton_iterations", "must be >= 2 (a residual check and at least one update)");
-    d.return_mapping.tolerance = so->number("return_mapping_tolerance", d.return_mapping.tolerance);
-    if (!(d.return_mapping.tolerance > 0 && d.return_mapping.tolerance < 1e-3))
-      so->fail("return_mapping_tolerance", "must lie in (0, 1e-3)");
+    so->allow_only(inputs.keys_of("solver"));
+    inputs.read(*so, "solver", out);
   }
   return out;
 }

@@ -1,6 +1,7 @@
 #include "forward/scenes/material_point/material_point_kind.hpp"
 
 #include "forward/scenes/common/table_scene.hpp"
+#include "forward/scenes/material_point/material_point_inputs.hpp"
 #include "forward/scenes/material_point/material_point_scene.hpp"
 
 #include <cmath>
@@ -13,7 +14,8 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class MaterialPointSceneFile final : public TableScene<MaterialPointScene> {
  public:
-  MaterialPointSceneFile(std::string kind, MaterialPointScene s) : TableScene(std::move(kind), std::move(s), nullptr) {}
+  MaterialPointSceneFile(std::string kind, MaterialPointScene s, const io::InputTable<MaterialPointScene>* table)
+      : TableScene(std::move(kind), std::move(s), table) {}
   std::vector<std::string> input_files() const override { return {data_.file, data_.card.file}; }
   std::unique_ptr<Scene> clone() const override { return std::make_unique<MaterialPointSceneFile>(*this); }
   std::unique_ptr<SceneResult> run(const RunFiles& files, const RunControl& control) const override {
@@ -63,8 +65,10 @@ SceneKind material_point_kind(MaterialPointKind kind, const char* doc) {
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
     MaterialPointScene s = read_material_point_scene(file);
     std::string name = to_string(s.setup.kind);
-    return std::make_unique<MaterialPointSceneFile>(std::move(name), std::move(s));
+    const auto* table = &material_point_inputs(s.setup.kind);
+    return std::make_unique<MaterialPointSceneFile>(std::move(name), std::move(s), table);
   };
+  k.inputs = material_point_inputs(kind).infos();
   k.observables = material_point_observables();
   return k;
 }

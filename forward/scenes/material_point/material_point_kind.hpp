@@ -1,7 +1,7 @@
 #pragma once
 // The material-point scene kinds (tensile, shear, bauschinger, plane_strain, biaxial) in the
-// registry (scene_registry.hpp): reading, running and the observables sweeps and fits read.
-// Their inputs are the card's parameters.
+// registry (scene_registry.hpp): reading, running, named inputs and the observables sweeps and
+// fits read.
 #include "forward/scenes/common/scene.hpp"
 
 #include <vector>
