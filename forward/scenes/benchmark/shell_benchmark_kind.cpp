@@ -1,5 +1,6 @@
 #include "forward/scenes/benchmark/shell_benchmark_kind.hpp"
 
+#include "forward/scenes/benchmark/shell_benchmark_inputs.hpp"
 #include "forward/scenes/benchmark/shell_benchmark_scene.hpp"
 
 namespace spifit::scene {
@@ -40,6 +41,7 @@ SceneKind shell_benchmark_kind() {
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
     return std::make_unique<ShellBenchmarkSceneFile>(read_shell_benchmark_scene(file));
   };
+  k.inputs = shell_benchmark_inputs().infos();
   k.observables = {{"value", "", "the benchmark's quantity (summary.json value)", Observable::Needs::nothing, false,
                     [](const SceneResult& r, const ObservableOptions&) { return dynamic_cast<const ShellBenchmarkResult&>(r).value; }},
                    {"relative_error", "", "value / reference - 1", Observable::Needs::nothing, false,

@@ -1,5 +1,7 @@
 #include "forward/scenes/benchmark/shell_benchmark_scene.hpp"
 
+#include "forward/scenes/benchmark/shell_benchmark_inputs.hpp"
+
 #include "forward/io/input_error.hpp"
 #include "forward/io/toml_reader.hpp"
 #include "forward/mesh/vtu_writer.hpp"
@@ -48,7 +50,8 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
   root.allow_only({"scene", "solver", "output"});
   const auto sc = root.table("scene");
   if (!sc) root.fail("scene", "required table [scene] is missing");
-  sc->allow_only({"kind", "name", "description", "benchmark", "mesh", "thickness_points", "thickness_rule"});
+  const auto& inputs = shell_benchmark_inputs();
+  sc->allow_only(inputs.keys_of("scene"));
   if (sc->string("kind") != "shell_benchmark") sc->fail("kind", "expected \"shell_benchmark\"");
   ShellBenchmarkScene s;
   s.file = path;
@@ -72,8 +75,7 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
       sc->fail("thickness_points", "the surface rule needs an odd count from 3 to 11");
   }
   if (const auto so = root.table("solver")) {
-    so->allow_only({"initial_increment", "min_increment", "max_increment", "max_iterations", "force_tolerance",
-                    "displacement_tolerance", "line_search", "linear_solver"});
+    so->allow_only(inputs.keys_of("solver"));
     auto positive = [&](const char* key, std::optional<double>* dst) {
       if (!so->has(key)) return;
       const double v = so->number(key);
@@ -99,7 +101,7 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
     }
   }
   if (const auto out = root.table("output")) {
-    out->allow_only({"vtu", "vtu_every"});
+    out->allow_only(inputs.keys_of("output"));
     s.vtu = out->boolean("vtu", true);
     s.vtu_every = out->integer("vtu_every", 0);
     if (s.vtu_every < 0) out->fail("vtu_every", "must be >= 0 (0: the final state only)");
