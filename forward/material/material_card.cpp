@@ -1,6 +1,7 @@
 #include "forward/material/material_card.hpp"
 
 #include "forward/io/toml_reader.hpp"
+#include "forward/material/material_inputs.hpp"
 #include "forward/material/swift_hardening.hpp"
 
 #include <cmath>
@@ -37,6 +38,40 @@ void MaterialCard::set_hill(const Hill48& h) {
   params.L = h.L; params.M = h.M; params.N = h.N;
 }
 
+namespace {
+
+std::string card_table(const MaterialInput& in) { return in.card_key.substr(0, in.card_key.find('.')); }
+std::string card_key(const MaterialInput& in) { return in.card_key.substr(in.card_key.find('.') + 1); }
+
+// Whether the card's law uses the parameters of [table] (a card without [swift] is elastic).
+bool law_in_use(const MaterialParams<double>& p, const std::string& table) {
+  if (table == "swift") return p.plastic;
+  if (table == "armstrong_frederick") return p.kinematic == KinematicLaw::armstrong_frederick;
+  if (table == "ziegler") return p.kinematic == KinematicLaw::ziegler;
+  return true;  // elastic, hill
+}
+
+// Reads the parameters of one card table, named by material_inputs(); [hill] may also give L and
+// M, which default to N (the shell's transverse shear uses them, the fits tie them to N).
+void read_law_table(const io::TomlTable& t, const std::string& table, MaterialParams<double>& p) {
+  std::vector<const MaterialInput*> inputs;
+  std::vector<std::string> keys;
+  for (const auto& in : material_inputs()) {
+    if (card_table(in) != table) continue;
+    inputs.push_back(&in);
+    keys.push_back(card_key(in));
+  }
+  if (table == "hill") keys.insert(keys.end(), {"L", "M"});
+  t.allow_only(keys);  // an unknown key (a misspelt one) before a missing one
+  for (const MaterialInput* in : inputs) set_material_input(p, *in, t.number(card_key(*in)));
+  if (table == "hill") {
+    p.L = t.number("L", p.N);
+    p.M = t.number("M", p.N);
+  }
+}
+
+}  // namespace
+
 MaterialCard read_material_card(const io::TomlTable& root) {
   root.allow_only({"card", "elastic", "hill", "swift", "armstrong_frederick", "ziegler", "density"});
   MaterialCard card;
@@ -62,45 +97,24 @@ MaterialCard read_material_card(const io::TomlTable& root) {
 
   auto elastic = root.table("elastic");
   if (!elastic) root.fail("elastic", "required table [elastic] (E, nu) is missing");
-  elastic->allow_only({"E", "nu"});
-  p.E = elastic->number("E");
-  p.nu = elastic->number("nu");
-
-  if (auto h = root.table("hill")) {
-    h->allow_only({"F", "G", "H", "N", "L", "M"});
-    p.F = h->number("F");
-    p.G = h->number("G");
-    p.H = h->number("H");
-    p.N = h->number("N");
-    p.L = h->number("L", p.N);
-    p.M = h->number("M", p.N);
-  }  // no [hill]: von Mises (F = G = H = 1, N = L = M = 3)
-
-  if (auto s = root.table("swift")) {
-    s->allow_only({"K", "eps0", "n"});
-    p.plastic = true;
-    p.K = s->number("K");
-    p.eps0 = s->number("eps0");
-    p.n = s->number("n");
-  } else {
-    p.plastic = false;  // elastic-only card
-  }
+  read_law_table(*elastic, "elastic", p);
+  if (auto h = root.table("hill")) read_law_table(*h, "hill", p);
+  // no [hill]: von Mises (F = G = H = 1, N = L = M = 3)
+  const auto swift = root.table("swift");
+  p.plastic = bool(swift);  // no [swift]: an elastic-only card
+  if (swift) read_law_table(*swift, "swift", p);
 
   auto af = root.table("armstrong_frederick");
   auto zi = root.table("ziegler");
   if (af && zi) root.fail("ziegler", "a card has at most one kinematic law ([armstrong_frederick] or [ziegler])");
   if ((af || zi) && !p.plastic) root.fail(af ? "armstrong_frederick" : "ziegler", "kinematic hardening needs a [swift] table");
   if (af) {
-    af->allow_only({"CX", "Xsat"});
     p.kinematic = KinematicLaw::armstrong_frederick;
-    p.CX = af->number("CX");
-    p.Xsat = af->number("Xsat");
+    read_law_table(*af, "armstrong_frederick", p);
   }
   if (zi) {
-    zi->allow_only({"CA", "GA"});
     p.kinematic = KinematicLaw::ziegler;
-    p.CA = zi->number("CA");
-    p.GA = zi->number("GA");
+    read_law_table(*zi, "ziegler", p);
   }
   validate_material_card(card);
   return card;
@@ -115,11 +129,13 @@ void validate_material_card(const MaterialCard& card) {
   auto bad = [&](const std::string& key, double v, const std::string& msg) {
     throw InputError(card.file, key, format_number(v), msg);
   };
-  if (!(p.E > 0)) bad("elastic.E", p.E, "Young's modulus must be > 0 MPa");
-  if (!(p.nu > -1.0 && p.nu < 0.5)) bad("elastic.nu", p.nu, "Poisson's ratio must lie in (-1, 0.5)");
+  for (const auto& in : material_inputs()) {  // each parameter of a law the card uses, alone
+    if (!law_in_use(p, card_table(in))) continue;
+    const double v = material_field(p, in.field);
+    if (const std::string msg = in.info.check(v); !msg.empty()) bad(in.card_key, v, msg);
+  }
   // Hill convexity (thesis eq. 3.5: a positive definite quadratic form); name the coefficient
   // involved in the violated condition.
-  if (!(p.N > 0)) bad("hill.N", p.N, "must be > 0");
   if (!(p.L > 0)) bad("hill.L", p.L, "must be > 0");
   if (!(p.M > 0)) bad("hill.M", p.M, "must be > 0");
   if (!(p.F + p.G > 0)) bad("hill.F", p.F, "F + G = " + format_number(p.F + p.G) + " must be > 0 (convex Hill)");
@@ -128,19 +144,6 @@ void validate_material_card(const MaterialCard& card) {
   if (const std::string msg = hill_convexity_violation(card.hill()); !msg.empty()) {
     throw InputError(card.file, "hill.F/G/H", format_number(p.F) + "/" + format_number(p.G) + "/" + format_number(p.H),
                      "not a convex yield surface: " + msg);
-  }
-  if (p.plastic) {
-    if (!(p.K > 0)) bad("swift.K", p.K, "must be > 0 MPa");
-    if (!(p.eps0 > 0)) bad("swift.eps0", p.eps0, "must be > 0");
-    if (!(p.n >= 0 && p.n < 1)) bad("swift.n", p.n, "must satisfy 0 <= n < 1 (n = 0: perfectly plastic)");
-  }
-  if (p.kinematic == KinematicLaw::armstrong_frederick) {
-    if (!(p.CX >= 0)) bad("armstrong_frederick.CX", p.CX, "must be >= 0");
-    if (!(p.Xsat >= 0)) bad("armstrong_frederick.Xsat", p.Xsat, "must be >= 0 MPa");
-  }
-  if (p.kinematic == KinematicLaw::ziegler) {
-    if (!(p.CA >= 0)) bad("ziegler.CA", p.CA, "must be >= 0 MPa");
-    if (!(p.GA >= 0)) bad("ziegler.GA", p.GA, "must be >= 0");
   }
   if (!(card.density > 0)) bad("density", card.density, "must be > 0 t/mm^3");
 }

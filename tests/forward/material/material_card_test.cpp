@@ -2,6 +2,7 @@
 // bad cards fail with an InputError naming file, key and value.
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
+#include "forward/material/material_inputs.hpp"
 #include "forward/material/swift_hardening.hpp"
 #include "tests/support/cards.hpp"
 
@@ -9,6 +10,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 using namespace spifit;
 
@@ -106,6 +108,31 @@ TEST(MaterialCard, Errors) {
   expect_error("H = 0.807", "H = -0.7", "hill.F/G/H", "1.224/1.193/-0.7");
   expect_error("[swift]", "[armstrong_frederick]\nCX = -1.0\nXsat = 3.0\n[swift]", "armstrong_frederick.CX", "-1");
   expect_error("E = 72600.0\n", "", "elastic.E", "");
+  // A misspelt key is named as unknown, not as the missing one it was meant to be.
+  expect_error("K = 180.0", "k = 180.0", "swift.k", "180");
+  expect_error("n = 0.21", "n = 1.0", "swift.n", "1");  // the range [0, 1) of the named inputs
+  expect_error("N = 4.06", "N = 4.06\nL = 0.0", "hill.L", "0");
+  expect_error("[swift]", "[ziegler]\nCA = 10.0\nGA = -2.0\n[swift]", "ziegler.GA", "-2");
+}
+
+// The card accepts exactly what the named inputs allow: each parameter's error message is the
+// one its InputInfo gives (one table for cards, fits, sweeps and the documentation).
+TEST(MaterialCard, RangeMessagesComeFromTheNamedInputs) {
+  TempCard card(std::string(kValid) + "[armstrong_frederick]\nCX = 1.0\nXsat = 2.0\n");
+  const auto valid = material::load_material_card(card.path);
+  for (const auto& in : material::material_inputs()) {
+    if (in.info.range.lo == -std::numeric_limits<double>::infinity()) continue;  // Hill F, G, H: convexity
+    auto c = valid;
+    material::set_material_input(c.params, in, in.info.range.lo - 1.0);
+    if (in.card_key.rfind("ziegler", 0) == 0) c.params.kinematic = material::KinematicLaw::ziegler;
+    try {
+      material::validate_material_card(c);
+      ADD_FAILURE() << in.info.name << " accepted " << in.info.range.lo - 1.0;
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(e.key(), in.card_key);
+      EXPECT_NE(std::string(e.what()).find(in.info.check(in.info.range.lo - 1.0)), std::string::npos) << e.what();
+    }
+  }
 }
 
 TEST(MaterialCard, ElasticOnlyCardIsAllowed) {
