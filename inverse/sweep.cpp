@@ -19,17 +19,28 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // The metrics of a run: a failed run keeps its counts (iterations, increments); its forces and
 // shapes do not describe the whole path.
-std::vector<double> metrics_of(const SweepSpec& s, const scene::SceneResult& r) {
+std::vector<double> metrics_of(const SweepSpec& s, const std::vector<const scene::Observable*>& observables,
+                               const scene::SceneResult& r) {
   std::vector<double> out;
+  for (const scene::Observable* o : observables) out.push_back(r.ok() || o->counts_failed_runs ? o->value(r, s.options) : kNaN);
+  return out;
+}
+
+// The kind's observables behind s.metrics, looked up once per sweep (read_sweep_file has checked
+// the names; a spec built in code gets the same error).
+std::vector<const scene::Observable*> observables_of(const SweepSpec& s) {
+  std::vector<const scene::Observable*> out;
   for (const auto& name : s.metrics) {
     const scene::Observable* o = s.kind->find_observable(name);
-    out.push_back(r.ok() || o->counts_failed_runs ? o->value(r, s.options) : kNaN);
+    if (!o) throw std::invalid_argument("scene kind " + s.kind->name + " has no observable \"" + name + "\"");
+    out.push_back(o);
   }
   return out;
 }
 
 // One run of the scene with the inputs at `values`; its outputs in DIR/sub/ when dir is given.
-SweepPoint run_point(const SweepSpec& s, const std::vector<double>& values, const io::OutputDirectory* dir, const std::string& sub) {
+SweepPoint run_point(const SweepSpec& s, const std::vector<const scene::Observable*>& observables, const std::vector<double>& values,
+                     const io::OutputDirectory* dir, const std::string& sub) {
   const auto t0 = std::chrono::steady_clock::now();
   SweepPoint p;
   p.inputs = values;
@@ -48,7 +59,7 @@ SweepPoint run_point(const SweepSpec& s, const std::vector<double>& values, cons
     }
     p.ok = r->ok();
     p.message = r->message;
-    p.metrics = metrics_of(s, *r);
+    p.metrics = metrics_of(s, observables, *r);
   } catch (const std::exception& e) {
     p.ok = false;
     p.message = e.what();
@@ -68,8 +79,9 @@ std::string point_label(const SweepSpec& s, const std::vector<double>& values) {
   return out;
 }
 
+// One progress line per run of a serial sweep (a parallel kind's runs take milliseconds: none).
 void report(const SweepRunOptions& o, const std::string& what, const SweepSpec& s, const SweepPoint& p) {
-  if (!o.progress) return;
+  if (!o.progress || s.kind->parallel_sweeps) return;
   char buf[120];
   std::snprintf(buf, sizeof buf, " -> %s in %.1f s", p.ok ? "ok" : "failed", p.wall_seconds);
   o.progress({scene::ProgressEvent::Kind::mark, what + ": " + point_label(s, p.inputs) + buf + (p.ok ? "" : ": " + p.message), 0.0});
@@ -83,24 +95,25 @@ std::string point_dir(std::size_t i, std::size_t n) {
   return buf;
 }
 
-std::vector<SweepPoint> run_grid(const SweepSpec& s, const SweepRunOptions& o) {
+std::vector<SweepPoint> run_grid(const SweepSpec& s, const std::vector<const scene::Observable*>& obs, const SweepRunOptions& o) {
   const auto grid = sweep_grid(s);
   std::vector<SweepPoint> points(grid.size());
   if (s.kind->parallel_sweeps) {
     const int n = static_cast<int>(grid.size());
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(1, o.threads))
-    for (int i = 0; i < n; ++i) points[static_cast<std::size_t>(i)] = run_point(s, grid[static_cast<std::size_t>(i)], nullptr, {});
+    for (int i = 0; i < n; ++i) points[static_cast<std::size_t>(i)] = run_point(s, obs, grid[static_cast<std::size_t>(i)], nullptr, {});
     return points;
   }
   for (std::size_t i = 0; i < grid.size(); ++i) {
-    points[i] = run_point(s, grid[i], o.out, point_dir(i, grid.size()));
+    points[i] = run_point(s, obs, grid[i], o.out, point_dir(i, grid.size()));
     report(o, "point " + std::to_string(i + 1) + "/" + std::to_string(grid.size()), s, points[i]);
   }
   return points;
 }
 
 // Central differences of ln(metric) in ln(input) at the scene's own values (base, base (1 +- h)).
-std::vector<Sensitivity> run_sensitivities(const SweepSpec& s, const SweepRunOptions& o) {
+std::vector<Sensitivity> run_sensitivities(const SweepSpec& s, const std::vector<const scene::Observable*>& obs,
+                                           const SweepRunOptions& o) {
   const io::OutputDirectory* dir = s.kind->parallel_sweeps ? nullptr : o.out;
   std::vector<double> base;
   bool any = false;
@@ -111,8 +124,8 @@ std::vector<Sensitivity> run_sensitivities(const SweepSpec& s, const SweepRunOpt
   std::vector<Sensitivity> r;
   SweepPoint b;
   b.metrics.assign(s.metrics.size(), kNaN);
-  if (any) {
-    b = run_point(s, base, dir, "sensitivities/base");
+  if (any || s.kind->parallel_sweeps) {  // the base metric is reported even with no step to take
+    b = run_point(s, obs, base, dir, "sensitivities/base");
     report(o, "sensitivity base", s, b);
   }
   for (std::size_t k = 0; k < s.inputs.size(); ++k) {
@@ -123,9 +136,9 @@ std::vector<Sensitivity> run_sensitivities(const SweepSpec& s, const SweepRunOpt
       auto up = base, dn = base;
       up[k] *= 1.0 + s.relative_step;
       dn[k] *= 1.0 - s.relative_step;
-      pu = run_point(s, up, dir, "sensitivities/" + s.inputs[k].name + "_up");
+      pu = run_point(s, obs, up, dir, "sensitivities/" + s.inputs[k].name + "_up");
       report(o, "sensitivity " + s.inputs[k].name + " up", s, pu);
-      pd = run_point(s, dn, dir, "sensitivities/" + s.inputs[k].name + "_down");
+      pd = run_point(s, obs, dn, dir, "sensitivities/" + s.inputs[k].name + "_down");
       report(o, "sensitivity " + s.inputs[k].name + " down", s, pd);
     }
     for (std::size_t m = 0; m < s.metrics.size(); ++m) {
@@ -163,8 +176,9 @@ double log_sensitivity(double base_input, double up, double down, double h) {
 SweepResult run_sweep(const SweepSpec& s, const SweepRunOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   SweepResult r;
-  r.points = run_grid(s, o);
-  if (s.sensitivities) r.sensitivities = run_sensitivities(s, o);
+  const auto obs = observables_of(s);
+  r.points = run_grid(s, obs, o);
+  if (s.sensitivities) r.sensitivities = run_sensitivities(s, obs, o);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -93,5 +94,23 @@ TEST(Sweep, TensileAngleIsANamedInput) {
   } catch (const io::InputError& e) {
     EXPECT_NE(std::string(e.what()).find("must lie in [-180, 180] deg"), std::string::npos) << e.what();
   }
+  std::filesystem::remove_all(dir);
+}
+
+// A material-point sweep reports the scene's own metric in sensitivities.csv even when no input
+// can be stepped (the loading angle's base is 0 deg: no logarithm): base_metric is r0 of the card
+// (thesis eq. C.2), the sensitivity NaN.
+TEST(Sweep, BaseMetricIsReportedWhenNoInputCanBeStepped) {
+  const auto dir = std::filesystem::temp_directory_path() / ("spifit_sweep_base_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto f = dir / "s.toml";
+  std::ofstream(f) << "[sweep]\nscene = \"" << src("experiments/aa3003o/scenes/tensile_00.toml")
+                   << "\"\nmetrics = [\"r_value\"]\nsensitivities = true\n[inputs.\"scene.angle\"]\nvalues = [0.0]\n";
+  const auto r = inverse::run_sweep(inverse::read_sweep_file(f.string()), {1, nullptr, {}});
+  const auto card = material::load_material_card(src("materials/aa3003o_c3c4.toml"));
+  ASSERT_EQ(r.sensitivities.size(), 1u);
+  EXPECT_EQ(r.sensitivities[0].base_input, 0.0);
+  EXPECT_NEAR(r.sensitivities[0].base_metric / material::r_value_at_angle(card.hill(), 0.0), 1.0, 1e-6);
+  EXPECT_TRUE(std::isnan(r.sensitivities[0].value));
   std::filesystem::remove_all(dir);
 }
