@@ -35,7 +35,7 @@ struct ElementConfiguration {
 class ElementContribution {
  public:
   virtual ~ElementContribution() = default;
-  // A name for checkpoints and messages ("tool contact").
+  // A name for checkpoints and messages ("tool_contact").
   virtual std::string name() const = 0;
   // Start of every increment attempt (after revert), load factor lambda0 -> lambda1.
   virtual void begin_increment(double lambda0, double lambda1) = 0;

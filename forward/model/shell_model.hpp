@@ -63,7 +63,6 @@ class ShellModel final : public solver::NonlinearProblem {
   int num_nodes() const { return mesh_->num_nodes(); }
   int num_elements() const { return mesh_->num_elements(); }
   double initial_thickness() const { return thickness_; }
-  const ShellModelOptions& options() const { return options_; }
   const element::ThicknessRule& thickness_rule() const { return rule_; }
 
   // f_ext(lambda) += lambda x amplitude on this DOF (forces N, moments N mm).

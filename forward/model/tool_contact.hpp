@@ -32,9 +32,7 @@ class ToolContact final : public ElementContribution {
   // removes the copies. Angles must be finite and not multiples of 360.
   void set_copies(const std::vector<double>& angles_deg);
   const std::vector<double>& copies_deg() const { return copies_deg_; }
-  int tools() const { return static_cast<int>(tools_.size()); }
   const contact::SphereTool& tool() const { return tools_.front(); }  // the real tool
-  const contact::ContactOptions& options() const { return contact_->options(); }
 
   // Committed contact: penetration and pressure are the largest over the real tool and its
   // copies; force_on_sheet is the force the REAL tool exerts on the (cyclic) sheet, the real

@@ -48,7 +48,7 @@ class FeRun::Stepper {
     if (periodic) last_write_ = now;
     const WriteReason reason = marked ? WriteReason::mark : periodic ? WriteReason::periodic : WriteReason::increment;
     for (auto& o : run_.observers_) o->write(reason);
-    if (s.progress_every_increment) {
+    if (s.progress_every_increment && run_.control_.progress) {
       char buf[200];
       std::snprintf(buf, sizeof buf, "increment %d: travel %.2f / %.2f mm, %d iterations", log.increments, travel,
                     s.load_map.length(), ir.iterations);
@@ -87,10 +87,11 @@ class FeRun::Stepper {
     }
   }
 
-  // Marks whose travel the tool has reached (to within round-off of the path length).
+  // Marks whose travel the tool has reached, to within 1e-9 mm (marks at solver stops are hit
+  // exactly; a cone's contour ends lie inside increments).
   bool reach_marks(const IncrementView& v) {
     const auto& marks = run_.setup_.marks;
-    const double tol = 1e-9 * std::max(1.0, run_.setup_.load_map.length());
+    constexpr double tol = 1e-9;
     bool any = false;
     while (log.marks_reached < static_cast<int>(marks.size()) && marks[static_cast<std::size_t>(log.marks_reached)].travel <= v.travel + tol) {
       log.mark_wall.push_back(v.wall_seconds);
@@ -143,7 +144,9 @@ FeRun::~FeRun() = default;
 
 FeRunOutcome FeRun::run(const nlohmann::json& head) {
   auto t0 = Clock::now();
-  const RunInputs inputs = read_run_inputs(setup_.kind, setup_.input_files);
+  // The input files' contents go into checkpoints (and are compared on resume): read only when
+  // the run writes files; a sweep or fit point runs from the parsed scene alone.
+  const RunInputs inputs = files_.enabled() ? read_run_inputs(setup_.kind, setup_.input_files) : RunInputs{};
   RunLog restored;
   if (control_.resume) {
     // The checkpoint is read (and refused with an InputError) before any output is touched.
@@ -170,7 +173,6 @@ FeRunOutcome FeRun::run(const nlohmann::json& head) {
 
   FeRunOutcome out;
   out.counters = r.counters;
-  out.lambda_reached = r.lambda;
   out.travel_reached = setup_.load_map.travel(r.lambda);
   out.marks_reached = step.log.marks_reached;
   out.mark_wall_seconds = step.log.mark_wall;

@@ -83,7 +83,7 @@ struct FeRunOutcome {
   RunStatus status = RunStatus::running;
   std::string message;  // failed: where and why; stopped: after what
   solver::NewtonCounters counters;
-  double lambda_reached = 0.0, travel_reached = 0.0;
+  double travel_reached = 0.0;
   int marks_reached = 0;
   std::vector<double> mark_wall_seconds;  // wall time when each mark was reached
   int resumed_at_mark = -1;               // marks reached at the checkpoint a resumed run started from
@@ -103,7 +103,6 @@ class FeRun {
 
   const FeRunSetup& setup() const { return setup_; }
   const RunFiles& files() const { return files_; }
-  const RunControl& control() const { return control_; }
   model::ShellModel& model() { return *model_; }
   const model::ToolContact& tool() const { return *tool_; }
 

@@ -3,7 +3,6 @@
 // identification or a sweep runs a scene when it needs only the typed result).
 #include "forward/io/output_directory.hpp"
 
-#include <filesystem>
 #include <string>
 
 namespace spifit::scene {
@@ -16,10 +15,7 @@ class RunFiles {
   const io::OutputDirectory* directory() const { return out_; }
   // Atomic write of DIR/name (subdirectories created); nothing without a directory.
   void write(const std::string& name, const std::string& contents) const {
-    if (!out_) return;
-    const std::filesystem::path p = out_->path() / name;
-    if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-    out_->write_file(name, contents);
+    if (out_) out_->write_file(name, contents);
   }
 
  private:

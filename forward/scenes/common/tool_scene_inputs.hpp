@@ -61,7 +61,7 @@ void add_solver_inputs(io::InputTable<Scene>& t) {
             [](Scene& s) -> int& { return s.divergence_after; });
 }
 
-// [tool] radius, feed, spin on the fields `radius_field`, feed and spin.
+// [tool] radius, feed, spin on the fields `radius`, feed and spin.
 template <typename Scene>
 void add_tool_inputs(io::InputTable<Scene>& t, double Scene::*radius) {
   using io::Range;

@@ -1,5 +1,5 @@
 // Reading a cone scene file (schema: docs/file-formats.md "Cone scene", docs/cone-scene.md).
-// The run is in cone_scene_run.cpp.
+// The run is in cone_run.cpp.
 #include "forward/scenes/cone/cone_scene.hpp"
 
 #include "forward/scenes/common/scene_tables.hpp"
