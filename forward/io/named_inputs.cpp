@@ -34,18 +34,25 @@ const char* to_string(InputType t) {
     case InputType::integer: return "integer";
     case InputType::boolean: return "true/false";
     case InputType::text: return "text";
+    case InputType::list: return "list";
+    case InputType::table: return "table";
   }
   return "?";
 }
 
 std::string InputInfo::check(double v) const {
-  if (type == InputType::text) return "takes a text value";
+  if (type == InputType::text || type == InputType::list || type == InputType::table) return std::string("takes a ") + to_string(type) + " value";
   if (!std::isfinite(v)) return "must be finite";
   if (type == InputType::boolean) return v == 0.0 || v == 1.0 ? std::string() : std::string("takes true (1) or false (0)");
   if (type == InputType::integer && v != std::floor(v)) return "takes integer values";
   if (!range.contains(v)) {
     const std::string t = range.text() + (unit.empty() ? "" : " " + unit);
     return t[0] == '[' || t[0] == '(' ? "must lie in " + t : "must be " + t;
+  }
+  if (!choices.empty() && std::none_of(choices.begin(), choices.end(), [v](const std::string& c) { return std::stod(c) == v; })) {
+    std::string list;  // "45 or 90", "1, 2 or 3"
+    for (std::size_t k = 0; k < choices.size(); ++k) list += (k == 0 ? "" : k + 1 == choices.size() ? " or " : ", ") + choices[k];
+    return "must be " + list + (unit.empty() ? "" : " " + unit);
   }
   return {};
 }
@@ -70,11 +77,10 @@ std::string markdown_reference(const std::vector<InputInfo>& inputs) {
   std::string out = "| key | type | unit | valid values | varied by sweeps and fits | description |\n|---|---|---|---|---|---|\n";
   for (const auto& i : inputs) {
     std::string valid;
-    if (i.type == InputType::real || i.type == InputType::integer) valid = i.range.text();
-    if (i.type == InputType::text) {
-      for (const auto& c : i.choices) valid += (valid.empty() ? "`" : ", `") + c + "`";
-      if (valid.empty()) valid = "text";
-    }
+    for (const auto& c : i.choices) valid += (valid.empty() ? "`" : ", `") + c + "`";
+    if (valid.empty() && (i.type == InputType::real || i.type == InputType::integer)) valid = i.range.text();
+    if (valid.empty() && i.type == InputType::text) valid = "text";
+    if (i.type == InputType::list || i.type == InputType::table) valid = "see description";
     if (i.type == InputType::boolean) valid = "`true`, `false`";
     out += "| `" + i.name + "` | " + to_string(i.type) + " | " + (i.unit.empty() ? "-" : i.unit) + " | " + valid + " | " +
            (i.variable ? "yes" : "-") + " | " + markdown_cell(i.doc) + " |\n";

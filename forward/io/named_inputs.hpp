@@ -24,12 +24,14 @@ struct Range {
   static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
   static Range non_negative() { return {0.0, std::numeric_limits<double>::infinity(), false, false}; }
   static Range closed(double a, double b) { return {a, b, false, false}; }
+  static Range at_least(double a) { return {a, std::numeric_limits<double>::infinity(), false, false}; }
   bool contains(double v) const;
   // "> 0", ">= 0", "[2, 2000]", "(0, 1]", "any"
   std::string text() const;
 };
 
-enum class InputType { real, integer, boolean, text };
+// list and table: a TOML array ([a, b]) or inline table ({ k = v }) the scene's reader handles.
+enum class InputType { real, integer, boolean, text, list, table };
 const char* to_string(InputType t);
 
 // What the reader, a sweep, a fit and the documentation know of an input.
@@ -38,7 +40,7 @@ struct InputInfo {
   InputType type = InputType::real;
   std::string unit;  // empty for counts, ratios, flags and texts
   Range range;       // numbers
-  std::vector<std::string> choices;  // texts with a fixed set of values; empty: any text
+  std::vector<std::string> choices;  // texts (or numbers) with a fixed set of values; empty: any
   std::string doc;   // one line
   bool variable = false;  // a number a sweep may vary or a fit may identify
   std::string table() const { return name.substr(0, name.find('.')); }
@@ -70,14 +72,14 @@ class InputTable {
   InputTable& boolean(InputInfo info, Boolean field) { return add(std::move(info), InputType::boolean, Field{{}, {}, std::move(field), {}}); }
   InputTable& text(InputInfo info, Text field) { return add(std::move(info), InputType::text, Field{{}, {}, {}, std::move(field)}); }
   // An input the scene's reader handles itself (paths relative to the scene file, lists, the
-  // tool path): declared for allow_only and the documentation; read() skips it, get/set refuse it.
+  // tool path): declared for allow_only and the documentation; read() checks a scalar one's
+  // type, range and choices (and stores nothing), get/set refuse it.
   InputTable& custom(InputInfo info, InputType type) { return add(std::move(info), type, Field{}); }
 
   const std::vector<InputInfo>& infos() const { return infos_; }
   const InputInfo* find(const std::string& name) const {
-    for (const auto& i : infos_)
-      if (i.name == name) return &i;
-    return nullptr;
+    const std::size_t k = position(name);
+    return k < infos_.size() ? &infos_[k] : nullptr;
   }
   // The keys this table declares in TOML table `table` (for allow_only, with the reader's own).
   std::vector<std::string> keys_of(const std::string& table) const {
@@ -87,8 +89,9 @@ class InputTable {
     return keys;
   }
   // Reads every declared key of `table` that t (the TOML table [table]) holds into o, checking
-  // types, ranges and choices: io::InputError naming the file, the key and the value. Keys t
-  // holds that are not declared are left to the caller's allow_only.
+  // types, ranges and choices: io::InputError naming the file, the key and the value. A custom
+  // key is checked only (lists and tables not at all): the reader stores it. Keys t holds that
+  // are not declared are left to the caller's allow_only.
   void read(const TomlTable& t, const std::string& table, Owner& o) const {
     for (std::size_t k = 0; k < infos_.size(); ++k) {
       const InputInfo& i = infos_[k];
@@ -118,15 +121,8 @@ class InputTable {
   }
   // Whether the input is one the reader handles itself.
   bool is_custom(const std::string& name) const {
-    for (std::size_t k = 0; k < infos_.size(); ++k)
-      if (infos_[k].name == name) return fields_[k].custom();
-    return false;
-  }
-  std::vector<std::string> variable_names() const {
-    std::vector<std::string> n;
-    for (const auto& i : infos_)
-      if (i.variable) n.push_back(i.name);
-    return n;
+    const std::size_t k = position(name);
+    return k < infos_.size() && fields_[k].custom();
   }
 
  private:
@@ -148,14 +144,19 @@ class InputTable {
     fields_.push_back(std::move(field));
     return *this;
   }
+  // The input's place in the table; infos_.size() for an unknown name.
+  std::size_t position(const std::string& name) const {
+    std::size_t k = 0;
+    while (k < infos_.size() && infos_[k].name != name) ++k;
+    return k;
+  }
+  // The place of a number or flag that can be set by name.
   std::size_t index(const std::string& name) const {
-    for (std::size_t k = 0; k < infos_.size(); ++k)
-      if (infos_[k].name == name) {
-        if (infos_[k].type == InputType::text || fields_[k].custom())
-          throw std::invalid_argument("input " + name + " is not a number that can be set by name");
-        return k;
-      }
-    throw std::invalid_argument("unknown input " + name);
+    const std::size_t k = position(name);
+    if (k == infos_.size()) throw std::invalid_argument("unknown input " + name);
+    if (infos_[k].type == InputType::text || fields_[k].custom())
+      throw std::invalid_argument("input " + name + " is not a number that can be set by name");
+    return k;
   }
   static void read_one(const TomlTable& t, const InputInfo& i, const Field& f, Owner& o) {
     const std::string key = i.key();
@@ -173,7 +174,23 @@ class InputTable {
       const std::string v = t.string(key);
       if (const std::string why = i.check(v); !why.empty()) t.fail(key, why);
       if (!f.text.set(o, v)) t.fail(key, "not a value of " + i.name);
+    } else {
+      check_custom(t, i);
     }
+  }
+  // A custom key's value: its type, range and choices (lists and tables are the reader's).
+  static void check_custom(const TomlTable& t, const InputInfo& i) {
+    const std::string key = i.key();
+    std::string why;
+    switch (i.type) {
+      case InputType::real: why = i.check(t.number(key)); break;
+      case InputType::integer: why = i.check(static_cast<double>(t.integer(key, 0))); break;
+      case InputType::boolean: (void)t.boolean(key, false); break;
+      case InputType::text: why = i.check(t.string(key)); break;
+      case InputType::list:
+      case InputType::table: break;
+    }
+    if (!why.empty()) t.fail(key, why);
   }
 };
 

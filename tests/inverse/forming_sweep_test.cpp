@@ -232,6 +232,35 @@ TEST(FormingSweep, InputErrorsNameFileAndKey) {
   expect_error(sweep_head(scene, "\"peak_fy\"") + "[inputs.\"contact.penalty\"]\nvalues = [1.0]\n", {"sweep.metrics", "ripple_fz"});
 }
 
+// Checks across keys, which the scene readers make, reject a grid value at read time too
+// (docs/architecture.md, "Typed results, kinds and named inputs"): the surface rule with an
+// even thickness_points on a cone, and a sheet too small for the tool path of an indent.
+TEST(FormingSweep, CrossKeyChecksRejectGridValuesAtReadTime) {
+  TempDir tmp("cross_key");
+  const fs::path cone = tmp.path / "tiny_cone.toml";
+  std::ofstream(cone) << "[scene]\nkind = \"cone\"\nmaterial = \"" << src("materials/aa3003o_c3c4.toml") << "\"\n"
+                      << "[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = 1\ntop_radius = 20.0\npie_angle = 90.0\n"
+                      << "[sheet]\nthickness = 1.0\nelements_per_45deg = 8\nthickness_points = 3\nthickness_rule = \"surface\"\n";
+  const fs::path f = write_sweep(tmp.path, sweep_head(cone, "\"peak_fz\"") + "[inputs.\"sheet.thickness_points\"]\nvalues = [4]\n");
+  try {
+    inverse::read_sweep_file(f.string());
+    ADD_FAILURE() << "sheet.thickness_points = 4 with the surface rule accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.file(), f.string());
+    EXPECT_EQ(e.key(), "inputs.sheet.thickness_points.values");
+    EXPECT_EQ(e.value(), "4");
+    EXPECT_NE(e.message().find("odd number of thickness points"), std::string::npos) << e.what();
+  }
+  // The indent at x = 3 mm misses a sheet 4 mm wide.
+  const fs::path indent = tmp.path / "off_centre.toml";
+  std::ofstream(indent) << "[scene]\nkind = \"indent\"\nmaterial = \"" << src("materials/aa3003o_c3c4.toml") << "\"\n"
+                        << "[sheet]\nlength = 10.0\nthickness = 0.3\nelements = 4\n"
+                        << "[[path]]\nx = 3.0\ny = 0.0\nz = 0.0\n[[path]]\nx = 3.0\ny = 0.0\nz = -0.5\n";
+  const fs::path g = write_sweep(tmp.path, sweep_head(indent, "\"peak_fz\"") + "[inputs.\"sheet.length\"]\nvalues = [10.0, 4.0]\n");
+  const std::string e = read_error(g);
+  for (const char* part : {"inputs.sheet.length.values = 4", "never goes below"}) EXPECT_NE(e.find(part), std::string::npos) << e;
+}
+
 // The bundled FE sweep files read (the runs are on demand: README, docs/cli.md).
 TEST(FormingSweep, BundledSweepFilesRead) {
   const auto p = inverse::read_sweep_file(src("experiments/aa3003o/sweep_indent_penalty.toml"));

@@ -1,5 +1,7 @@
 #include "forward/scenes/benchmark/shell_benchmark_inputs.hpp"
 
+#include "forward/scenes/common/scene_inputs.hpp"
+
 namespace spifit::scene {
 namespace {
 
@@ -8,12 +10,11 @@ using io::Range;
 
 io::InputTable<ShellBenchmarkScene> make_table() {
   io::InputTable<ShellBenchmarkScene> t;
-  // The reader handles every key (most are overrides of a benchmark's own default).
+  // The reader handles every key (most are overrides of a benchmark's own default); the table
+  // checks their types, ranges and choices.
+  add_scene_inputs(t, {"shell_benchmark"}, SceneMaterialKey::none);
   const auto key = [&t](const char* name, InputType type, const char* unit, Range range, const char* doc,
                         std::vector<std::string> choices = {}) { t.custom({name, {}, unit, range, std::move(choices), doc, false}, type); };
-  key("scene.kind", InputType::text, "", {}, "the scene kind (required)", {"shell_benchmark"});
-  key("scene.name", InputType::text, "", {}, "name in outputs (default: the file's stem)");
-  key("scene.description", InputType::text, "", {}, "free text");
   key("scene.benchmark", InputType::text, "", {}, "the benchmark (required)", shell_benchmark_names());
   key("scene.mesh", InputType::integer, "", Range::closed(1, 1000), "elements per side or along the length (default: the benchmark's)");
   key("scene.thickness_points", InputType::integer, "", Range::closed(1, 11), "points through the thickness (default: the benchmark's)");

@@ -1,6 +1,7 @@
 #include "forward/scenes/benchmark/shell_benchmark_scene.hpp"
 
 #include "forward/scenes/benchmark/shell_benchmark_inputs.hpp"
+#include "forward/scenes/common/scene_inputs.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/toml_reader.hpp"
@@ -17,12 +18,6 @@ namespace spifit::scene {
 namespace {
 
 using json = nlohmann::json;
-
-std::string join(const std::vector<std::string>& v) {
-  std::string s;
-  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
-  return s;
-}
 
 // The benchmark's solver defaults with the scene's [solver] overrides.
 solver::NewtonOptions solver_options(const ShellBenchmarkScene& scene, const ShellBenchmark& b) {
@@ -55,56 +50,40 @@ ShellBenchmarkScene read_shell_benchmark_scene(const std::string& path) {
   if (sc->string("kind") != "shell_benchmark") sc->fail("kind", "expected \"shell_benchmark\"");
   ShellBenchmarkScene s;
   s.file = path;
+  // Types, ranges and choices of every key; the values are read below.
+  read_input_tables(root, inputs, {"scene", "solver", "output"}, s);
   s.name = sc->string("name", std::filesystem::path(path).stem().string());
   s.description = sc->string("description", "");
   s.setup.benchmark = sc->string("benchmark");
-  const auto names = shell_benchmark_names();
-  if (std::find(names.begin(), names.end(), s.setup.benchmark) == names.end())
-    sc->fail("benchmark", "unknown benchmark (known: " + join(names) + ")");
   s.setup.mesh = sc->integer("mesh", 0);
-  if (sc->has("mesh") && !(s.setup.mesh >= 1 && s.setup.mesh <= 1000)) sc->fail("mesh", "must be an integer in [1, 1000]");
   s.setup.thickness_points = sc->integer("thickness_points", 0);
-  if (sc->has("thickness_points") && !(s.setup.thickness_points >= element::kMinThicknessPoints &&
-                                       s.setup.thickness_points <= element::kMaxThicknessPoints))
-    sc->fail("thickness_points", "unsupported number of thickness points (1 to 11)");
   if (sc->has("thickness_rule")) {
     if (!element::thickness_rule_from_string(sc->string("thickness_rule"), &s.setup.thickness_rule))
-      sc->fail("thickness_rule", "expected \"gauss\" or \"surface\"");
+      sc->fail("thickness_rule", "not a value of scene.thickness_rule");
     if (s.setup.thickness_rule == element::ThicknessRuleKind::surface && s.setup.thickness_points > 0 &&
         (s.setup.thickness_points < 3 || s.setup.thickness_points % 2 == 0))
       sc->fail("thickness_points", "the surface rule needs an odd count from 3 to 11");
   }
   if (const auto so = root.table("solver")) {
-    so->allow_only(inputs.keys_of("solver"));
-    auto positive = [&](const char* key, std::optional<double>* dst) {
-      if (!so->has(key)) return;
-      const double v = so->number(key);
-      if (!(v > 0.0 && v <= 1.0)) so->fail(key, "must lie in (0, 1]");
-      *dst = v;
+    auto number = [&](const char* key, std::optional<double>* dst) {
+      if (so->has(key)) *dst = so->number(key);
     };
-    positive("initial_increment", &s.initial_increment);
-    positive("min_increment", &s.min_increment);
-    positive("max_increment", &s.max_increment);
-    positive("force_tolerance", &s.force_tolerance);
-    positive("displacement_tolerance", &s.displacement_tolerance);
-    if (so->has("max_iterations")) {
-      const int n = so->integer("max_iterations", 0);
-      if (n < 1 || n > 1000) so->fail("max_iterations", "must be an integer in [1, 1000]");
-      s.max_iterations = n;
-    }
+    number("initial_increment", &s.initial_increment);
+    number("min_increment", &s.min_increment);
+    number("max_increment", &s.max_increment);
+    number("force_tolerance", &s.force_tolerance);
+    number("displacement_tolerance", &s.displacement_tolerance);
+    if (so->has("max_iterations")) s.max_iterations = so->integer("max_iterations", 0);
     if (so->has("line_search")) s.line_search = so->boolean("line_search", false);
     if (so->has("linear_solver")) {
       solver::LinearSolverKind k{};
-      if (!solver::linear_solver_from_string(so->string("linear_solver"), &k))
-        so->fail("linear_solver", "expected \"auto\", \"umfpack\" or \"cholmod\"");
+      if (!solver::linear_solver_from_string(so->string("linear_solver"), &k)) so->fail("linear_solver", "not a value of solver.linear_solver");
       s.linear_solver = k;
     }
   }
   if (const auto out = root.table("output")) {
-    out->allow_only(inputs.keys_of("output"));
     s.vtu = out->boolean("vtu", true);
     s.vtu_every = out->integer("vtu_every", 0);
-    if (s.vtu_every < 0) out->fail("vtu_every", "must be >= 0 (0: the final state only)");
   }
   // Builds the model once to report mesh and setting errors before any output is touched.
   try {

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -61,6 +62,9 @@ struct ObservableOptions {
   std::optional<std::array<double, 2>> window;
   std::optional<std::pair<int, int>> contours;
 };
+
+// An observable's value where the run does not provide it.
+inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // A scalar that sweeps and fits read off a result (NaN where the run does not provide it).
 struct Observable {

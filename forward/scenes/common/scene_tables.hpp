@@ -1,10 +1,12 @@
 #pragma once
 // What the tool scenes (forming_scene, cone_scene) share besides their named inputs
-// (tool_scene_inputs.hpp): the material card of [scene], the Newton options from the [solver]
-// fields, and [contact] as summary.json shows it.
+// (tool_scene_inputs.hpp): the material card of [scene], the checks across keys, the Newton
+// options from the [solver] fields, the output options from the [output] fields, and [contact]
+// as summary.json shows it.
 #include "forward/contact/shell_contact.hpp"
 #include "forward/io/toml_reader.hpp"
 #include "forward/material/material_card.hpp"
+#include "forward/scenes/common/fe_run.hpp"
 #include "forward/solver/linear_solver.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -17,9 +19,18 @@
 
 namespace spifit::scene {
 
-// [scene] material: the card file relative to the scene file (default C.3 + C.4 of the
-// bundled tree); a missing file fails on the key.
-material::MaterialCard read_scene_material(const io::TomlTable& sc, const std::string& scene_path);
+// [scene] material: the card file relative to the scene file (unless required, default C.3 +
+// C.4 of the bundled tree); a missing key (if required) or file fails on the key.
+material::MaterialCard read_scene_material(const io::TomlTable& sc, const std::string& scene_path, bool required = false);
+
+// A check across keys that a scene's values fail (empty key: none): the key blamed, its value
+// as the file would write it, and why. The reader throws it as an io::InputError; a changed
+// input (Scene::check_inputs) reports text().
+struct InputViolation {
+  std::string key, value, message;
+  explicit operator bool() const { return !key.empty(); }
+  std::string text() const;  // "key = value: message"; "" for none
+};
 
 // Newton options of a tool scene (any type with the [solver] fields of tool_scene_inputs.hpp)
 // whose path is `length` mm long: the load factor is the travelled fraction of the path.
@@ -35,6 +46,16 @@ solver::NewtonOptions tool_newton_options(const Scene& s, double length) {
   o.displacement_tolerance = s.displacement_tolerance;
   o.divergence_after = s.divergence_after;
   if (s.linear_solver) o.linear_solver = *s.linear_solver;
+  return o;
+}
+
+// The output options of a tool scene (any type with the [output] fields of tool_scene_inputs.hpp).
+template <typename Scene>
+FeOutputOptions tool_output_options(const Scene& s) {
+  FeOutputOptions o;
+  o.vtu_every = s.vtu_every;
+  o.checkpoint_every = s.checkpoint_every;
+  o.checkpoint_increments = s.checkpoint_increments;
   return o;
 }
 

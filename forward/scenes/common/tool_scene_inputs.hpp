@@ -1,11 +1,12 @@
 #pragma once
-// The named inputs the tool scenes share (io/named_inputs.hpp): [contact] and [solver], and the
-// [tool] radius, feed and spin. Declared on any scene struct with the members they name
+// The named inputs the tool scenes share (io/named_inputs.hpp): [contact] and [solver], the
+// [tool] radius, feed and spin, and the [output] steps of VTU files and checkpoints. Declared on any scene struct with the members they name
 // (forming_scene.hpp, cone_scene.hpp); the defaults are the struct's.
 #include "forward/io/named_inputs.hpp"
 #include "forward/solver/linear_solver.hpp"
 
 #include <optional>
+#include <string>
 
 namespace spifit::scene {
 
@@ -70,6 +71,19 @@ void add_tool_inputs(io::InputTable<Scene>& t, double Scene::*radius) {
          [](Scene& s) -> double& { return s.feed; });
   t.real({"tool.spin", {}, "rev/min", Range::closed(-1e5, 1e5), {}, "tool rotation about +z, counter-clockwise seen from above; acts through friction", true},
          [](Scene& s) -> double& { return s.spin; });
+}
+
+// [output] vtu_every, checkpoint_every and checkpoint_increments on the fields of those names
+// (scene_tables.hpp: tool_output_options); `marks` says what checkpoint_every counts.
+template <typename Scene>
+void add_output_inputs(io::InputTable<Scene>& t, const std::string& marks) {
+  using io::Range;
+  t.integer({"output.vtu_every", {}, "", Range::non_negative(), {}, "increments between VTU steps (0: initial and final state only)", false},
+            [](Scene& s) -> int& { return s.vtu_every; });
+  t.integer({"output.checkpoint_every", {}, "", Range::non_negative(), {}, marks + " between checkpoints (0: none)", false},
+            [](Scene& s) -> int& { return s.checkpoint_every; });
+  t.integer({"output.checkpoint_increments", {}, "", Range::non_negative(), {}, "increments between checkpoints (0: none)", false},
+            [](Scene& s) -> int& { return s.checkpoint_increments; });
 }
 
 }  // namespace spifit::scene

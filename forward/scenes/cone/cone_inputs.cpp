@@ -1,5 +1,6 @@
 #include "forward/scenes/cone/cone_inputs.hpp"
 
+#include "forward/scenes/common/scene_inputs.hpp"
 #include "forward/scenes/common/tool_scene_inputs.hpp"
 
 namespace spifit::scene {
@@ -10,23 +11,20 @@ using io::Range;
 using Table = io::InputTable<ConeScene>;
 
 void add_scene_and_cone(Table& t) {
-  t.custom({"scene.kind", {}, "", {}, {"cone"}, "the scene kind (required)", false}, InputType::text);
-  t.custom({"scene.name", {}, "", {}, {}, "name in outputs (default: the file's stem)", false}, InputType::text);
-  t.custom({"scene.description", {}, "", {}, {}, "free text", false}, InputType::text);
-  t.custom({"scene.material", {}, "", {}, {}, "material card, relative to the scene file (default: card C.3 + C.4)", false}, InputType::text);
+  add_scene_inputs(t, {"cone"}, SceneMaterialKey::optional);
   t.custom({"cone.preset", {}, "", {}, {"cone50", "cone70", "vwall"}, "the thesis's cones (default: geometry given below)", false}, InputType::text);
   t.custom({"cone.stages", {}, "", Range::closed(1, 5), {}, "vwall: the first 1 to 5 stages (50, 60, 70, 80, 90 deg)", false}, InputType::integer);
-  t.custom({"cone.contours", {}, "", Range::closed(1, 100000), {}, "contours (per stage)", false}, InputType::integer);
+  t.custom({"cone.contours", {}, "", Range::at_least(1), {}, "contours (per stage)", false}, InputType::integer);
   t.custom({"cone.pie_angle", {}, "deg", Range{0.0, 360.0, true, false}, {}, "pie angle gamma; 360 / gamma an integer; 360: full disc", false},
            InputType::real);
-  t.custom({"cone.wall_angle", {}, "deg", {}, {}, "wall angle from the horizontal", false}, InputType::real);
-  t.custom({"cone.stepdown", {}, "mm", {}, {}, "depth between contours", false}, InputType::real);
-  t.custom({"cone.top_radius", {}, "mm", {}, {}, "radius of the CAD surface at the initial top surface", false}, InputType::real);
+  t.custom({"cone.wall_angle", {}, "deg", Range{0.0, 90.0, true, false}, {}, "wall angle from the horizontal", false}, InputType::real);
+  t.custom({"cone.stepdown", {}, "mm", Range::positive(), {}, "depth between contours", false}, InputType::real);
+  t.custom({"cone.top_radius", {}, "mm", Range::positive(), {}, "radius of the CAD surface at the initial top surface", false}, InputType::real);
   t.custom({"cone.stepdown_angle", {}, "deg", {}, {}, "polar angle where the tool steps down (full disc)", false}, InputType::real);
-  t.custom({"cone.ramp_angle", {}, "deg", {}, {}, "angle of the stepdown ramp (full disc)", false}, InputType::real);
-  t.custom({"cone.lift", {}, "mm", {}, {}, "tool lift between contours of a pie", false}, InputType::real);
-  t.custom({"cone.chord_tolerance", {}, "mm", {}, {}, "largest chord deviation of the contour polylines", false}, InputType::real);
-  t.custom({"cone.approach_clearance", {}, "mm", {}, {}, "height of the approach above the sheet", false}, InputType::real);
+  t.custom({"cone.ramp_angle", {}, "deg", Range::positive(), {}, "angle of the stepdown ramp (full disc)", false}, InputType::real);
+  t.custom({"cone.lift", {}, "mm", Range::positive(), {}, "tool lift between contours of a pie", false}, InputType::real);
+  t.custom({"cone.chord_tolerance", {}, "mm", Range::positive(), {}, "largest chord deviation of the contour polylines", false}, InputType::real);
+  t.custom({"cone.approach_clearance", {}, "mm", Range::non_negative(), {}, "height of the approach above the sheet", false}, InputType::real);
   t.custom({"cone.counter_clockwise", {}, "", {}, {}, "direction of travel seen from above", false}, InputType::boolean);
 }
 
@@ -45,7 +43,8 @@ void add_mesh(Table& t) {
          [](ConeScene& s) -> double& { return s.mesh.band_outer; });
   t.real({"sheet.band_factor", {}, "", Range::positive(), {}, "element density multiplier in the band", false},
          [](ConeScene& s) -> double& { return s.mesh.band_factor; });
-  t.custom({"sheet.max_sector_deg", {}, "deg", {}, {}, "largest O-grid sub-sector: 45 or 90", false}, InputType::real);
+  t.real({"sheet.max_sector_deg", {}, "deg", {}, {"45", "90"}, "largest O-grid sub-sector: 45 or 90", false},
+         [](ConeScene& s) -> double& { return s.mesh.max_sector_deg; });
   t.real({"sheet.ring_start", {}, "mm", Range::non_negative(), {}, "circular layers from here to the rim (0: none); < clamp_radius", false},
          [](ConeScene& s) -> double& { return s.mesh.ring_start; });
   t.integer({"sheet.transition_elements", {}, "", Range::closed(0, 100000), {}, "layers from the kite to ring_start (0: about square)", false},
@@ -79,16 +78,11 @@ void add_solver_and_output(Table& t) {
             [](ConeScene& s) -> bool& { return s.estimate_next_correction; });
   t.real({"solver.stabilisation", {}, "", Range::closed(0.0, 1.0), {}, "damping of an increment failing at the minimum increment (0: off)", false},
          [](ConeScene& s) -> double& { return s.stabilisation; });
-  t.integer({"output.vtu_every", {}, "", Range::non_negative(), {}, "increments between VTU steps (0: initial and final state only)", false},
-            [](ConeScene& s) -> int& { return s.vtu_every; });
-  t.integer({"output.checkpoint_every", {}, "", Range::non_negative(), {}, "completed contours between checkpoints (0: none)", false},
-            [](ConeScene& s) -> int& { return s.checkpoint_every; });
-  t.integer({"output.checkpoint_increments", {}, "", Range::non_negative(), {}, "increments between checkpoints (0: none)", false},
-            [](ConeScene& s) -> int& { return s.checkpoint_increments; });
+  add_output_inputs(t, "completed contours");
   t.custom({"output.history_element", {}, "", {}, {}, "{ r = mm, theta = deg }: the element nearest to this point writes history.csv", false},
-           InputType::text);
+           InputType::table);
   t.custom({"output.steady_state", {}, "", {}, {}, "[from, to]: contour range of the steady-state means (thesis §9.3: [60, 80])", false},
-           InputType::text);
+           InputType::list);
 }
 
 Table make_table() {

@@ -1,15 +1,12 @@
 #include "forward/scenes/cone/cone_kind.hpp"
 
+#include "forward/scenes/common/fe_run_observables.hpp"
 #include "forward/scenes/common/table_scene.hpp"
 #include "forward/scenes/cone/cone_inputs.hpp"
 #include "forward/scenes/cone/cone_run.hpp"
 
-#include <limits>
-
 namespace spifit::scene {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class ConeSceneFile final : public TableScene<ConeScene> {
  public:
@@ -17,18 +14,11 @@ class ConeSceneFile final : public TableScene<ConeScene> {
   std::vector<std::string> input_files() const override { return {data_.file, data_.card.file}; }
   std::unique_ptr<Scene> clone() const override { return std::make_unique<ConeSceneFile>(*this); }
   std::unique_ptr<SceneResult> run(const RunFiles& files, const RunControl& control) const override {
-    // The sheet, tool and feed of the scene go into every stage's path options.
-    ConeScene s = data_;
-    for (auto& o : s.stages) {
-      o.thickness = s.thickness;
-      o.tool_radius = s.tool_radius;
-      o.feed = s.feed;
-    }
-    return std::make_unique<ConeResult>(run_cone_scene(s, files, control));
+    return std::make_unique<ConeResult>(run_cone_scene(data_, files, control));
   }
 
  protected:
-  std::string check_inputs() const override { return data_.contact.validate(); }
+  std::string check_inputs() const override { return cone_scene_error(data_).text(); }
 };
 
 const ConeResult& cone(const SceneResult& r) { return dynamic_cast<const ConeResult&>(r); }
@@ -47,11 +37,9 @@ Observable steady(const char* name, const char* doc, std::function<double(const 
 }
 
 std::vector<Observable> cone_observables() {
-  return {
-      scalar("peak_fz", "N", "largest |Fz| over the run (signed)", [](const ConeResult& r) { return r.force.peak().z(); }),
+  std::vector<Observable> list{
       scalar("peak_fr", "N", "largest |Fr| over the run (signed)", [](const ConeResult& r) { return r.peak_polar.x(); }),
       scalar("peak_ftheta", "N", "largest |Ftheta| over the run (signed)", [](const ConeResult& r) { return r.peak_polar.y(); }),
-      scalar("final_fz", "N", "Fz at the end of the path", [](const ConeResult& r) { return r.force.final_force().z(); }),
       steady("steady_fr", "mean of the contour means of Fr over the contour range", [](const SteadyState& s) { return s.polar.x(); }),
       steady("steady_ftheta", "mean of the contour means of Ftheta over the contour range", [](const SteadyState& s) { return s.polar.y(); }),
       steady("steady_fz", "mean of the contour means of Fz over the contour range", [](const SteadyState& s) { return s.polar.z(); }),
@@ -60,13 +48,12 @@ std::vector<Observable> cone_observables() {
          const SteadyState s = steady_state(cone(r).contours, o.contours->first, o.contours->second);
          return s.contours == 0 ? kNaN : s.polar.x() / s.polar.z();
        }},
-      scalar("max_penetration", "mm", "deepest contact point over the run", [](const ConeResult& r) { return r.force.max_penetration(); }),
       scalar("max_surface_penetration", "mm", "deepest point of the tool-side surface over the run",
              [](const ConeResult& r) { return r.force.max_surface_penetration(); }),
-      scalar("newton_iterations", "", "Newton iterations of the run", [](const ConeResult& r) { return double(r.run.counters.iterations); }, true),
-      scalar("increments", "", "committed increments of the run", [](const ConeResult& r) { return double(r.run.counters.increments); }, true),
       scalar("contours_completed", "", "contours the run completed", [](const ConeResult& r) { return double(r.run.marks_reached); }, true),
   };
+  for (Observable& f : fe_run_observables()) list.push_back(std::move(f));
+  return list;
 }
 
 }  // namespace

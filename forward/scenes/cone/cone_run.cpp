@@ -133,9 +133,7 @@ FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
     const ContourSpan& c = track.contours()[k];
     f.marks.push_back({c.end, "stage " + std::to_string(c.stage) + " contour " + std::to_string(c.contour), static_cast<int>(k)});
   }
-  f.output.vtu_every = scene.vtu_every;
-  f.output.checkpoint_every = scene.checkpoint_every;
-  f.output.checkpoint_increments = scene.checkpoint_increments;
+  f.output = tool_output_options(scene);
   return f;
 }
 

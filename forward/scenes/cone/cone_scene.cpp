@@ -2,7 +2,7 @@
 // The run is in cone_run.cpp.
 #include "forward/scenes/cone/cone_scene.hpp"
 
-#include "forward/scenes/common/scene_tables.hpp"
+#include "forward/scenes/common/scene_inputs.hpp"
 #include "forward/scenes/cone/cone_inputs.hpp"
 
 #include "forward/io/input_error.hpp"
@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <limits>
 #include <stdexcept>
 
@@ -34,9 +33,9 @@ constexpr OptionKey kOptionKeys[] = {
     {"approach_clearance", "cone.approach_clearance"},
 };
 
-// check_cone_path_options's message "cone path: OPTION = VALUE must ..." as an InputError on
-// the scene key of OPTION.
-[[noreturn]] void path_error(const std::string& file, const std::string& prefix, const std::invalid_argument& e) {
+// check_cone_path_options's message "cone path: OPTION = VALUE must ..." as a violation on the
+// scene key of OPTION.
+InputViolation path_violation(const std::string& prefix, const std::invalid_argument& e) {
   std::string msg = e.what();
   const std::string head = "cone path: ";
   if (msg.rfind(head, 0) == 0) msg = msg.substr(head.size());
@@ -46,9 +45,9 @@ constexpr OptionKey kOptionKeys[] = {
       const std::size_t eq = msg.find(" = ");
       const std::size_t end = msg.find(' ', eq + 3);
       const std::string value = eq == std::string::npos ? "" : msg.substr(eq + 3, end - eq - 3);
-      throw io::InputError(file, k.key, value, prefix + msg);
+      return {k.key, value, prefix + msg};
     }
-  throw io::InputError(file, "cone", "", prefix + msg);
+  return {"cone", "", prefix + msg};
 }
 
 // Preset stages (thesis §4.1.2, §8.1, §9.1) with the preset's default pie angle.
@@ -74,18 +73,16 @@ void read_cone_table(const TomlTable& root, ConeScene& s) {
   s.stages = preset_stages(s.preset, &default_pie);
   s.pie_angle = default_pie;
   if (!ct) return;
+  cone_inputs().read(*ct, "cone", s);  // types, ranges and choices of every key
   if (ct->has("pie_angle")) {
     s.pie_angle = ct->number("pie_angle");
-    if (!(s.pie_angle > 0.0 && s.pie_angle <= 360.0)) ct->fail("pie_angle", "must lie in (0, 360] deg");
     const double pies = 360.0 / s.pie_angle;
     if (std::abs(pies - std::round(pies)) > 1e-9 * pies)
       ct->fail("pie_angle", "360 / pie_angle must be an integer (the pie stands for every pie of the sheet)");
   }
   if (ct->has("stages")) {
     if (s.preset != "vwall") ct->fail("stages", "only the vwall preset has stages");
-    const int n = ct->integer("stages", 5);
-    if (n < 1 || n > 5) ct->fail("stages", "vwall has 1 to 5 stages");
-    s.stages.resize(static_cast<std::size_t>(n));
+    s.stages.resize(static_cast<std::size_t>(ct->integer("stages", 5)));
   }
   for (const char* key : {"wall_angle", "stepdown_angle"})
     if (s.preset == "vwall" && ct->has(key)) ct->fail(key, "vwall sets it per stage (thesis §8.1.1)");
@@ -113,36 +110,11 @@ void preset_defaults(ConeScene& s) {
   s.tool_radius = s.stages.front().tool_radius > 0.0 ? s.stages.front().tool_radius : 5.0;
 }
 
-// The [sheet] checks that involve more than one key.
-void check_sheet(const TomlTable& sh, const ConeScene& s) {
-  double top = 0.0;
-  for (const auto& o : s.stages) top = std::max(top, o.top_radius);
-  if (sh.has("clamp_radius") && !(s.clamp_radius > top))
-    sh.fail("clamp_radius", "must be larger than the cone's top radius " + io::format_number(top) + " mm");
-  if (!(s.mesh.core_radius < s.clamp_radius)) sh.fail("core_radius", "must lie in [0, clamp_radius) (0: automatic)");
-  if (!(s.mesh.ring_start < s.clamp_radius)) sh.fail("ring_start", "must lie in [0, clamp_radius) (0: no circular layers)");
-  if (sh.has("thickness_rule") && s.thickness_rule == element::ThicknessRuleKind::surface && (s.thickness_points < 3 || s.thickness_points % 2 == 0))
-    sh.fail("thickness_rule", "the surface rule needs an odd number of thickness points >= 3");
-}
-
-// The tables the input table reads ([sheet], [tool], [contact], [solver], [output]), then the
-// keys it leaves to this reader.
+// The tables the input table reads ([sheet], [tool], [contact], [solver], [output]) over the
+// preset's defaults.
 void read_tables(const TomlTable& root, ConeScene& s) {
-  const auto& inputs = cone_inputs();
   preset_defaults(s);
-  for (const char* table : {"sheet", "tool", "contact", "solver", "output"}) {
-    const auto t = root.table(table);
-    if (!t) continue;
-    t->allow_only(inputs.keys_of(table));
-    inputs.read(*t, table, s);
-  }
-  if (const auto sh = root.table("sheet")) {
-    if (sh->has("max_sector_deg")) {
-      s.mesh.max_sector_deg = sh->number("max_sector_deg");
-      if (!(s.mesh.max_sector_deg == 45.0 || s.mesh.max_sector_deg == 90.0)) sh->fail("max_sector_deg", "must be 45 or 90 (largest O-grid sub-sector)");
-    }
-    check_sheet(*sh, s);
-  }
+  read_input_tables(root, cone_inputs(), {"sheet", "tool", "contact", "solver", "output"}, s);
 }
 
 // [output] history_element = { r = ..., theta = ... }: a point of the initial sheet (needs the
@@ -172,42 +144,36 @@ void read_output_extras(const TomlTable& root, ConeScene& s) {
   }
 }
 
-// The sheet, tool and pie of the scene go into every stage's path options; each stage is
-// checked (errors on the scene key of the offending option).
-void finish_stages(ConeScene& s) {
-  for (std::size_t i = 0; i < s.stages.size(); ++i) {
-    auto& o = s.stages[i];
-    o.thickness = s.thickness;
-    o.tool_radius = s.tool_radius;
-    o.feed = s.feed;
-    o.pie_angle_deg = s.pie_angle;
+// Each stage's path options (checked; errors on the scene key of the offending option).
+InputViolation stage_violation(const ConeScene& s) {
+  const std::vector<toolpath::ConePathOptions> stages = cone_scene_stages(s);
+  for (std::size_t i = 0; i < stages.size(); ++i) {
     try {
-      toolpath::check_cone_path_options(o);
+      toolpath::check_cone_path_options(stages[i]);
     } catch (const std::invalid_argument& e) {
-      path_error(s.file, s.stages.size() > 1 ? "stage " + std::to_string(i + 1) + ": " : "", e);
+      return path_violation(stages.size() > 1 ? "stage " + std::to_string(i + 1) + ": " : "", e);
     }
-    if (!(s.clamp_radius > o.top_radius))
-      throw io::InputError(s.file, "sheet.clamp_radius", io::format_number(s.clamp_radius),
-                           "must be larger than the cone's top radius " + io::format_number(o.top_radius) + " mm");
   }
+  return {};
 }
 
 // The mesh must exist and its elements must not be too short for the thickness (ShellModel's
-// limit t/l <= 3): checked here so that the error comes before any output.
-void check_mesh(ConeScene& s) {
+// limit t/l <= 3): checked before the run so that the error comes before any output.
+InputViolation mesh_violation(const ConeScene& s) {
   mesh::Mesh m;
   try {
     m = cone_scene_mesh(s);
   } catch (const std::invalid_argument& e) {
-    throw io::InputError(s.file, "sheet", "", std::string("cannot mesh the sheet: ") + e.what());
+    return {"sheet", "", std::string("cannot mesh the sheet: ") + e.what()};
   }
   double shortest = std::numeric_limits<double>::infinity();
   for (const auto& q : m.quads)
     for (std::size_t i = 0; i < 4; ++i)
       shortest = std::min(shortest, (m.nodes[static_cast<std::size_t>(q[(i + 1) % 4])] - m.nodes[static_cast<std::size_t>(q[i])]).norm());
   if (s.thickness / shortest > 3.0)
-    throw io::InputError(s.file, "sheet.elements_per_45deg", std::to_string(s.mesh.elements_per_45deg),
-                         "the shortest element edge " + io::format_number(shortest) + " mm is below a third of the thickness");
+    return {"sheet.elements_per_45deg", std::to_string(s.mesh.elements_per_45deg),
+            "the shortest element edge " + io::format_number(shortest) + " mm is below a third of the thickness"};
+  return {};
 }
 
 }  // namespace
@@ -223,16 +189,39 @@ ConeScene read_cone_scene(const std::string& path) {
   ConeScene s;
   s.file = path;
   if (!is_cone_kind(sc->string("kind"))) sc->fail("kind", "expected cone");
-  s.name = sc->string("name", std::filesystem::path(path).stem().string());
-  s.description = sc->string("description", "");
-  s.card = read_scene_material(*sc, path);
-
+  read_scene_header(*sc, path, s);
   read_cone_table(root, s);
   read_tables(root, s);
   read_output_extras(root, s);
-  finish_stages(s);
-  check_mesh(s);
+  if (const InputViolation v = cone_scene_error(s)) throw io::InputError(path, v.key, v.value, v.message);
   return s;
+}
+
+InputViolation cone_scene_error(const ConeScene& s) {
+  using io::format_number;
+  if (s.thickness_rule == element::ThicknessRuleKind::surface && (s.thickness_points < 3 || s.thickness_points % 2 == 0))
+    return {"sheet.thickness_rule", "\"surface\"", "the surface rule needs an odd number of thickness points >= 3"};
+  double top = 0.0;
+  for (const auto& o : s.stages) top = std::max(top, o.top_radius);
+  if (!(s.clamp_radius > top))
+    return {"sheet.clamp_radius", format_number(s.clamp_radius), "must be larger than the cone's top radius " + format_number(top) + " mm"};
+  if (!(s.mesh.core_radius < s.clamp_radius))
+    return {"sheet.core_radius", format_number(s.mesh.core_radius), "must lie in [0, clamp_radius) (0: automatic)"};
+  if (!(s.mesh.ring_start < s.clamp_radius))
+    return {"sheet.ring_start", format_number(s.mesh.ring_start), "must lie in [0, clamp_radius) (0: no circular layers)"};
+  if (InputViolation v = stage_violation(s)) return v;
+  return mesh_violation(s);
+}
+
+std::vector<toolpath::ConePathOptions> cone_scene_stages(const ConeScene& scene) {
+  std::vector<toolpath::ConePathOptions> stages = scene.stages;
+  for (auto& o : stages) {
+    o.thickness = scene.thickness;
+    o.tool_radius = scene.tool_radius;
+    o.feed = scene.feed;
+    o.pie_angle_deg = scene.pie_angle;
+  }
+  return stages;
 }
 
 mesh::Mesh cone_scene_mesh(const ConeScene& scene) {
@@ -243,10 +232,11 @@ mesh::Mesh cone_scene_mesh(const ConeScene& scene) {
 }
 
 toolpath::ConePath cone_scene_path(const ConeScene& scene) {
-  if (scene.stages.size() == 1) return toolpath::annotated_cone_path(scene.stages.front());
+  const std::vector<toolpath::ConePathOptions> stages = cone_scene_stages(scene);
+  if (stages.size() == 1) return toolpath::annotated_cone_path(stages.front());
   double safe_z = 0.0;  // every stage starts and ends at its approach height
-  for (const auto& o : scene.stages) safe_z = std::max(safe_z, toolpath::cone_approach_centre_z(o));
-  return toolpath::annotated_multistage_cone_path(scene.stages, safe_z);
+  for (const auto& o : stages) safe_z = std::max(safe_z, toolpath::cone_approach_centre_z(o));
+  return toolpath::annotated_multistage_cone_path(stages, safe_z);
 }
 
 }  // namespace spifit::scene

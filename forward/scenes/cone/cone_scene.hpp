@@ -9,6 +9,7 @@
 #include "forward/material/material_card.hpp"
 #include "forward/mesh/disc_mesh.hpp"
 #include "forward/model/shell_model.hpp"
+#include "forward/scenes/common/scene_tables.hpp"
 #include "forward/scenes/cone/cone_observables.hpp"
 #include "forward/solver/newton_solver.hpp"
 #include "forward/toolpath/cone_path.hpp"
@@ -23,8 +24,8 @@ struct ConeScene {
   std::string name, description, file;
   material::MaterialCard card;
   std::string preset;  // cone50, cone70, vwall; empty: geometry given in [cone]
-  // One cone (cone50, cone70, explicit geometry) or the vwall stages, with the sheet thickness,
-  // tool radius, feed and pie angle of the scene already in them.
+  // One cone (cone50, cone70, explicit geometry) or the vwall stages: their geometry. The sheet
+  // thickness, tool radius, feed and pie angle below are the path's (cone_scene_stages).
   std::vector<toolpath::ConePathOptions> stages;
   double pie_angle = 360.0;        // gamma [deg]; 360 / gamma an integer
   // Sheet: the mesh is a disc or pie of radius clamp_radius (its rim is the clamp).
@@ -91,7 +92,14 @@ bool is_cone_kind(const std::string& kind);
 // Throws io::InputError naming file, key and value (unknown preset, pie angle not dividing
 // 360, clamp radius not beyond the top radius, invalid path geometry, ...).
 ConeScene read_cone_scene(const std::string& path);
+// The first check across keys the scene fails (the reader's, and a sweep's after a change):
+// the surface rule's odd thickness_points, clamp radius beyond the top radius, core and ring
+// inside the clamp, each stage's path options, a mesh whose thickness over element length is
+// <= 3. None: an empty violation.
+InputViolation cone_scene_error(const ConeScene& scene);
 
+// The stages with the scene's thickness, tool radius, feed and pie angle.
+std::vector<toolpath::ConePathOptions> cone_scene_stages(const ConeScene& scene);
 // The tool path of the scene (tool CENTRE waypoints with their move kind and contour).
 toolpath::ConePath cone_scene_path(const ConeScene& scene);
 // The mesh of the scene: disc or pie of radius clamp_radius.

@@ -1,5 +1,6 @@
 #include "forward/scenes/forming/forming_inputs.hpp"
 
+#include "forward/scenes/common/scene_inputs.hpp"
 #include "forward/scenes/common/tool_scene_inputs.hpp"
 
 namespace spifit::scene {
@@ -9,10 +10,7 @@ using io::InputType;
 using io::Range;
 
 void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
-  t.custom({"scene.kind", {}, "", {}, {"indent", "indent_line", "line"}, "the scene kind (required)", false}, InputType::text);
-  t.custom({"scene.name", {}, "", {}, {}, "name in outputs (default: the file's stem)", false}, InputType::text);
-  t.custom({"scene.description", {}, "", {}, {}, "free text", false}, InputType::text);
-  t.custom({"scene.material", {}, "", {}, {}, "material card, relative to the scene file (default: card C.3 + C.4)", false}, InputType::text);
+  add_scene_inputs(t, {"indent", "indent_line", "line"}, SceneMaterialKey::optional);
   t.real({"sheet.length", {}, "mm", Range::positive(), {}, "side of the square sheet, centred on the origin, clamped on its edges", true},
          [](FormingScene& s) -> double& { return s.length; });
   t.real({"sheet.thickness", {}, "mm", Range::positive(), {}, "initial sheet thickness", true},
@@ -28,13 +26,8 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
 }
 
 void add_output(io::InputTable<FormingScene>& t) {
-  t.integer({"output.vtu_every", {}, "", Range::non_negative(), {}, "increments between VTU steps (0: initial and final state only)", false},
-            [](FormingScene& s) -> int& { return s.vtu_every; });
-  t.custom({"output.sections", {}, "", {}, {}, "names of path points where the section y = 0 is written", false}, InputType::text);
-  t.integer({"output.checkpoint_every", {}, "", Range::non_negative(), {}, "named path points between checkpoints (0: none)", false},
-            [](FormingScene& s) -> int& { return s.checkpoint_every; });
-  t.integer({"output.checkpoint_increments", {}, "", Range::non_negative(), {}, "increments between checkpoints (0: none)", false},
-            [](FormingScene& s) -> int& { return s.checkpoint_increments; });
+  add_output_inputs(t, "named path points");
+  t.custom({"output.sections", {}, "", {}, {}, "names of path points where the section y = 0 is written", false}, InputType::list);
 }
 
 io::InputTable<FormingScene> make_table() {

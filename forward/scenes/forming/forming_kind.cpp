@@ -1,5 +1,6 @@
 #include "forward/scenes/forming/forming_kind.hpp"
 
+#include "forward/scenes/common/fe_run_observables.hpp"
 #include "forward/scenes/common/table_scene.hpp"
 #include "forward/scenes/forming/forming_inputs.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
@@ -9,8 +10,6 @@
 
 namespace spifit::scene {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class FormingSceneFile final : public TableScene<FormingScene> {
  public:
@@ -26,10 +25,7 @@ class FormingSceneFile final : public TableScene<FormingScene> {
   }
 
  protected:
-  std::string check_inputs() const override {
-    if (data_.half && data_.elements % 2 != 0) return "a half model needs an even number of elements across";
-    return data_.contact.validate();
-  }
+  std::string check_inputs() const override { return forming_scene_error(data_).text(); }
 };
 
 const FormingResult& forming(const SceneResult& r) { return dynamic_cast<const FormingResult&>(r); }
@@ -70,15 +66,7 @@ Observable window_mean(const char* name, const char* doc, int k) {
 std::vector<Observable> forming_observables() {
   std::vector<Observable> o{
       force_component("peak_fx", "largest |Fx| over the run (signed)", 0, true),
-      force_component("peak_fz", "largest |Fz| over the run (signed)", 2, true),
       force_component("final_fx", "Fx at the end of the path", 0, false),
-      force_component("final_fz", "Fz at the end of the path", 2, false),
-      {"max_penetration", "mm", "deepest contact point over the run", Observable::Needs::nothing, false,
-       [](const SceneResult& r, const ObservableOptions&) { return forming(r).force.max_penetration(); }},
-      {"newton_iterations", "", "Newton iterations of the run", Observable::Needs::nothing, true,
-       [](const SceneResult& r, const ObservableOptions&) { return static_cast<double>(forming(r).run.counters.iterations); }},
-      {"increments", "", "committed increments of the run", Observable::Needs::nothing, true,
-       [](const SceneResult& r, const ObservableOptions&) { return static_cast<double>(forming(r).run.counters.increments); }},
       window_mean("mean_fx", "mean Fx over the travel window", 0),
       window_mean("mean_fy", "mean Fy over the travel window", 1),
       window_mean("mean_fz", "mean Fz over the travel window", 2),
@@ -88,6 +76,7 @@ std::vector<Observable> forming_observables() {
          return s.rows == 0 ? kNaN : (s.max_fz - s.min_fz) / (s.sum[2] / static_cast<double>(s.rows));
        }},
   };
+  for (Observable& f : fe_run_observables()) o.push_back(std::move(f));
   return o;
 }
 

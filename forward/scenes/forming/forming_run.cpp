@@ -61,9 +61,7 @@ FeRunSetup forming_setup(const FormingScene& s) {
   // The increment size starts afresh at every mark, as after a change of direction.
   for (const Mark& m : f.marks)
     if (m.travel < length) f.newton.restarts.push_back(m.travel / length);
-  f.output.vtu_every = s.vtu_every;
-  f.output.checkpoint_every = s.checkpoint_every;
-  f.output.checkpoint_increments = s.checkpoint_increments;
+  f.output = tool_output_options(s);
   f.progress_every_increment = true;
   return f;
 }

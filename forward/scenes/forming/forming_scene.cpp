@@ -2,7 +2,7 @@
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/toml_reader.hpp"
-#include "forward/scenes/common/scene_tables.hpp"
+#include "forward/scenes/common/scene_inputs.hpp"
 #include "forward/scenes/forming/forming_inputs.hpp"
 #include "forward/scenes/forming/forming_path.hpp"
 #include "forward/toolpath/tool_path.hpp"
@@ -58,8 +58,9 @@ void read_path_points(const io::TomlTable& root, const std::vector<io::TomlTable
   if (points.empty()) return;
   if (!s.gcode.empty()) points.front().fail("x", "give either [tool] gcode or [[path]] points, not both");
   s.path.clear();
+  const std::vector<std::string> keys = forming_inputs().keys_of("path");
   for (const auto& p : points) {
-    p.allow_only(forming_inputs().keys_of("path"));
+    p.allow_only(keys);
     std::string fallback = "P";
     fallback += std::to_string(s.path.size());
     s.path.push_back({p.string("name", fallback), {p.number("x"), p.number("y"), p.number("z")}});
@@ -76,9 +77,39 @@ void read_sections(const io::TomlTable& o, FormingScene& s) {
       o.fail("sections", "no path point named \"" + n + "\"");
 }
 
+// The tool tip's waypoints: the G-code program's or the path points.
+std::vector<Eigen::Vector3d> tip_points(const FormingScene& s) {
+  std::vector<Eigen::Vector3d> tips;
+  if (!s.gcode.empty()) {
+    const toolpath::ToolPath gp = gcode_tip_path(s.gcode);
+    for (const auto& w : gp.waypoints()) tips.push_back(w.position);
+  } else {
+    for (const auto& p : s.path) tips.push_back(p.tip);
+  }
+  return tips;
+}
+
 }  // namespace
 
 bool is_forming_kind(const std::string& kind) { return kind == "indent" || kind == "indent_line" || kind == "line"; }
+
+InputViolation forming_scene_error(const FormingScene& s) {
+  if (s.half && s.elements % 2 != 0)
+    return {"sheet.elements", std::to_string(s.elements), "a half model needs an even number of elements across"};
+  // The tool must start outside the sheet and reach it.
+  const double half_length = 0.5 * s.length;
+  auto over_sheet = [&](const Eigen::Vector3d& tip) { return std::abs(tip.x()) < half_length && std::abs(tip.y()) < half_length; };
+  const std::vector<Eigen::Vector3d> tips = tip_points(s);
+  const std::string key = s.gcode.empty() ? "path" : "tool.gcode";
+  if (tips.front().z() < -1e-9 && over_sheet(tips.front())) {
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "the tool starts inside the sheet: its tip is %.4g mm below the top surface", -tips.front().z());
+    return {key, "", buf};
+  }
+  if (std::none_of(tips.begin(), tips.end(), [&](const Eigen::Vector3d& t) { return t.z() < 0.0 && over_sheet(t); }))
+    return {key, "", "the tool path never goes below the sheet's top surface over the sheet"};
+  return {};
+}
 
 FormingScene read_forming_scene(const std::string& path) {
   const auto root = io::TomlTable::parse_file(path);
@@ -92,45 +123,18 @@ FormingScene read_forming_scene(const std::string& path) {
   s.kind = sc->string("kind");
   if (!is_forming_kind(s.kind)) sc->fail("kind", "expected indent, indent_line or line");
   set_defaults(s);
-  s.name = sc->string("name", std::filesystem::path(path).stem().string());
-  s.description = sc->string("description", "");
-  s.card = read_scene_material(*sc, path);
-  for (const char* table : {"sheet", "tool", "contact", "solver", "output"}) {
-    const auto t = root.table(table);
-    if (!t) continue;
-    t->allow_only(inputs.keys_of(table));
-    inputs.read(*t, table, s);
-  }
-  if (const auto sh = root.table("sheet"); sh && s.half && s.elements % 2 != 0)
-    sh->fail(sh->has("elements") ? "elements" : "half", "a half model needs an even number of elements across");
+  read_scene_header(*sc, path, s);
+  read_input_tables(root, inputs, {"sheet", "tool", "contact", "solver", "output"}, s);
   if (const auto tl = root.table("tool")) read_gcode(*tl, path, s);
   const auto points = root.table_array("path");
   read_path_points(root, points, s);
   if (const auto o = root.table("output")) read_sections(*o, s);
-  // The tool must start outside the sheet and reach it.
-  const double half_length = 0.5 * s.length;
-  auto over_sheet = [&](const Eigen::Vector3d& tip) { return std::abs(tip.x()) < half_length && std::abs(tip.y()) < half_length; };
-  std::vector<Eigen::Vector3d> tips;
-  if (!s.gcode.empty()) {
-    const toolpath::ToolPath gp = gcode_tip_path(s.gcode);
-    for (const auto& w : gp.waypoints()) tips.push_back(w.position);
-  } else {
-    for (const auto& p : s.path) tips.push_back(p.tip);
-  }
-  // Path errors are reported on the key that holds the path.
-  const auto path_error = [&](const std::string& message) {
-    if (!s.gcode.empty()) root.table("tool")->fail("gcode", message);
-    if (!points.empty()) points.front().fail("z", message);
-    sc->fail("kind", message + " (default path of this kind)");
-  };
-  if (tips.front().z() < -1e-9 && over_sheet(tips.front())) {
-    char buf[160];
-    std::snprintf(buf, sizeof buf, "the tool starts inside the sheet: its tip is %.4g mm below the top surface", -tips.front().z());
-    path_error(buf);
-  }
-  if (std::none_of(tips.begin(), tips.end(), [&](const Eigen::Vector3d& t) { return t.z() < 0.0 && over_sheet(t); }))
-    path_error("the tool path never goes below the sheet's top surface over the sheet");
-  return s;
+  const InputViolation v = forming_scene_error(s);
+  if (!v) return s;
+  if (v.key == "tool.gcode") root.table("tool")->fail("gcode", v.message);
+  if (v.key == "path" && !points.empty()) points.front().fail("z", v.message);
+  if (v.key == "path") sc->fail("kind", v.message + " (default path of this kind)");
+  throw io::InputError(path, v.key, v.value, v.message);
 }
 
 }  // namespace spifit::scene

@@ -6,6 +6,7 @@
 // thesis's (schema: docs/file-formats.md). The run is forming_run.hpp.
 #include "forward/contact/shell_contact.hpp"
 #include "forward/material/material_card.hpp"
+#include "forward/scenes/common/scene_tables.hpp"
 #include "forward/solver/newton_solver.hpp"
 
 #include <optional>
@@ -62,5 +63,10 @@ struct FormingScene {
 // sheet or a tool that starts inside it).
 FormingScene read_forming_scene(const std::string& path);
 bool is_forming_kind(const std::string& kind);
+// The first check across keys the scene fails (the reader's, and a sweep's after a change): a
+// half model's even element count; a tool path ("path": [[path]] or the kind's default, or
+// "tool.gcode") that starts outside the sheet and goes below its top surface over it. None: an
+// empty violation.
+InputViolation forming_scene_error(const FormingScene& scene);
 
 }  // namespace spifit::scene

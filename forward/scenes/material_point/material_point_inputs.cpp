@@ -1,5 +1,7 @@
 #include "forward/scenes/material_point/material_point_inputs.hpp"
 
+#include "forward/scenes/common/scene_inputs.hpp"
+
 namespace spifit::scene {
 namespace {
 
@@ -8,16 +10,12 @@ using io::Range;
 using Table = io::InputTable<MaterialPointScene>;
 
 void add_scene(Table& t) {
-  t.custom({"scene.kind", {}, "", {}, {"tensile", "shear", "bauschinger", "plane_strain", "biaxial"}, "the scene kind (required)", false},
-           InputType::text);
-  t.custom({"scene.name", {}, "", {}, {}, "name in outputs (default: the file's stem)", false}, InputType::text);
-  t.custom({"scene.description", {}, "", {}, {}, "free text", false}, InputType::text);
-  t.custom({"scene.material", {}, "", {}, {}, "material card, relative to the scene file (required)", false}, InputType::text);
+  add_scene_inputs(t, {"tensile", "shear", "bauschinger", "plane_strain", "biaxial"}, SceneMaterialKey::required);
   t.real({"scene.angle", {}, "deg", Range::closed(-180.0, 180.0), {}, "loading direction from the rolling direction", true},
          [](MaterialPointScene& s) -> double& { return s.setup.angle_deg; });
   t.custom({"scene.strain_path", {}, "", {}, {},
             "targets of the control strain from 0, e.g. [0.2, -0.2] (default 0.3; shear and bauschinger: 0.5, bauschinger requires it)", false},
-           InputType::text);
+           InputType::list);
   t.integer({"scene.increments", {}, "", Range::closed(1, 10000000), {}, "recorded increments over the whole path", false},
             [](MaterialPointScene& s) -> int& { return s.setup.increments; });
 }

@@ -5,12 +5,9 @@
 #include "forward/scenes/material_point/material_point_scene.hpp"
 
 #include <cmath>
-#include <limits>
 
 namespace spifit::scene {
 namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 class MaterialPointSceneFile final : public TableScene<MaterialPointScene> {
  public:
