@@ -1,6 +1,7 @@
 #include "forward/scenes/cone/cone_observable_log.hpp"
 
 #include "forward/io/binary_archive.hpp"
+#include "forward/io/format_text.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
 #include "forward/scenes/cone/element_history.hpp"
@@ -109,17 +110,16 @@ void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
   const std::vector<RadialEdge> edges = radial_elongation(nodes);
   const double wall = stage_wall_angle(scene_, span.stage);
   const SectionSummary s = summarise_section(points, edges, wall, scene_.thickness);
-  char name[64], head[240];
+  char name[64];
   std::snprintf(name, sizeof name, "sections/section_s%d_c%03d.csv", span.stage, span.contour);
-  std::snprintf(head, sizeof head,
-                "# spifit cone scene %s: section at theta0 = %.6g deg after stage %d, contour %d: mid-surface, top/bottom = mid +- h/2 "
-                "along the nodal director, depth of the top surface, wall angle, twist\n",
-                scene_.name.c_str(), theta0, span.stage, span.contour);
-  files_.write(name, head + section_csv(points));
+  files_.write(name, io::format_text("# spifit cone scene %s: section at theta0 = %.6g deg after stage %d, contour %d: mid-surface, "
+                                     "top/bottom = mid +- h/2 along the nodal director, depth of the top surface, wall angle, twist\n",
+                                     scene_.name.c_str(), theta0, span.stage, span.contour) +
+                         section_csv(points));
   std::snprintf(name, sizeof name, "sections/elongation_s%d_c%03d.csv", span.stage, span.contour);
-  std::snprintf(head, sizeof head, "# spifit cone scene %s: radial elongation of the section's element edges after stage %d, contour %d\n",
-                scene_.name.c_str(), span.stage, span.contour);
-  files_.write(name, head + elongation_csv(edges));
+  files_.write(name, io::format_text("# spifit cone scene %s: radial elongation of the section's element edges after stage %d, contour %d\n",
+                                     scene_.name.c_str(), span.stage, span.contour) +
+                         elongation_csv(edges));
   const double z = centre_z();
   section_rows_.add_row({static_cast<double>(span.stage), static_cast<double>(span.contour), wall, static_cast<double>(s.plateau_nodes),
                            s.plateau_thickness, s.sine_law_thickness, s.plateau_thickness / s.sine_law_thickness, s.min_thickness,

@@ -1,5 +1,6 @@
 #include "forward/scenes/cone/cone_result.hpp"
 
+#include "forward/io/format_text.hpp"
 #include "forward/scenes/common/fe_run_summary.hpp"
 
 #include <cstdio>
@@ -45,12 +46,10 @@ nlohmann::json ConeResult::to_json() const {
 std::string ConeResult::brief_report() const {
   const Eigen::Vector3d& pk = force.peak();
   const Eigen::Vector3d fp = final_polar_force();
-  char buf[400];
-  std::snprintf(buf, sizeof buf,
+  return io::format_text(
                 "%-16s %-12s peak force (%.2f, %.2f, %.2f) N, final (Fr, Ftheta, Fz) (%.2f, %.2f, %.2f) N, %d/%d contours  (%d elements, %d increments, %d iterations, %.2f s)",
                 name.c_str(), "cone", pk.x(), pk.y(), pk.z(), fp.x(), fp.y(), fp.z(), run.marks_reached, contours_total, elements,
                 run.counters.increments, run.counters.iterations, wall_seconds);
-  return buf;
 }
 
 }  // namespace spifit::scene

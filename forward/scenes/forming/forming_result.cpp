@@ -1,5 +1,6 @@
 #include "forward/scenes/forming/forming_result.hpp"
 
+#include "forward/io/format_text.hpp"
 #include "forward/scenes/common/fe_run_summary.hpp"
 
 #include <cstdio>
@@ -18,11 +19,9 @@ nlohmann::json FormingResult::to_json() const {
 
 std::string FormingResult::brief_report() const {
   const Eigen::Vector3d& pk = force.peak();
-  char buf[320];
-  std::snprintf(buf, sizeof buf, "%-16s %-12s peak force (%.2f, %.2f, %.2f) N, max penetration %.4f mm  (%d elements, %d increments, %d iterations, %.2f s)",
+  return io::format_text("%-16s %-12s peak force (%.2f, %.2f, %.2f) N, max penetration %.4f mm  (%d elements, %d increments, %d iterations, %.2f s)",
                 name.c_str(), kind.c_str(), pk.x(), pk.y(), pk.z(), force.max_penetration(), elements, run.counters.increments,
                 run.counters.iterations, wall_seconds);
-  return buf;
 }
 
 }  // namespace spifit::scene
