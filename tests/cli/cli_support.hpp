@@ -1,7 +1,10 @@
 #pragma once
-// Running the spifit executable from the CLI tests: exit code, stdout and stderr.
+// Running the spifit executable from the CLI tests: exit code, stdout and stderr; killing a run.
+// (expect_same_run, temp_path, slurp: tests/support.)
+#include "tests/support/same_outputs.hpp"
+#include "tests/support/temp_files.hpp"
+
 #include <gtest/gtest.h>
-#include <nlohmann/json.hpp>
 
 #include <array>
 #include <chrono>
@@ -65,22 +68,6 @@ inline bool run_and_kill(const std::filesystem::path& scene, const std::filesyst
   ::kill(pid, SIGKILL);
   ::waitpid(pid, &status, 0);
   return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
-}
-
-// A resumed run ends as the uninterrupted one: these files of DIR are byte-identical to REF's,
-// and these keys of summary.json are equal.
-inline void expect_same_run(const std::filesystem::path& ref, const std::filesystem::path& out, const std::vector<std::string>& files,
-                            const std::vector<std::string>& keys) {
-  const auto slurp = [](const std::filesystem::path& f) {
-    std::ifstream in(f, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return std::filesystem::exists(f) ? ss.str() : std::string("(missing)");
-  };
-  for (const auto& f : files) EXPECT_EQ(slurp(out / f), slurp(ref / f)) << f << " differs";
-  const auto a = nlohmann::json::parse(std::ifstream(ref / "summary.json"));
-  const auto b = nlohmann::json::parse(std::ifstream(out / "summary.json"));
-  for (const auto& k : keys) EXPECT_EQ(b[k], a[k]) << k;
 }
 
 }  // namespace spifit::test

@@ -1,6 +1,7 @@
 // The spifit executable: version/help, lankford, material show, run; exit codes and the
 // one-line error contract; the --out/--force rule.
 #include "tests/cli/cli_support.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,17 +22,9 @@ Result run(const std::string& args) { return spifit::test::run_spifit(args); }
 
 std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("spifit_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return spifit::test::fresh_temp_path(name); }
 
-std::string write_temp(const std::string& name, const std::string& text) {
-  const fs::path p = fs::temp_directory_path() / ("spifit_cli_" + std::to_string(::getpid()) + "_" + name);
-  std::ofstream(p) << text;
-  return p.string();
-}
+std::string write_temp(const std::string& name, const std::string& text) { return spifit::test::write_temp_file(name, text).string(); }
 
 int count_lines(const std::string& s) {
   int n = 0;
@@ -124,13 +117,7 @@ TEST(Cli, RunTensileWritesSummaryAndCurve) {
   const auto own = fresh_dir("own");
   fs::create_directories(own);
   fs::copy_file(src("experiments/aa3003o/scenes/tensile_00.toml"), own / "scene.toml");
-  std::string text;
-  {
-    std::ifstream in(own / "scene.toml");
-    std::stringstream ss;
-    ss << in.rdbuf();
-    text = ss.str();
-  }
+  std::string text = spifit::test::slurp(own / "scene.toml");
   const auto pos = text.find("../../../materials/");
   text.replace(pos, std::string("../../../materials/").size(), src("materials/"));
   std::ofstream(own / "scene.toml") << text;
@@ -238,20 +225,14 @@ TEST(Cli, MaterialExport) {
 // spifit synth: the file says it is synthetic and how it was made; the same seed gives the
 // same numbers, another seed different ones; an existing file is kept without --force.
 TEST(Cli, SynthIsLabelledAndReproducible) {
-  const fs::path a = fs::temp_directory_path() / ("spifit_synth_a_" + std::to_string(::getpid()) + ".csv");
-  const fs::path b = fs::temp_directory_path() / ("spifit_synth_b_" + std::to_string(::getpid()) + ".csv");
-  const fs::path c = fs::temp_directory_path() / ("spifit_synth_c_" + std::to_string(::getpid()) + ".csv");
+  const fs::path a = spifit::test::temp_path("synth_a.csv");
+  const fs::path b = spifit::test::temp_path("synth_b.csv");
+  const fs::path c = spifit::test::temp_path("synth_c.csv");
   const std::string scene = src("experiments/aa3003o/scenes/tensile_00.toml");
   ASSERT_EQ(run("synth " + scene + " --noise 0.5 --seed 7 --every 4 --out " + a.string()).code, 0);
   ASSERT_EQ(run("synth " + scene + " --noise 0.5 --seed 7 --every 4 --out " + b.string()).code, 0);
   ASSERT_EQ(run("synth " + scene + " --noise 0.5 --seed 8 --every 4 --out " + c.string()).code, 0);
-  auto read = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  const std::string ta = read(a), tb = read(b), tc = read(c);
+  const std::string ta = spifit::test::slurp(a), tb = spifit::test::slurp(b), tc = spifit::test::slurp(c);
   EXPECT_EQ(ta.rfind("# SYNTHETIC DATA", 0), 0u);
   EXPECT_NE(ta.find("seed 7"), std::string::npos);
   EXPECT_NE(ta.find("# command: spifit synth"), std::string::npos);
@@ -260,6 +241,6 @@ TEST(Cli, SynthIsLabelledAndReproducible) {
   EXPECT_EQ(body(ta), body(tb));
   EXPECT_NE(body(ta), body(tc));
   EXPECT_EQ(run("synth " + scene + " --out " + a.string()).code, 2);
-  EXPECT_EQ(read(a), ta);
+  EXPECT_EQ(spifit::test::slurp(a), ta);
   for (const auto& p : {a, b, c}) fs::remove(p);
 }

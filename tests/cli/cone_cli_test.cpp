@@ -2,32 +2,30 @@
 // writes its outputs; a bad scene exits 2 with one line naming file and key, before the output
 // directory is touched.
 #include "tests/cli/cli_support.hpp"
+#include "tests/support/temp_files.hpp"
+#include "tests/support/tiny_scenes.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_cone_cli_" + std::to_string(::getpid()) + "_" + name); }
+using spifit::test::temp_path;
 
 fs::path write_scene(const std::string& name, const std::string& body) {
-  const fs::path f = temp(name + ".toml");
+  const fs::path f = temp_path(name + ".toml");
   std::ofstream(f) << "[scene]\nkind = \"cone\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n" << body;
   return f;
 }
 
 TEST(ConeCli, RunDispatchesToTheConeScene) {
-  const fs::path scene = write_scene("tiny",
-                                     "[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = 1\ntop_radius = 20.0\npie_angle = 90.0\n"
-                                     "[sheet]\nthickness = 1.0\nelements_per_45deg = 8\nthickness_points = 3\n"
-                                     "[solver]\ntravel_per_increment = 0.5\n");
-  const fs::path out = temp("tiny_out");
+  const fs::path scene = spifit::test::write_tiny_cone(temp_path("tiny.toml"));
+  const fs::path out = temp_path("tiny_out");
   fs::remove_all(out);
   const auto r = spifit::test::run_spifit("run " + scene.string() + " --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.err;
@@ -44,7 +42,7 @@ TEST(ConeCli, RunDispatchesToTheConeScene) {
 
 TEST(ConeCli, BadPieAngleExitsTwoNamingFileAndKey) {
   const fs::path scene = write_scene("bad", "[cone]\npreset = \"cone70\"\npie_angle = 0.0\n");
-  const fs::path out = temp("bad_out");
+  const fs::path out = temp_path("bad_out");
   fs::remove_all(out);
   const auto r = spifit::test::run_spifit("run " + scene.string() + " --out " + out.string());
   EXPECT_EQ(r.code, 2);

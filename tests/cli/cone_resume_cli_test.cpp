@@ -4,7 +4,10 @@
 // missing directory or checkpoint, and --force, with exit code 2 and one line naming the
 // file or option.
 #include "tests/cli/cli_support.hpp"
-#include "forward/io/text_file.hpp"
+#include "tests/support/csv_rows.hpp"
+#include "tests/support/same_outputs.hpp"
+#include "tests/support/temp_files.hpp"
+#include "tests/support/tiny_scenes.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -12,31 +15,22 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_resume_cli_" + std::to_string(::getpid()) + "_" + name); }
+using spifit::test::temp_path;
 
-// A smaller cousin of the tiny cone of cone_tests (top radius 12 mm, 6 elements per 45 deg: 72
-// elements, about 2.5 s for two contours).
+// The small tiny cone (top radius 12 mm, 6 elements per 45 deg: 72 elements, about 2.5 s for two
+// contours).
 fs::path write_scene(const std::string& name, int contours, const std::string& extra = "") {
-  const fs::path f = temp(name + ".toml");
-  std::ofstream(f) << "[scene]\nkind = \"cone\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
-                   << "[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = " << contours << "\ntop_radius = 12.0\npie_angle = 90.0\n"
-                   << "[sheet]\nthickness = 1.0\nelements_per_45deg = 6\nthickness_points = 3\n[solver]\ntravel_per_increment = 0.5\n"
-                   << extra;
-  return f;
+  return spifit::test::write_tiny_cone(temp_path(name + ".toml"), extra, spifit::test::small_tiny_cone(contours));
 }
-
-std::string slurp(const fs::path& f) { return spifit::io::read_text_file(f.string()); }
 
 TEST(ConeResumeCli, RefusesWhatItCannotResume) {
   const std::string tensile = std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/tensile_00.toml";
-  const fs::path out = temp("refused");
+  const fs::path out = temp_path("refused");
   fs::remove_all(out);
   auto r = spifit::test::run_spifit("run " + tensile + " --out " + out.string() + " --resume");
   EXPECT_EQ(r.code, 2);
@@ -66,22 +60,30 @@ TEST(ConeResumeCli, RefusesWhatItCannotResume) {
 
 TEST(ConeResumeCli, AKilledRunResumesToTheUninterruptedResult) {
   const fs::path scene = write_scene("two", 2);
-  const fs::path ref = temp("ref"), out = temp("killed");
+  const fs::path ref = temp_path("ref"), out = temp_path("killed");
   fs::remove_all(ref);
   fs::remove_all(out);
+  const auto t0 = std::chrono::steady_clock::now();
   auto r = spifit::test::run_spifit("-q run " + scene.string() + " --out " + ref.string());
+  const auto ref_time = std::chrono::steady_clock::now() - t0;
   ASSERT_EQ(r.code, 0) << r.err;
+  const auto ref_rows = spifit::test::read_csv_rows(ref / "force.csv").size();
 
-  // Start the same run and kill it (SIGKILL) a little after its first checkpoint appears.
+  // Start the same run and kill it (SIGKILL) after its first checkpoint (the end of contour 1,
+  // about half way) appears, a fifth of the whole run's time later: into contour 2, whatever
+  // the machine's speed (the run would have to go 2.5 times faster than the reference run to
+  // finish first).
   const fs::path state = out / "checkpoint" / "state.bin";
-  const bool killed = spifit::test::run_and_kill(scene, out, state, std::chrono::milliseconds(700));  // into contour 2
+  const auto delay = std::chrono::duration_cast<std::chrono::milliseconds>(ref_time / 5);
+  const bool killed = spifit::test::run_and_kill(scene, out, state, delay);
   ASSERT_TRUE(fs::exists(state)) << "no checkpoint appeared";
-  std::printf("run %s; force.csv then had %zu bytes (uninterrupted: %zu)\n", killed ? "killed by SIGKILL" : "finished before the kill",
-              slurp(out / "force.csv").size(), slurp(ref / "force.csv").size());
-  if (killed) {
-    const auto s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
-    EXPECT_EQ(s["status"], "running");
-  }
+  const auto partial_rows = spifit::test::read_csv_rows(out / "force.csv").size();
+  std::printf("run of %.2f s %s %lld ms after its first checkpoint; force.csv then had %zu rows (uninterrupted: %zu)\n",
+              std::chrono::duration<double>(ref_time).count(), killed ? "killed by SIGKILL" : "finished before the kill",
+              static_cast<long long>(delay.count()), partial_rows, ref_rows);
+  ASSERT_TRUE(killed) << "the run finished before the kill: nothing was resumed";
+  EXPECT_LT(partial_rows, ref_rows);
+  EXPECT_EQ(spifit::test::read_summary(out)["status"], "running");
 
   // An existing directory is not replaced without --force or --resume.
   r = spifit::test::run_spifit("run " + scene.string() + " --out " + out.string());

@@ -1,6 +1,7 @@
 // spifit run on the FE forming scenes: the bundled §7.1 indent, and input errors (G-code,
 // paths) that exit 2 with one line naming the file, before the output directory is touched.
 #include "tests/cli/cli_support.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -11,7 +12,6 @@
 #include <fstream>
 #include <sstream>
 #include <sys/wait.h>
-#include <unistd.h>
 
 namespace fs = std::filesystem;
 
@@ -20,10 +20,10 @@ namespace {
 using Result = spifit::test::CliResult;
 Result run(const std::string& args) { return spifit::test::run_spifit(args); }
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_forming_cli_" + std::to_string(::getpid()) + "_" + name); }
+using spifit::test::temp_path;
 
 TEST(FormingCli, IndentWritesForceSummaryAndVtu) {
-  const fs::path out = temp("indent");
+  const fs::path out = temp_path("indent");
   fs::remove_all(out);
   const Result r = run("run " + std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent.toml --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.err;
@@ -40,12 +40,12 @@ TEST(FormingCli, IndentWritesForceSummaryAndVtu) {
 }
 
 TEST(FormingCli, MalformedGcodeExitsTwoNamingFileAndLine) {
-  const fs::path nc = temp("bad.nc");
+  const fs::path nc = temp_path("bad.nc");
   std::ofstream(nc) << "G21 G90\nG00 X0 Y0 Z0\nG41 X1\n";
-  const fs::path scene = temp("bad.toml");
+  const fs::path scene = temp_path("bad.toml");
   std::ofstream(scene) << "[scene]\nkind = \"indent\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
                        << "[tool]\ngcode = \"" << nc.string() << "\"\n";
-  const fs::path out = temp("bad_out");
+  const fs::path out = temp_path("bad_out");
   fs::remove_all(out);
   const Result r = run("run " + scene.string() + " --out " + out.string());
   EXPECT_EQ(r.code, 2);

@@ -2,6 +2,7 @@
 // means on the surface, shifted by T/2), summary.json and a plot; malformed clouds and options
 // exit with 2 and one line naming file, line (or option) and value, before --out is touched.
 #include "tests/cli/cli_support.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
 
@@ -17,15 +18,13 @@ namespace fs = std::filesystem;
 namespace spifit::test {
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_scan_cli_" + std::to_string(::getpid()) + "_" + name); }
-
 double cone50_z(double r) {  // outer surface: flat bottom below r = 20, 50 deg wall to r = 40, flange
   const double t = std::tan(50.0 * std::numbers::pi / 180.0);
   return r < 20.0 ? -20.0 * t : (r < 40.0 ? -(40.0 - r) * t : 0.0);
 }
 
 TEST(ScanCli, WritesTheSectionSummaryAndPlot) {
-  const fs::path cloud = temp("cloud.csv"), out = temp("out");
+  const fs::path cloud = temp_path("cloud.csv"), out = temp_path("out");
   {
     std::ofstream f(cloud);
     f << "# synthetic scan: 50 deg cone, noise 0.02 mm, seed 7\nx [mm],y [mm],z [mm]\n";
@@ -66,18 +65,16 @@ TEST(ScanCli, WritesTheSectionSummaryAndPlot) {
     ++rows;
   }
   EXPECT_EQ(rows, 45);
-  std::ifstream sj(out / "summary.json");
-  std::stringstream js;
-  js << sj.rdbuf();
-  EXPECT_NE(js.str().find("\"status\": \"ok\""), std::string::npos);
-  EXPECT_NE(js.str().find("\"shift\": \"vertical\""), std::string::npos);
+  const std::string js = slurp(out / "summary.json");
+  EXPECT_NE(js.find("\"status\": \"ok\""), std::string::npos);
+  EXPECT_NE(js.find("\"shift\": \"vertical\""), std::string::npos);
   EXPECT_TRUE(fs::exists(out / "plots" / "section.svg") || r.err.find("gnuplot") != std::string::npos) << r.err;
   fs::remove_all(out);
   fs::remove(cloud);
 }
 
 TEST(ScanCli, ErrorsNameFileLineAndValue) {
-  const fs::path cloud = temp("bad.csv"), out = temp("bad_out");
+  const fs::path cloud = temp_path("bad.csv"), out = temp_path("bad_out");
   std::ofstream(cloud) << "x,y,z\n1,2,3\n1,2,three\n";
   fs::remove_all(out);
   CliResult r = run_spifit("scan " + cloud.string() + " --out " + out.string());

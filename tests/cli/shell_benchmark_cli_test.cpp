@@ -1,6 +1,7 @@
 // spifit run on the bundled shell benchmarks (experiments/benchmarks): every summary within
 // 2 % of its reference; bad settings exit 2 with one line; a failed run keeps its outputs.
 #include "tests/cli/cli_support.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -20,17 +21,9 @@ namespace {
 using Result = spifit::test::CliResult;
 Result run(const std::string& args) { return spifit::test::run_spifit(args); }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("spifit_shell_cli_" + name + "_" + std::to_string(::getpid()));
-  fs::remove_all(d);
-  return d;
-}
+fs::path fresh_dir(const std::string& name) { return spifit::test::fresh_temp_path(name); }
 
-std::string write_temp(const std::string& name, const std::string& text) {
-  const fs::path p = fs::temp_directory_path() / ("spifit_shell_cli_" + std::to_string(::getpid()) + "_" + name);
-  std::ofstream(p) << text;
-  return p.string();
-}
+std::string write_temp(const std::string& name, const std::string& text) { return spifit::test::write_temp_file(name, text).string(); }
 
 nlohmann::json summary(const fs::path& dir) { return nlohmann::json::parse(std::ifstream(dir / "summary.json")); }
 

@@ -4,9 +4,9 @@
 // the section by T/2 vertically or along the normal; malformed files name file, line and value.
 #include "forward/io/input_error.hpp"
 #include "inverse/scan_section.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -177,10 +177,10 @@ TEST(ScanSection, AngleBinsFollowAVerticalWall) {
   EXPECT_NEAR(shifted.bins[20].mean.x() - s.bins[20].mean.x(), -0.5, 2e-3);
 }
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_scan_" + std::to_string(::getpid()) + "_" + name); }
+using test::temp_path;
 
 TEST(ScanSection, MalformedCloudsNameFileLineAndValue) {
-  const fs::path f = temp("bad.csv");
+  const fs::path f = temp_path("bad.csv");
   std::ofstream(f) << "# scan\nx [mm],y [mm],z [mm]\n1,2,3\n4,abc,6\n";
   try {
     read_scan_cloud(f.string());

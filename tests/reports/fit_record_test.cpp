@@ -1,6 +1,7 @@
 // FitRecord, the fit.json schema shared by `spifit fit` (writer) and the reports (reader): a
 // bundled fit's fit.json reads back and writes out byte for byte, optional and null values
 // survive, and a broken fit.json names the file and the key path.
+#include "tests/support/temp_files.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
 #include "inverse/run_fit.hpp"
@@ -24,12 +25,7 @@ using inverse::FitRecord;
 
 namespace {
 
-std::string read(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+using spifit::test::slurp;
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
@@ -45,7 +41,7 @@ class FitRecordTest : public ::testing::Test {
     const auto result = inverse::run_fit(problem, {"", 2});
     ASSERT_TRUE(result.usable) << result.termination;
     inverse::write_fit_outputs(problem, result, io::OutputDirectory::prepare(dir_.string(), false));
-    text_ = read(dir_ / "fit.json");
+    text_ = slurp(dir_ / "fit.json");
   }
   static void TearDownTestSuite() {
     std::error_code ec;

@@ -1,6 +1,7 @@
 // The fit report: a real fit (fit_classic) is run once, written like `spifit fit --out DIR`
 // does, and rendered; the report must show what fit.json says, the HTML must be well formed,
 // plots must exist when gnuplot is there, and a broken gnuplot or fit.json is handled.
+#include "tests/support/temp_files.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
 #include "inverse/run_fit.hpp"
@@ -28,12 +29,7 @@ using namespace spifit;
 
 namespace {
 
-std::string read(const fs::path& p) {
-  std::ifstream f(p, std::ios::binary);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+using spifit::test::slurp;
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
@@ -130,8 +126,8 @@ TEST_F(FitReportTest, MarkdownShowsTheNumbersOfFitJson) {
   EXPECT_TRUE(s.warnings.empty());
   EXPECT_TRUE(s.plots.empty());
   EXPECT_FALSE(fs::exists(d / "plots"));
-  const std::string md = read(d / "report.md");
-  const json j = json::parse(read(d / "fit.json"));
+  const std::string md = slurp(d / "report.md");
+  const json j = json::parse(slurp(d / "fit.json"));
 
   EXPECT_NE(md.find("# Fit report: fit_classic"), std::string::npos);
   EXPECT_NE(md.find(j["fit_file"].get<std::string>()), std::string::npos);
@@ -191,12 +187,12 @@ TEST_F(FitReportTest, MarkdownShowsTheNumbersOfFitJson) {
 TEST_F(FitReportTest, HtmlIsWellFormedWithTheTables) {
   const fs::path d = copy_of_fit("html");
   reports::render_fit_report(d, {false});
-  const std::string html = read(d / "report.html");
+  const std::string html = slurp(d / "report.html");
   EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
   EXPECT_NE(html.find("<style>"), std::string::npos);
   std::string why;
   EXPECT_TRUE(html_well_formed(html, &why)) << why;
-  const json j = json::parse(read(d / "fit.json"));
+  const json j = json::parse(slurp(d / "fit.json"));
   const std::string experiments = html_table(html, "experiments");
   ASSERT_FALSE(experiments.empty());
   for (const auto& e : j["experiments"]) {
@@ -216,12 +212,12 @@ TEST_F(FitReportTest, PlotsAreSvgFilesReferencedByTheReport) {
   EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
   // 4 curves x (fit + residuals) + scalars + convergence.
   ASSERT_EQ(s.plots.size(), 10u);
-  const std::string md = read(d / "report.md"), html = read(d / "report.html");
+  const std::string md = slurp(d / "report.md"), html = slurp(d / "report.html");
   for (const auto& p : s.plots) {
     ASSERT_TRUE(fs::exists(p)) << p;
     EXPECT_EQ(p.parent_path(), d / "plots");
     EXPECT_EQ(p.extension(), ".svg");
-    const std::string svg = read(p);
+    const std::string svg = slurp(p);
     EXPECT_GT(svg.size(), 1000u) << p;
     EXPECT_NE(svg.find("<svg"), std::string::npos) << p;
     EXPECT_NE(svg.find("</svg>"), std::string::npos) << p;
@@ -233,7 +229,7 @@ TEST_F(FitReportTest, PlotsAreSvgFilesReferencedByTheReport) {
   EXPECT_TRUE(fs::exists(d / "plots" / "convergence.svg"));
   EXPECT_TRUE(fs::exists(d / "plots" / "04_tensile_00_fit.svg"));
   EXPECT_TRUE(fs::exists(d / "plots" / "04_tensile_00_residuals.svg"));
-  EXPECT_NE(read(d / "plots" / "04_tensile_00_fit.svg").find("measured"), std::string::npos);
+  EXPECT_NE(slurp(d / "plots" / "04_tensile_00_fit.svg").find("measured"), std::string::npos);
   std::string why;
   EXPECT_TRUE(html_well_formed(html, &why)) << why;
 }
@@ -248,7 +244,7 @@ TEST_F(FitReportTest, WithoutGnuplotTheReportIsStillWritten) {
   EXPECT_TRUE(s.plots.empty());
   EXPECT_TRUE(fs::exists(d / "report.md"));
   EXPECT_TRUE(fs::exists(d / "report.html"));
-  EXPECT_EQ(read(d / "report.md").find("plots/"), std::string::npos);
+  EXPECT_EQ(slurp(d / "report.md").find("plots/"), std::string::npos);
 }
 
 TEST_F(FitReportTest, FailingGnuplotGivesWarningsNotACrash) {
@@ -305,7 +301,7 @@ TEST_F(FitReportTest, MissingOrCorruptFitJsonIsAnInputErrorNamingIt) {
 
 TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
   const fs::path d = copy_of_fit("conflict");
-  json j = json::parse(read(d / "fit.json"));
+  json j = json::parse(slurp(d / "fit.json"));
   for (auto& e : j["experiments"]) {
     if (e["name"] == "tensile_45") e["rms"] = 4.5;   // residuals 4.5 times the stated noise
     if (e["name"] == "r90") e["rms"] = 6.0;          // 6 sigma off
@@ -315,7 +311,7 @@ TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
   j["parameters"]["swift.eps0"]["identifiable"] = false;
   write(d / "fit.json", j.dump(2));
   const auto s = reports::render_fit_report(d, {false});
-  const std::string md = read(d / "report.md");
+  const std::string md = slurp(d / "report.md");
 
   auto finding = [&](const std::string& a, const std::string& b) {
     for (const auto& f : s.findings) {
@@ -337,26 +333,26 @@ TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
   EXPECT_NE(md_row(md, "tensile_45").at(10).find("CONFLICT"), std::string::npos);
   EXPECT_EQ(md_row(md, "swift.eps0").at(7), "**NO**");
   EXPECT_NE(md_row(md, "hill.N").at(8).find("AT upper BOUND"), std::string::npos);
-  const std::string html = read(d / "report.html");
+  const std::string html = slurp(d / "report.html");
   EXPECT_NE(html.find("<div class=\"callout warn\">"), std::string::npos);
   EXPECT_NE(html.find("<td class=\"bad\">CONFLICT"), std::string::npos);
 }
 
 TEST_F(FitReportTest, BoundWarningOfFitJsonIsNotRepeated) {
   const fs::path d = copy_of_fit("bound");
-  json j = json::parse(read(d / "fit.json"));
+  json j = json::parse(slurp(d / "fit.json"));
   j["parameters"]["hill.N"]["value"] = j["parameters"]["hill.N"]["lower"];
   j["warnings"] = json::array({"hill.N ended at its bound (1): the data push it further"});
   write(d / "fit.json", j.dump(2));
   const auto s = reports::render_fit_report(d, {false});
   ASSERT_EQ(s.findings.size(), 1u);
   EXPECT_EQ(s.findings[0], "hill.N ended at its bound (1): the data push it further");
-  EXPECT_NE(md_row(read(d / "report.md"), "hill.N").at(8).find("AT lower BOUND"), std::string::npos);
+  EXPECT_NE(md_row(slurp(d / "report.md"), "hill.N").at(8).find("AT lower BOUND"), std::string::npos);
 }
 
 TEST_F(FitReportTest, MultiStartSectionAndSpreadNote) {
   const fs::path d = copy_of_fit("multistart");
-  json j = json::parse(read(d / "fit.json"));
+  json j = json::parse(slurp(d / "fit.json"));
   const double k = j["parameters"]["swift.K"]["value"];
   j["multistart"] = {{"starts", 3}, {"best_start", 1}, {"starts_at_best_cost", 2},
                      {"spread_at_best_cost", {{"swift.K", {{"min", k - 5.0}, {"max", k}}}}},
@@ -365,7 +361,7 @@ TEST_F(FitReportTest, MultiStartSectionAndSpreadNote) {
                                                 {{"usable", false}, {"cost", nullptr}, {"values", json::array()}}})}};
   write(d / "fit.json", j.dump(2));
   const auto s = reports::render_fit_report(d, {false});
-  const std::string md = read(d / "report.md");
+  const std::string md = slurp(d / "report.md");
   EXPECT_NE(md.find("### Multi-start"), std::string::npos);
   EXPECT_NE(md.find("| 1 (best) | yes | 87 |"), std::string::npos) << md;
   EXPECT_NE(md.find("give swift.K from"), std::string::npos);
@@ -382,7 +378,7 @@ TEST(FitReportConflict, RealConflictOnHillN) {
   ASSERT_TRUE(result.usable) << result.termination;
   inverse::write_fit_outputs(problem, result, io::OutputDirectory::prepare(dir.string(), false));
   const auto s = reports::render_fit_report(dir, {false});
-  const std::string md = read(dir / "report.md"), html = read(dir / "report.html");
+  const std::string md = slurp(dir / "report.md"), html = slurp(dir / "report.html");
   fs::remove_all(dir);
 
   bool named = false, r45 = false;
@@ -408,7 +404,7 @@ TEST_F(FitReportTest, HostileExperimentNamesAreEscapedEverywhere) {
   const fs::path d = copy_of_fit("hostile");
   const std::string marker = (root_ / "pwned").string();
   const std::string name = "a'b\"<i>|`$(touch " + marker + ")`'; system('touch " + marker + "')";
-  json j = json::parse(read(d / "fit.json"));
+  json j = json::parse(slurp(d / "fit.json"));
   for (auto& e : j["experiments"]) {
     if (e["name"] == "tensile_00") {
       e["name"] = name;
@@ -424,12 +420,12 @@ TEST_F(FitReportTest, HostileExperimentNamesAreEscapedEverywhere) {
   for (const auto& p : s.plots) {
     for (char c : p.filename().string()) EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.') << p;
   }
-  const std::string html = read(d / "report.html");
+  const std::string html = slurp(d / "report.html");
   EXPECT_EQ(html.find("<i>"), std::string::npos);
   EXPECT_NE(html.find("a&#39;b&quot;&lt;i&gt;|"), std::string::npos);
   std::string why;
   EXPECT_TRUE(html_well_formed(html, &why)) << why;
-  EXPECT_NE(read(d / "report.md").find("| a'b\"&lt;i>\\|\\`$(touch " + marker + ")\\`'; system('touch " + marker + "') |"), std::string::npos);
+  EXPECT_NE(slurp(d / "report.md").find("| a'b\"&lt;i>\\|\\`$(touch " + marker + ")\\`'; system('touch " + marker + "') |"), std::string::npos);
   // A data_file pointing outside DIR is not read.
   j["experiments"][3]["data_file"] = "../../etc/passwd";
   write(d / "fit.json", j.dump(2));

@@ -1,4 +1,5 @@
 // VTU/PVD output: structure, sizes, round-trip of the numbers, and size errors.
+#include "tests/support/temp_files.hpp"
 #include "forward/mesh/vtu_writer.hpp"
 #include "forward/mesh/square_sheet.hpp"
 
@@ -46,11 +47,9 @@ TEST(Vtu, CollectionListsEveryStep) {
   const auto m = mesh::square_sheet({1.0, 1.0, 2, 2, false, 1.0, 1.0});
   mesh::PvdCollection pvd(dir, "indent");
   for (int s = 0; s < 3; ++s) pvd.write_step(0.5 * s, m, {});
-  std::ifstream in(dir / "indent.pvd");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  EXPECT_EQ(count(ss.str(), "<DataSet"), 3);
-  EXPECT_NE(ss.str().find("timestep=\"1\" part=\"0\" file=\"indent_000002.vtu\""), std::string::npos);
+  const std::string pvd_text = test::slurp(dir / "indent.pvd");
+  EXPECT_EQ(count(pvd_text, "<DataSet"), 3);
+  EXPECT_NE(pvd_text.find("timestep=\"1\" part=\"0\" file=\"indent_000002.vtu\""), std::string::npos);
   EXPECT_TRUE(fs::exists(dir / "indent_000000.vtu"));
   fs::remove_all(dir);
 }

@@ -6,52 +6,36 @@
 // missing, truncated or corrupted one, is refused with an InputError naming the checkpoint
 // file, before any output is touched.
 #include "forward/io/input_error.hpp"
-#include "forward/io/text_file.hpp"
 #include "forward/scenes/common/run_checkpoint.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/cone/cone_run.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
 #include "tests/support/csv_rows.hpp"
+#include "tests/support/same_outputs.hpp"
+#include "tests/support/temp_files.hpp"
+#include "tests/support/tiny_scenes.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <set>
-#include <sstream>
 
 namespace fs = std::filesystem;
 
 namespace spifit::scene {
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_ckpt_" + std::to_string(::getpid()) + "_" + name); }
+using test::slurp;
+using test::temp_path;
 
-// Two contours of the tiny cone of cone_scene_test (45 deg, top radius 20 mm, 90 deg pie).
-std::string tiny_scene(int contours, const std::string& extra = "") {
-  return "[scene]\nkind = \"cone\"\nmaterial = \"" + std::string(SPIFIT_SOURCE_DIR) + "/materials/aa3003o_c3c4.toml\"\n" +
-         "[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = " + std::to_string(contours) + "\ntop_radius = 20.0\npie_angle = 90.0\n" +
-         "[sheet]\nthickness = 1.0\nelements_per_45deg = 8\nthickness_points = 3\n[solver]\ntravel_per_increment = 0.5\n" + extra;
+// Two contours of the tiny cone (45 deg, top radius 20 mm, 90 deg pie).
+fs::path write_tiny(const std::string& name, int contours, const std::string& extra = "") {
+  return test::write_tiny_cone(temp_path(name), extra, {.contours = contours});
 }
 
-fs::path write(const std::string& name, const std::string& text) {
-  const fs::path f = temp(name);
-  std::ofstream(f) << text;
-  return f;
-}
-
-std::string slurp(const fs::path& f) { return spifit::io::read_text_file(f.string()); }
-
-int data_rows(const fs::path& csv) {
-  std::ifstream in(csv);
-  int n = -1;  // the header
-  for (std::string line; std::getline(in, line);)
-    if (!line.empty() && line[0] != '#') ++n;
-  return n;
-}
+int data_rows(const fs::path& csv) { return static_cast<int>(test::read_csv_rows(csv).size()); }
 
 ConeResult run(const ConeScene& scene, const fs::path& dir, RunControl o = {}) {
   if (!o.resume) fs::remove_all(dir);
@@ -61,24 +45,13 @@ ConeResult run(const ConeScene& scene, const fs::path& dir, RunControl o = {}) {
 
 // Everything but wall times and the checkpoint bookkeeping must be identical.
 void expect_same_outputs(const fs::path& ref, const ConeResult& ref_report, const fs::path& dir, const ConeResult& report) {
-  for (const char* f : {"force.csv", "energies.csv", "contours.csv", "sections.csv", "stages.csv", "history.csv", "vtu/sheet.pvd"}) {
-    EXPECT_EQ(fs::exists(dir / f), fs::exists(ref / f)) << f;
-    EXPECT_EQ(slurp(dir / f), slurp(ref / f)) << f << " differs";
-  }
-  std::set<std::string> names;
-  for (const auto& e : fs::directory_iterator(ref / "sections")) names.insert(e.path().filename().string());
-  for (const auto& e : fs::directory_iterator(ref / "vtu")) names.insert("../vtu/" + e.path().filename().string());
-  std::set<std::string> other;
-  for (const auto& e : fs::directory_iterator(dir / "sections")) other.insert(e.path().filename().string());
-  for (const auto& e : fs::directory_iterator(dir / "vtu")) other.insert("../vtu/" + e.path().filename().string());
-  EXPECT_EQ(other, names);
-  for (const auto& n : names) EXPECT_EQ(slurp(dir / "sections" / n), slurp(ref / "sections" / n)) << n << " differs";
+  test::expect_same_outputs(ref, dir, {"force.csv", "energies.csv", "contours.csv", "sections.csv", "stages.csv", "history.csv", "vtu/sheet.pvd"},
+                            {"sections", "vtu"});
   const auto a = ref_report.to_json();
   const auto b = report.to_json();
-  for (const char* k : {"status", "increments", "newton_iterations", "cutbacks", "factorisations", "factorisations_by_solver",
-                        "travel_reached", "contours_completed", "peak_force", "peak_polar_force", "final_force", "final_polar_force",
-                        "max_penetration", "max_surface_penetration", "model", "path", "warnings", "observables", "stabilised"})
-    EXPECT_EQ(b[k], a[k]) << k;
+  test::expect_same_keys(a, b, {"status", "increments", "newton_iterations", "cutbacks", "factorisations", "factorisations_by_solver",
+                                "travel_reached", "contours_completed", "peak_force", "peak_polar_force", "final_force", "final_polar_force",
+                                "max_penetration", "max_surface_penetration", "model", "path", "warnings", "observables", "stabilised"});
   EXPECT_EQ(b["contour_wall_seconds"].size(), a["contour_wall_seconds"].size());
 }
 
@@ -96,11 +69,11 @@ int increments_to_first_contour(const ConeScene& scene, const fs::path& ref) {
 
 TEST(ConeCheckpoint, ResumedAfterAContourOrAKillTheRunEndsAsAnUninterruptedOne) {
   // With an element history (history.csv: one row per increment, kept in memory).
-  const fs::path file = write("two.toml", tiny_scene(2, "[output]\nhistory_element = { r = 18.0, theta = 45.0 }\n"));
+  const fs::path file = write_tiny("two.toml", 2, "[output]\nhistory_element = { r = 18.0, theta = 45.0 }\n");
   const ConeScene scene = read_cone_scene(file.string());
   ASSERT_EQ(scene.checkpoint_every, 1);
 
-  const fs::path ref = temp("ref");
+  const fs::path ref = temp_path("ref");
   const ConeResult r0 = run(scene, ref);
   ASSERT_TRUE(r0.ok()) << r0.to_json().dump();
   ASSERT_EQ(r0.to_json()["contours_completed"].get<int>(), 2);
@@ -114,7 +87,7 @@ TEST(ConeCheckpoint, ResumedAfterAContourOrAKillTheRunEndsAsAnUninterruptedOne) 
 
   // Stopped right after the checkpoint of contour 1 (a copy of the directory is kept for the
   // kill below), then resumed.
-  const fs::path a = temp("stop_resume"), b = temp("kill_resume");
+  const fs::path a = temp_path("stop_resume"), b = temp_path("kill_resume");
   RunControl stop;
   stop.stop_after_marks = 1;
   const ConeResult s1 = run(scene, a, stop);
@@ -167,9 +140,9 @@ void expect_refused(const ConeScene& scene, const fs::path& dir, const std::stri
 }
 
 TEST(ConeCheckpoint, AnotherSceneOrADamagedCheckpointIsRefused) {
-  const fs::path file = write("one.toml", tiny_scene(1));
+  const fs::path file = write_tiny("one.toml", 1);
   const ConeScene scene = read_cone_scene(file.string());
-  const fs::path dir = temp("refuse");
+  const fs::path dir = temp_path("refuse");
   RunControl stop;
   stop.stop_after_marks = 1;
   ASSERT_EQ(run(scene, dir, stop).status, RunStatus::stopped);
@@ -178,7 +151,7 @@ TEST(ConeCheckpoint, AnotherSceneOrADamagedCheckpointIsRefused) {
   ASSERT_GT(good.size(), 1000u);
 
   // Another scene (one key differs; the same mesh, so only the contents tell).
-  const fs::path other = write("other.toml", tiny_scene(1, "[contact]\npenalty = 1200.0\n"));
+  const fs::path other = write_tiny("other.toml", 1, "[contact]\npenalty = 1200.0\n");
   expect_refused(read_cone_scene(other.string()), dir, "written with another scene: the contents of " + other.string());
   // Truncated, corrupted, missing.
   std::ofstream(state, std::ios::binary | std::ios::trunc) << good.substr(0, good.size() / 2);
@@ -202,9 +175,9 @@ TEST(ConeCheckpoint, AnotherSceneOrADamagedCheckpointIsRefused) {
 }
 
 TEST(ConeCheckpoint, CheckpointEveryIsReadAndChecked) {
-  const fs::path f0 = write("every0.toml", tiny_scene(1, "[output]\ncheckpoint_every = 0\n"));
+  const fs::path f0 = write_tiny("every0.toml", 1, "[output]\ncheckpoint_every = 0\n");
   EXPECT_EQ(read_cone_scene(f0.string()).checkpoint_every, 0);
-  const fs::path bad = write("every_bad.toml", tiny_scene(1, "[output]\ncheckpoint_every = -1\n"));
+  const fs::path bad = write_tiny("every_bad.toml", 1, "[output]\ncheckpoint_every = -1\n");
   try {
     read_cone_scene(bad.string());
     ADD_FAILURE() << "checkpoint_every = -1 accepted";

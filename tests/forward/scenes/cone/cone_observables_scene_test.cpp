@@ -5,9 +5,10 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/cone/cone_run.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
+#include "tests/support/temp_files.hpp"
+#include "tests/support/tiny_scenes.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -21,7 +22,7 @@ namespace fs = std::filesystem;
 namespace spifit::scene {
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_cone_obs_" + std::to_string(::getpid()) + "_" + name); }
+using test::temp_path;
 
 struct Csv {
   std::vector<std::string> header;
@@ -56,16 +57,11 @@ Csv read_csv(const fs::path& file) {
 }
 
 TEST(ConeObservables, SectionsStagesAndElementHistoryOfOneContour) {
-  const fs::path file = temp("tiny.toml");
-  std::ofstream(file) << "[scene]\nkind = \"cone\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
-                      << "[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = 1\ntop_radius = 20.0\npie_angle = 90.0\n"
-                         "[sheet]\nthickness = 1.0\nelements_per_45deg = 8\nthickness_points = 3\n"
-                         "[solver]\ntravel_per_increment = 0.5\n"
-                         "[output]\nhistory_element = { r = 18.0, theta = 45.0 }\n";
+  const fs::path file = test::write_tiny_cone(temp_path("tiny.toml"), "[output]\nhistory_element = { r = 18.0, theta = 45.0 }\n");
   const ConeScene scene = read_cone_scene(file.string());
   ASSERT_TRUE(scene.history_element.has_value());
   EXPECT_DOUBLE_EQ(scene.history_element->r, 18.0);
-  const fs::path dir = temp("out");
+  const fs::path dir = temp_path("out");
   fs::remove_all(dir);
   const auto out = io::OutputDirectory::prepare(dir.string(), true);
   const ConeResult r = run_cone_scene(scene, RunFiles(out));
@@ -137,7 +133,7 @@ TEST(ConeObservables, SectionsStagesAndElementHistoryOfOneContour) {
 }
 
 TEST(ConeObservables, HistoryElementErrorsNameFileKeyAndValue) {
-  const fs::path file = temp("bad.toml");
+  const fs::path file = temp_path("bad.toml");
   std::ofstream(file) << "[scene]\nkind = \"cone\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
                       << "[cone]\npreset = \"cone70\"\n[sheet]\nelements_per_45deg = 8\n"
                          "[output]\nhistory_element = { r = 75.55, theta = 50.0 }\n";

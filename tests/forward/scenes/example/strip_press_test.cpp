@@ -5,9 +5,9 @@
 
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/sweep.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
@@ -18,14 +18,14 @@ using namespace spifit;
 
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_example_" + std::to_string(::getpid()) + "_" + name); }
+using test::temp_path;
 
 void register_once() {
   if (!scene::find_scene_kind("strip_press")) scene::register_scene_kind(example::strip_press_kind());
 }
 
 fs::path write_scene(const std::string& extra = "") {
-  const fs::path f = temp("strip.toml");
+  const fs::path f = temp_path("strip.toml");
   std::ofstream(f) << "[scene]\nkind = \"strip_press\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
                    << "[strip]\nlength = 40.0\nelements = 20\n[tool]\ndepth = 1.5\n" << extra;
   return f;
@@ -53,7 +53,7 @@ TEST(ExampleKind, RunsThroughTheRegistryAndItsObservableReadsTheResult) {
 
 TEST(ExampleKind, ASweepVariesItsNamedInputs) {
   register_once();
-  const fs::path scene = write_scene("[solver]\ntravel_per_increment = 0.25\n"), sweep = temp("sweep.toml");
+  const fs::path scene = write_scene("[solver]\ntravel_per_increment = 0.25\n"), sweep = temp_path("sweep.toml");
   std::ofstream(sweep) << "[sweep]\nscene = \"" << scene.string() << "\"\nmetrics = [\"mid_deflection\", \"peak_fz\"]\n"
                        << "[inputs.\"tool.depth\"]\nvalues = [0.5, 1.0]\n";
   const auto spec = inverse::read_sweep_file(sweep.string());

@@ -4,12 +4,12 @@
 // uninterrupted run, byte for byte, with the same counts.
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
-#include "forward/io/text_file.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
+#include "tests/support/same_outputs.hpp"
+#include "tests/support/temp_files.hpp"
 #include "tests/support/tiny_scenes.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <filesystem>
 
@@ -18,9 +18,8 @@ namespace fs = std::filesystem;
 namespace spifit::scene {
 namespace {
 
-fs::path temp(const std::string& name) { return fs::temp_directory_path() / ("spifit_forming_resume_" + std::to_string(::getpid()) + "_" + name); }
-
-std::string slurp(const fs::path& f) { return fs::exists(f) ? io::read_text_file(f.string()) : std::string("(missing)"); }
+using test::slurp;
+using test::temp_path;
 
 FormingResult run(const FormingScene& s, const fs::path& dir, RunControl c = {}) {
   if (!c.resume) fs::remove_all(dir);
@@ -29,11 +28,9 @@ FormingResult run(const FormingScene& s, const fs::path& dir, RunControl c = {})
 }
 
 void expect_same(const fs::path& ref, const FormingResult& a, const fs::path& dir, const FormingResult& b) {
-  std::vector<std::string> files{"force.csv", "energies.csv", "vtu/sheet.pvd"};
-  for (const auto& e : fs::directory_iterator(ref / "vtu")) files.push_back("vtu/" + e.path().filename().string());
-  if (fs::exists(ref / "sections"))
-    for (const auto& e : fs::directory_iterator(ref / "sections")) files.push_back("sections/" + e.path().filename().string());
-  for (const auto& f : files) EXPECT_EQ(slurp(dir / f), slurp(ref / f)) << f << " differs";
+  std::vector<std::string> dirs{"vtu"};
+  if (fs::exists(ref / "sections")) dirs.push_back("sections");
+  test::expect_same_outputs(ref, dir, {"force.csv", "energies.csv", "vtu/sheet.pvd"}, dirs);
   EXPECT_EQ(b.run.counters.increments, a.run.counters.increments);
   EXPECT_EQ(b.run.counters.iterations, a.run.counters.iterations);
   EXPECT_EQ(b.run.counters.cutbacks, a.run.counters.cutbacks);
@@ -44,7 +41,7 @@ void expect_same(const fs::path& ref, const FormingResult& a, const fs::path& di
 
 // Stopped (as a kill would) by `stop`, then resumed from the last checkpoint.
 void stop_and_resume(const FormingScene& s, const std::string& name, RunControl stop) {
-  const fs::path ref = temp(name + "_ref"), dir = temp(name);
+  const fs::path ref = temp_path(name + "_ref"), dir = temp_path(name);
   const FormingResult a = run(s, ref);
   ASSERT_TRUE(a.ok()) << a.message;
   const FormingResult stopped = run(s, dir, stop);
@@ -71,7 +68,7 @@ TEST(FormingResume, IndentLineStoppedMidwayResumesBitForBit) {
 }
 
 TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
-  const fs::path file = test::write_tiny_line(temp("line.toml"), "checkpoint_increments = 10\n");
+  const fs::path file = test::write_tiny_line(temp_path("line.toml"), "checkpoint_increments = 10\n");
   const FormingScene s = read_forming_scene(file.string());
   RunControl at_c;
   at_c.stop_after_marks = 2;  // B and C reached: the section at C is written before the stop
@@ -83,13 +80,13 @@ TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
 }
 
 TEST(FormingResume, AnotherSceneIsRefusedBeforeAnyOutputIsTouched) {
-  const fs::path file = test::write_tiny_line(temp("line_a.toml"), "checkpoint_increments = 10\n");
-  const fs::path dir = temp("refused");
+  const fs::path file = test::write_tiny_line(temp_path("line_a.toml"), "checkpoint_increments = 10\n");
+  const fs::path dir = temp_path("refused");
   RunControl stop;
   stop.stop_after_increments = 15;
   ASSERT_EQ(run(read_forming_scene(file.string()), dir, stop).status, RunStatus::stopped);
   const std::string before = slurp(dir / "force.csv") + slurp(dir / "summary.json");
-  const fs::path other = test::write_tiny_line(temp("line_b.toml"), "checkpoint_increments = 11\n");
+  const fs::path other = test::write_tiny_line(temp_path("line_b.toml"), "checkpoint_increments = 11\n");
   RunControl resume;
   resume.resume = true;
   try {
