@@ -2,6 +2,8 @@
 
 #include "inverse/numeric_cost.hpp"
 
+#include <type_traits>
+
 namespace spifit::inverse {
 namespace {
 
@@ -13,8 +15,8 @@ struct ExperimentFunctor {
   template <typename T>
   bool operator()(T const* const* x, T* r) const {
     runs->fetch_add(1, std::memory_order_relaxed);
-    const auto m = parameters->apply(x[0]);
-    return experiment->residuals(m, r);
+    if constexpr (std::is_same_v<T, double>) return experiment->residuals(parameters->point(x[0]), r);
+    else return experiment->residuals(parameters->apply(x[0]), r);
   }
 };
 

@@ -50,7 +50,7 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
   // Each experiment at the start: a failure there is named instead of ending in a bare
   // "evaluation failed".
   {
-    const auto m0 = ps.apply(x.data());
+    const ParameterPoint m0 = ps.point(x.data());
     for (const auto& e : fp.experiments) {
       std::vector<double> r(e->num_residuals());
       if (!e->residuals(m0, r.data())) {

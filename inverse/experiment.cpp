@@ -32,14 +32,14 @@ class CurveExperiment final : public Experiment {
     }
   }
   int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
-  bool residuals(const material::MaterialParams<double>& m, double* r) const override { return eval(m, r, nullptr); }
+  bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
   bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
   ExperimentCurve axes() const override { return {s_.x, s_.y, s_.x_unit, s_.y_unit, {}, {}, {}}; }
-  ExperimentCurve compare(const material::MaterialParams<double>& m) const override {
+  ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{s_.x, s_.y, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
     std::vector<double> sim(s_.xs.size());
     std::vector<double> r(s_.xs.size());
-    if (eval(m, r.data(), &sim)) c.simulated = sim;
+    if (eval(p.material, r.data(), &sim)) c.simulated = sim;
     return c;
   }
 
@@ -97,13 +97,13 @@ class ScalarExperiment final : public Experiment {
     noise_given_ = s_.noise > 0;
   }
   int num_residuals() const override { return 1; }
-  bool residuals(const material::MaterialParams<double>& m, double* r) const override { return eval(m, r, nullptr); }
+  bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
   bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
   ExperimentCurve axes() const override { return {"", s_.observable, "", "", {}, {}, {}}; }
-  ExperimentCurve compare(const material::MaterialParams<double>& m) const override {
+  ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{"", s_.observable, "", "", {0.0}, {s_.value}, {}};
     double r = 0.0, sim = 0.0;
-    if (eval(m, &r, &sim)) c.simulated = {sim};
+    if (eval(p.material, &r, &sim)) c.simulated = {sim};
     return c;
   }
 

@@ -2,10 +2,11 @@
 // An experiment = a scene + what is measured + how residuals are weighted (docs/identification.md).
 // The identification sees the forward model only through this interface: parameter values
 // in, conditioned residuals out. Material-point experiments evaluate with Jets (exact
-// derivatives); black-box FE experiments (later issues) will report supports_jets() = false
-// and be differentiated by central differences.
+// derivatives); FE experiments (fe_experiment.hpp) report supports_jets() = false and are
+// differentiated by central differences (numeric_cost.hpp).
 #include "forward/material/material_params.hpp"
 #include "forward/scenes/material_point/material_point_file.hpp"
+#include "inverse/parameter_point.hpp"
 
 #include <ceres/jet.h>
 
@@ -34,11 +35,12 @@ class Experiment {
   bool noise_given() const { return noise_given_; }  // scale is a stated measurement noise
   virtual int num_residuals() const = 0;
   // Residuals = sqrt(weights) * (simulated - measured) / scale. False: the forward run failed.
-  virtual bool residuals(const material::MaterialParams<double>& m, double* r) const = 0;
+  virtual bool residuals(const ParameterPoint& p, double* r) const = 0;
+  // With Jets (material parameters only); an experiment without supports_jets() returns false.
   virtual bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const = 0;
   virtual bool supports_jets() const { return true; }
-  // Measured vs simulated at m (for reports); empty simulated values if the run failed.
-  virtual ExperimentCurve compare(const material::MaterialParams<double>& m) const = 0;
+  // Measured vs simulated at p (for reports); empty simulated values if the run failed.
+  virtual ExperimentCurve compare(const ParameterPoint& p) const = 0;
   // Names and units of the compared quantities, without running anything.
   virtual ExperimentCurve axes() const = 0;
 

@@ -2,6 +2,8 @@
 
 #include "forward/io/toml_reader.hpp"
 #include "forward/scenes/material_point/curve_columns.hpp"
+#include "forward/scenes/scene_registry.hpp"
+#include "inverse/fe_experiment_file.hpp"
 #include "inverse/measurement.hpp"
 #include "inverse/nlopt_fit.hpp"
 
@@ -46,11 +48,19 @@ std::pair<double, double> abscissa_range(const scene::MaterialPointSetup& s, con
   return {lo, hi};
 }
 
-ParameterSpec read_parameter(const io::TomlTable& t, const std::string& name, const material::MaterialCard& card) {
+// scene_info: the named input of the FE scenes for a scene-input parameter, else null.
+ParameterSpec read_parameter(const io::TomlTable& t, const std::string& name, double current, const io::InputInfo* scene_info) {
   t.allow_only({"initial", "lower", "upper", "fixed", "log"});
   ParameterSpec p;
   p.name = name;
-  p.initial = t.number("initial", parameter_value(card, name));
+  p.scene_input = scene_info != nullptr;
+  p.initial = t.number("initial", current);
+  if (scene_info) {
+    for (const char* k : {"initial", "lower", "upper"}) {
+      if (!t.has(k)) continue;
+      if (const std::string why = scene_info->check(t.number(k)); !why.empty()) t.fail(k, why);
+    }
+  }
   p.fixed = t.boolean("fixed", false);
   p.log_scale = t.boolean("log", false);
   if (!p.fixed) {
@@ -99,19 +109,52 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   return card;
 }
 
-// [parameters."NAME"]: the parameter set over the card.
-void read_parameters(const io::TomlTable& root, const material::MaterialCard& card, bool normalise, FitProblem& fp) {
+// The named input `name` of every FE scene of the fit (a number a fit may vary), or null when
+// no FE scene has it; fails on `key` when only some have it.
+const io::InputInfo* scene_input(const io::TomlTable& pt, const std::string& name, const std::vector<const scene::Scene*>& fe_scenes) {
+  const io::InputInfo* found = nullptr;
+  for (const scene::Scene* sc : fe_scenes) {
+    const scene::SceneKind* kind = scene::find_scene_kind(sc->kind());
+    const io::InputInfo* info = nullptr;
+    for (const auto& i : kind->inputs)
+      if (i.name == name && i.variable && i.type == io::InputType::real) info = &i;
+    if (!info && found) pt.fail(name, "scene " + sc->file() + " (kind " + sc->kind() + ") has no input a fit can vary by this name");
+    if (info && !found && sc != fe_scenes.front()) pt.fail(name, "scene " + fe_scenes.front()->file() + " has no input a fit can vary by this name");
+    found = info;
+  }
+  return found;
+}
+
+// What a fit may vary, for messages: the card's parameters and the FE scenes' real inputs.
+std::string fittable_names(const std::vector<const scene::Scene*>& fe_scenes) {
+  std::string known;
+  for (const auto& k : known_parameter_names()) known += (known.empty() ? "" : ", ") + k;
+  if (fe_scenes.empty()) return known + "; scene inputs such as contact.friction with an FE scene";
+  for (const auto& i : scene::find_scene_kind(fe_scenes.front()->kind())->inputs)
+    if (i.variable && i.type == io::InputType::real) known += ", " + i.name;
+  return known;
+}
+
+// [parameters."NAME"]: the parameter set over the card and the FE scenes' inputs.
+void read_parameters(const io::TomlTable& root, const material::MaterialCard& card, bool normalise, const std::vector<const scene::Scene*>& fe_scenes,
+                     FitProblem& fp) {
   std::vector<ParameterSpec> specs;
   const auto pt = root.table("parameters");
   if (!pt) root.fail("parameters", "required table [parameters] is missing");
   for (const auto& name : pt->keys()) {
-    if (!is_known_parameter(name)) {
-      std::string known;
-      for (const auto& k : known_parameter_names()) known += (known.empty() ? "" : ", ") + k;
-      pt->fail(name, "unknown parameter (known: " + known + ")");
-    }
+    const io::InputInfo* info = is_known_parameter(name) ? nullptr : scene_input(*pt, name, fe_scenes);
+    if (!is_known_parameter(name) && !info) pt->fail(name, "unknown parameter (known: " + fittable_names(fe_scenes) + ")");
     if (name == "hill.H" && normalise) pt->fail(name, "H = 2 - G while [fit] normalise_hill = true; fit hill.G instead");
-    specs.push_back(read_parameter(*pt->table(name), name, card));
+    const double current = info ? fe_scenes.front()->input(name) : parameter_value(card, name);
+    specs.push_back(read_parameter(*pt->table(name), name, current, info));
+    // Every FE scene runs with the scene input at its start and at either bound.
+    const ParameterSpec& p = specs.back();
+    for (const scene::Scene* sc : info ? fe_scenes : std::vector<const scene::Scene*>{}) {
+      for (const auto& [key, v] : {std::pair<const char*, double>{"initial", p.initial}, {"lower", p.lower}, {"upper", p.upper}}) {
+        if (const std::string why = sc->clone()->set_input(name, v); !why.empty())
+          pt->table(name)->fail(pt->table(name)->has(key) ? key : "initial", "scene " + sc->file() + " cannot run at " + format_number(v) + ": " + why);
+      }
+    }
   }
   fp.parameters = std::make_unique<ParameterSet>(card, specs, normalise);
   if (fp.parameters->num_free() == 0) root.fail("parameters", "no free parameter (every listed parameter is fixed)");
@@ -201,14 +244,32 @@ std::unique_ptr<Experiment> curve_experiment(const io::TomlTable& e, const std::
   return make_curve_experiment(std::move(c));
 }
 
-std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::string& path, const FitProblem& fp) {
-  const bool scalar = e.has("observable");
-  if (scalar) e.allow_only({"name", "scene", "observable", "value", "noise", "weight", "source"});
-  else e.allow_only({"name", "scene", "data", "x", "y", "noise", "weight", "weight_column"});
+std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::string& path, const material::MaterialCard& card, FitProblem& fp,
+                                            std::vector<const scene::Scene*>& fe_scenes) {
   const std::string scene_path = resolve(path, e.string("scene"));
   if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
-  auto sc = scene::read_material_point_scene(scene_path);
-  const std::string name = e.string("name", sc.name);
+  const scene::SceneKind* kind = scene::find_scene_kind(scene::scene_kind_of_file(scene_path));
+  if (!kind) (void)scene::read_scene(scene_path);  // names the unknown kind and the known ones
+  const bool fe = kind->family != "material_point";
+  const bool scalar = e.has("observable");
+  if (fe) e.allow_only(fe_experiment_keys());
+  else if (scalar) e.allow_only({"name", "scene", "observable", "value", "noise", "weight", "source"});
+  else e.allow_only({"name", "scene", "data", "x", "y", "noise", "weight", "weight_column"});
+  std::shared_ptr<const scene::Scene> fe_scene;
+  scene::MaterialPointScene sc;
+  if (fe) {
+    fe_scene = scene::read_scene(scene_path);
+    if (!fe_scene->card()) e.fail("scene", "scene kind " + kind->name + " has a material of its own: a fit cannot set its card");
+  } else {
+    sc = scene::read_material_point_scene(scene_path);
+  }
+  const std::string name = e.string("name", fe ? fe_scene->name() : sc.name);
+  if (fe) {
+    for (const auto& f : fe_scene->input_files()) fp.input_files.push_back(f);
+  } else {
+    fp.input_files.push_back(scene_path);
+  }
+  if (e.has("data")) fp.input_files.push_back(resolve(path, e.string("data")));
   // Names become file names (DIR/experiments/NAME.csv): plain and unique.
   const bool plain = !name.empty() && name[0] != '.' &&
                      std::all_of(name.begin(), name.end(), [](char ch) {
@@ -222,6 +283,11 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   if (noise < 0) e.fail("noise", "must be >= 0 (0: condition by the range of the data)");
   const double weight = e.number("weight", 1.0);
   if (!(weight > 0)) e.fail("weight", "must be > 0");
+  if (fe) {
+    if (!fp.scene_runs) fp.scene_runs = std::make_shared<SceneRuns>(card.params);
+    fe_scenes.push_back(fe_scene.get());
+    return read_fe_experiment(e, path, FeExperimentBase{name, fe_scene, fp.scene_runs, noise, weight});
+  }
   if (scalar) return scalar_experiment(e, name, std::move(sc), noise, weight);
   return curve_experiment(e, path, name, std::move(sc), noise, weight);
 }
@@ -235,11 +301,14 @@ FitProblem read_fit_file(const std::string& path) {
   fp.file = path;
   bool normalise = true;
   const material::MaterialCard card = read_fit_table(root, path, fp, &normalise);
-  read_parameters(root, card, normalise, fp);
-  check_card_at_bounds(path, fp);
+  fp.input_files = {path, card.file};
+  // The experiments first: the FE scenes among them say which scene inputs are parameters.
   const auto exps = root.table_array("experiment");
   if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
-  for (const auto& e : exps) fp.experiments.push_back(read_experiment(e, path, fp));
+  std::vector<const scene::Scene*> fe_scenes;
+  for (const auto& e : exps) fp.experiments.push_back(read_experiment(e, path, card, fp, fe_scenes));
+  read_parameters(root, card, normalise, fe_scenes, fp);
+  check_card_at_bounds(path, fp);
   return fp;
 }
 

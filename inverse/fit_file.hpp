@@ -3,6 +3,7 @@
 // fixed parameters with bounds, the experiments and the optimiser settings.
 #include "inverse/experiment.hpp"
 #include "inverse/parameters.hpp"
+#include "inverse/scene_runs.hpp"
 
 #include <memory>
 #include <string>
@@ -26,6 +27,12 @@ struct FitProblem {
   bool per_experiment = false;  // also fit each experiment alone and compare (conflicts)
   int multistart = 1;           // number of starts (1: the initial point only)
   std::vector<std::string> notes;  // reading remarks shown with the result (e.g. renormalised Hill)
+  // The forward runs of the FE experiments (null without any): shared by the experiments on
+  // one scene, with the failures of the fit.
+  std::shared_ptr<SceneRuns> scene_runs;
+  // Every file the fit reads (fit file, card, scenes and what they read, data): what a resume
+  // checks has not changed, and what must not lie in the output directory.
+  std::vector<std::string> input_files;
 };
 
 // Throws io::InputError naming file, key and value (unknown parameter, bad bounds, missing

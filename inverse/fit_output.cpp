@@ -117,6 +117,10 @@ FitRecord fit_record(const FitProblem& fp, const FitResult& r) {
   rec.usable = r.usable;
   rec.iterations = r.iterations;
   rec.forward_runs = r.forward_runs;
+  if (fp.scene_runs) {
+    rec.scene_runs = r.scene_runs;
+    for (const auto& f : r.failed_runs) rec.failed_runs.push_back({f.scene, f.point, f.message, f.recovered});
+  }
   rec.wall_seconds = r.wall_seconds;
   rec.cost_definition = "1/2 sum of squared conditioned residuals sqrt(w) (simulated - measured) / scale";
   rec.cost_initial = r.cost_initial;
@@ -147,9 +151,10 @@ void write_fit_outputs(const FitProblem& fp, const FitResult& r, const io::Outpu
   out.write_file("fit.json", to_json(fit_record(fp, r)).dump(2) + "\n");
   out.write_file("card.toml", "# Fitted by spifit " SPIFIT_VERSION " from " + fp.file + "\n" + material::material_card_to_toml(r.card));
   std::filesystem::create_directories(out.path() / "experiments");
-  const auto start = fp.parameters->apply(fp.parameters->initial_internal().data());
+  const ParameterPoint start = fp.parameters->point(fp.parameters->initial_internal().data());
+  const ParameterPoint solution = fp.parameters->point_at(r.values);
   for (const auto& e : fp.experiments) {
-    const auto fin = e->compare(r.card.params);
+    const auto fin = e->compare(solution);
     const auto ini = e->compare(start);
     const std::string x = fin.x_name.empty() ? "index" : fin.x_name;
     io::CsvTable t({x, "measured", "simulated_initial", "simulated_final"});

@@ -163,6 +163,13 @@ void read_summary(const Reader& r, const json& j, FitRecord& rec) {
   if (const json* s = member(j, "seed"); s && s->is_number()) rec.seed = s->get<unsigned>();
   rec.iterations = as_int(r.whole(j, "iterations", ""));
   rec.forward_runs = r.whole(j, "forward_runs", "");
+  rec.scene_runs = r.whole(j, "scene_runs", "");
+  if (const json* f = member(j, "failed_runs"); f && f->is_array()) {
+    for (const auto& e : *f) {
+      if (!e.is_object()) continue;
+      rec.failed_runs.push_back({e.value("scene", ""), e.value("point", ""), e.value("message", ""), e.value("recovered", false)});
+    }
+  }
   rec.wall_seconds = r.number(j, "wall_seconds", "");
   rec.cost_initial = r.number(j, "cost_initial", "");
   rec.cost_final = r.number(j, "cost_final", "");
@@ -360,6 +367,13 @@ json to_json(const FitRecord& rec) {
   if (rec.usable) j["usable"] = *rec.usable;
   if (rec.iterations) j["iterations"] = *rec.iterations;
   if (rec.forward_runs) j["forward_runs"] = *rec.forward_runs;
+  if (rec.scene_runs) {
+    j["scene_runs"] = *rec.scene_runs;
+    json failed = json::array();
+    for (const auto& f : rec.failed_runs)
+      failed.push_back({{"scene", f.scene}, {"point", f.point}, {"message", f.message}, {"recovered", f.recovered}});
+    j["failed_runs"] = failed;
+  }
   j["wall_seconds"] = number_or_null(rec.wall_seconds);
   j["cost_definition"] = rec.cost_definition;
   j["cost_initial"] = number_or_null(rec.cost_initial);

@@ -99,6 +99,13 @@ struct FitRecord {
   std::vector<Alone> per_experiment;
   MultiStart multistart;
   std::vector<Experiment> experiments;
+  // FE experiments: forward runs of their scenes, and the runs that failed or were retried.
+  struct FailedRun {
+    std::string scene, point, message;
+    bool recovered = false;
+  };
+  std::optional<long> scene_runs;
+  std::vector<FailedRun> failed_runs;
 };
 
 // fit.json's object. Its dump(2) plus a newline is the file `spifit fit` writes.

@@ -50,6 +50,10 @@ struct FitResult {
     std::vector<double> spread_min, spread_max;  // over the starts that reached the best cost
   };
   MultiStart multistart;
+  // FE experiments: the forward runs of their scenes (each parameter point once) and the runs
+  // that failed or needed a retry (fit.json "failed_runs").
+  long scene_runs = 0;
+  std::vector<SceneRuns::Failure> failed_runs;
 };
 
 struct FitRunOptions {

@@ -19,7 +19,7 @@ bool NumericDiffExperimentCost::Evaluate(double const* const* xs, double* residu
   const int m = num_residuals();
   const double* x = xs[0];
   runs_->fetch_add(1, std::memory_order_relaxed);
-  if (!e_->residuals(ps_->apply(x), residuals)) return false;
+  if (!e_->residuals(ps_->point(x), residuals)) return false;
   if (!jacobians || !jacobians[0]) return true;
   // Steps inside the bounds: central where possible, one-sided at a bound.
   std::vector<double> xp(p), xm(p), hp(p), hm(p);
@@ -40,7 +40,7 @@ bool NumericDiffExperimentCost::Evaluate(double const* const* xs, double* residu
     std::vector<double> y(x, x + p);
     y[k] = plus ? xp[k] : xm[k];
     runs_->fetch_add(1, std::memory_order_relaxed);
-    const bool ok = e_->residuals(ps_->apply(y.data()), plus ? rp[k].data() : rm[k].data());
+    const bool ok = e_->residuals(ps_->point(y.data()), plus ? rp[k].data() : rm[k].data());
     (plus ? okp : okm)[k] = ok ? 1 : 0;
   }
   for (int k = 0; k < p; ++k) {

@@ -26,10 +26,11 @@ double parameter_value(const material::MaterialCard& card, const std::string& n)
 ParameterSet::ParameterSet(material::MaterialCard base, std::vector<ParameterSpec> specs, bool normalise_hill)
     : base_(std::move(base)), specs_(std::move(specs)), normalise_hill_(normalise_hill) {
   for (int i = 0; i < static_cast<int>(specs_.size()); ++i) {
-    const material::MaterialInput* in = material::find_material_input(specs_[static_cast<std::size_t>(i)].name);
-    if (!in) throw std::invalid_argument("unknown parameter " + specs_[static_cast<std::size_t>(i)].name);
+    const ParameterSpec& s = specs_[static_cast<std::size_t>(i)];
+    const material::MaterialInput* in = s.scene_input ? nullptr : material::find_material_input(s.name);
+    if (!in && !s.scene_input) throw std::invalid_argument("unknown parameter " + s.name);
     inputs_.push_back(in);
-    if (!specs_[static_cast<std::size_t>(i)].fixed) free_.push_back(i);
+    if (!s.fixed) free_.push_back(i);
   }
 }
 
@@ -62,6 +63,26 @@ material::MaterialCard ParameterSet::card_for(const std::vector<double>& interna
   material::MaterialCard c = base_;
   c.params = apply(internal.data());
   return c;
+}
+
+ParameterPoint ParameterSet::point(const double* x) const {
+  ParameterPoint p{apply(x), {}};
+  std::vector<double> value(specs_.size());
+  for (std::size_t i = 0; i < specs_.size(); ++i) value[i] = specs_[i].initial;
+  for (int k = 0; k < num_free(); ++k) value[static_cast<std::size_t>(free_[k])] = to_physical(k, x[k]);
+  for (std::size_t i = 0; i < specs_.size(); ++i)
+    if (specs_[i].scene_input) p.scene.emplace_back(specs_[i].name, value[i]);
+  return p;
+}
+
+ParameterPoint ParameterSet::point_at(const std::vector<double>& physical) const {
+  std::vector<double> x = initial_internal();
+  for (int k = 0; k < num_free() && k < static_cast<int>(physical.size()); ++k) x[k] = to_internal(k, physical[k]);
+  return point(x.data());
+}
+
+bool ParameterSet::has_scene_inputs() const {
+  return std::any_of(specs_.begin(), specs_.end(), [](const ParameterSpec& s) { return s.scene_input; });
 }
 
 }  // namespace spifit::inverse

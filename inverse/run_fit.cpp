@@ -19,6 +19,10 @@ FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
     analyse_conflicts(problem, options, &r);
     r.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
+  if (problem.scene_runs) {
+    r.scene_runs = problem.scene_runs->runs();
+    r.failed_runs = problem.scene_runs->failures();
+  }
   return r;
 }
 

@@ -12,7 +12,7 @@
 namespace spifit::inverse {
 
 bool evaluate_residuals(const FitProblem& fp, const std::vector<double>& internal, Eigen::VectorXd* residuals) {
-  const auto m = fp.parameters->apply(internal.data());
+  const ParameterPoint m = fp.parameters->point(internal.data());
   int total = 0;
   for (const auto& e : fp.experiments) total += e->num_residuals();
   residuals->resize(total);

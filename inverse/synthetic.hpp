@@ -2,6 +2,7 @@
 // Synthetic measurements (twin experiments): a material-point scene run with a known card,
 // sampled every k increments, with seeded Gaussian noise on the response. The CSV header
 // says it is synthetic and how it was made (command, card, noise, seed).
+#include "forward/scenes/common/scene.hpp"
 #include "forward/scenes/material_point/material_point_file.hpp"
 
 #include <cstdint>
@@ -20,6 +21,11 @@ struct SyntheticOptions {
 
 // Throws std::runtime_error if the scene fails; io::InputError for unknown columns.
 std::string synthetic_measurement_csv(const scene::MaterialPointScene& scene, const SyntheticOptions& options);
+
+// The same for an FE scene (indent, indent_line, line, cone, ...): its tool-force component
+// options.y (fx, fy, fz, fr, ftheta) against options.x (depth, travel, time) from the start of
+// the path to where x stops increasing (fe_experiment.hpp), every k-th increment.
+std::string synthetic_force_curve_csv(const scene::Scene& scene, const SyntheticOptions& options);
 
 // Standard normal deviates: std::mt19937_64 (its sequence is fixed by the C++ standard) and
 // Box-Muller written out (std::normal_distribution differs between standard libraries), so

@@ -17,17 +17,17 @@ class BlackBox final : public inverse::Experiment {
  public:
   explicit BlackBox(std::shared_ptr<inverse::Experiment> inner) : inner_(std::move(inner)) { name_ = inner_->name(); kind_ = inner_->kind(); }
   int num_residuals() const override { return inner_->num_residuals(); }
-  bool residuals(const material::MaterialParams<double>& m, double* r) const override {
+  bool residuals(const inverse::ParameterPoint& m, double* r) const override {
     {
       std::lock_guard<std::mutex> lock(mu_);
-      max_k_ = std::max(max_k_, m.K);
+      max_k_ = std::max(max_k_, m.material.K);
       ++calls_;
     }
     return inner_->residuals(m, r);
   }
   bool residuals(const material::MaterialParams<inverse::Jet>&, inverse::Jet*) const override { return false; }
   bool supports_jets() const override { return false; }
-  inverse::ExperimentCurve compare(const material::MaterialParams<double>& m) const override { return inner_->compare(m); }
+  inverse::ExperimentCurve compare(const inverse::ParameterPoint& m) const override { return inner_->compare(m); }
   inverse::ExperimentCurve axes() const override { return inner_->axes(); }
   double max_k() const { return max_k_; }
 

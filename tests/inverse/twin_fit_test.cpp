@@ -138,12 +138,12 @@ class FailingOnce final : public inverse::Experiment {
  public:
   explicit FailingOnce(std::shared_ptr<inverse::Experiment> inner) : inner_(std::move(inner)) { name_ = inner_->name(); kind_ = inner_->kind(); }
   int num_residuals() const override { return inner_->num_residuals(); }
-  bool residuals(const material::MaterialParams<double>& m, double* r) const override {
+  bool residuals(const inverse::ParameterPoint& m, double* r) const override {
     if (++value_calls_ == 2) { ++failures_; return false; }  // call 1 is the initial cost
     return inner_->residuals(m, r);
   }
   bool residuals(const material::MaterialParams<inverse::Jet>& m, inverse::Jet* r) const override { return inner_->residuals(m, r); }
-  inverse::ExperimentCurve compare(const material::MaterialParams<double>& m) const override { return inner_->compare(m); }
+  inverse::ExperimentCurve compare(const inverse::ParameterPoint& m) const override { return inner_->compare(m); }
   inverse::ExperimentCurve axes() const override { return inner_->axes(); }
   int failures() const { return failures_; }
 

@@ -9,6 +9,7 @@
 #include "forward/scenes/common/fe_run.hpp"
 #include "forward/scenes/common/run_files.hpp"
 #include "forward/scenes/common/scene_result.hpp"
+#include "forward/toolpath/tool_path.hpp"
 
 #include <array>
 #include <functional>
@@ -39,6 +40,9 @@ class Scene {
   // benchmark), whose inputs then hold no material parameters.
   virtual const material::MaterialCard* card() const = 0;
   virtual material::MaterialCard* card() = 0;
+  // The path of the tool centre of a scene with a tool (nothing for the others): what a fit
+  // checks measured travels and depths against before anything runs.
+  virtual std::optional<toolpath::ToolPath> tool_centre_path() const { return std::nullopt; }
 
   // Named inputs: the kind's own (its InputTable) and the card's parameters (material_inputs).
   // input: std::invalid_argument for a name that is neither. set_input: "" when set, else why

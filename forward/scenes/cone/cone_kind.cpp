@@ -16,6 +16,7 @@ class ConeSceneFile final : public TableScene<ConeScene> {
   std::unique_ptr<SceneResult> run(const RunFiles& files, const RunControl& control) const override {
     return std::make_unique<ConeResult>(run_cone_scene(data_, files, control));
   }
+  std::optional<toolpath::ToolPath> tool_centre_path() const override { return cone_scene_path(data_).path; }
 
  protected:
   std::string check_inputs() const override { return cone_scene_error(data_).text(); }
@@ -47,6 +48,11 @@ std::vector<Observable> cone_observables() {
        [](const SceneResult& r, const ObservableOptions& o) {
          const SteadyState s = steady_state(cone(r).contours, o.contours->first, o.contours->second);
          return s.contours == 0 ? kNaN : s.polar.x() / s.polar.z();
+       }},
+      {"steady_ftheta_over_fz", "", "Ftheta / Fz of the steady state over the contour range (friction)", Observable::Needs::contours, false,
+       [](const SceneResult& r, const ObservableOptions& o) {
+         const SteadyState s = steady_state(cone(r).contours, o.contours->first, o.contours->second);
+         return s.contours == 0 ? kNaN : s.polar.y() / s.polar.z();
        }},
       scalar("max_surface_penetration", "mm", "deepest point of the tool-side surface over the run",
              [](const ConeResult& r) { return r.force.max_surface_penetration(); }),

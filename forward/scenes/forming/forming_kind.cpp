@@ -3,6 +3,7 @@
 #include "forward/scenes/common/fe_run_observables.hpp"
 #include "forward/scenes/common/table_scene.hpp"
 #include "forward/scenes/forming/forming_inputs.hpp"
+#include "forward/scenes/forming/forming_path.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
 
 #include <cmath>
@@ -23,6 +24,7 @@ class FormingSceneFile final : public TableScene<FormingScene> {
   std::unique_ptr<SceneResult> run(const RunFiles& files, const RunControl& control) const override {
     return std::make_unique<FormingResult>(run_forming_scene(data_, files, control));
   }
+  std::optional<toolpath::ToolPath> tool_centre_path() const override { return forming_centre_path(data_); }
 
  protected:
   std::string check_inputs() const override { return forming_scene_error(data_).text(); }

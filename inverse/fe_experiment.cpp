@@ -1,0 +1,199 @@
+#include "inverse/fe_experiment.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace spifit::inverse {
+namespace {
+
+constexpr const char* kAbscissae[] = {"depth", "travel", "time"};
+constexpr const char* kComponents[] = {"fx", "fy", "fz", "fr", "ftheta"};
+
+// x of a tool position: tip depth below the initial top surface (the tip path's z = 0 is the
+// top surface: the centre sits t/2 + R above the mid-surface), travel or time.
+double abscissa(const std::string& x, const Eigen::Vector3d& centre, double travel, double time, double thickness, double radius) {
+  if (x == "depth") return 0.5 * thickness + radius - centre.z();
+  if (x == "travel") return travel;
+  return time;
+}
+
+double component(const std::string& y, const Eigen::Vector3d& centre, const Eigen::Vector3d& f) {
+  if (y == "fx") return f.x();
+  if (y == "fy") return f.y();
+  if (y == "fz") return f.z();
+  const double theta = std::atan2(centre.y(), centre.x());
+  const double c = std::cos(theta), s = std::sin(theta);
+  return y == "fr" ? c * f.x() + s * f.y() : -s * f.x() + c * f.y();
+}
+
+// The FE experiments' common part: the run at a point (from the shared runs) and conditioning.
+class FeExperiment : public Experiment {
+ public:
+  explicit FeExperiment(const FeExperimentBase& b) : scene_(b.scene), runs_(b.runs) {
+    name_ = b.name;
+    weight_ = b.weight;
+    noise_given_ = b.noise > 0;
+  }
+  bool residuals(const material::MaterialParams<Jet>&, Jet*) const override { return false; }
+  bool supports_jets() const override { return false; }
+  // The residuals at p: kept from an earlier (killed) fit when the runs keep evaluations, else
+  // computed (and kept).
+  bool residuals(const ParameterPoint& p, double* r) const final {
+    EvaluationCache* cache = runs_->evaluations();
+    const std::string key = cache ? point_key(p) : std::string();
+    if (cache) {
+      if (const auto e = cache->find(name_, key); e && (!e->ok || static_cast<int>(e->residuals.size()) == num_residuals())) {
+        std::copy(e->residuals.begin(), e->residuals.end(), r);
+        return e->ok;
+      }
+    }
+    const bool ok = compute(p, r);
+    if (cache) cache->add(name_, key, {ok, ok ? std::vector<double>(r, r + num_residuals()) : std::vector<double>{}});
+    return ok;
+  }
+
+ protected:
+  virtual bool compute(const ParameterPoint& p, double* r) const = 0;
+  std::shared_ptr<const scene::SceneResult> run_at(const ParameterPoint& p) const {
+    auto r = runs_->result(*scene_, p);
+    return r && r->ok() ? r : nullptr;
+  }
+  std::shared_ptr<const scene::Scene> scene_;
+  std::shared_ptr<const SceneRuns> runs_;
+};
+
+class FeScalarExperiment final : public FeExperiment {
+ public:
+  explicit FeScalarExperiment(FeScalarSpec s) : FeExperiment(s), s_(std::move(s)) {
+    kind_ = "fe_scalar";
+    scale_ = s_.noise > 0 ? s_.noise : (s_.value != 0.0 ? std::abs(s_.value) : 1.0);
+  }
+  int num_residuals() const override { return 1; }
+  ExperimentCurve axes() const override { return {"", s_.observable->name, "", s_.observable->unit, {}, {}, {}}; }
+  ExperimentCurve compare(const ParameterPoint& p) const override {
+    ExperimentCurve c{"", s_.observable->name, "", s_.observable->unit, {0.0}, {s_.value}, {}};
+    double r = 0.0, sim = 0.0;
+    if (eval(p, &r, &sim)) c.simulated = {sim};
+    return c;
+  }
+
+ private:
+  bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
+  bool eval(const ParameterPoint& p, double* r, double* simulated) const {
+    const auto res = run_at(p);
+    if (!res) return false;
+    const double v = s_.observable->value(*res, s_.options);
+    if (!std::isfinite(v)) return false;
+    r[0] = std::sqrt(s_.weight) * (v - s_.value) / scale_;
+    if (simulated) *simulated = v;
+    return true;
+  }
+  FeScalarSpec s_;
+};
+
+class ForceCurveExperiment final : public FeExperiment {
+ public:
+  explicit ForceCurveExperiment(ForceCurveSpec s) : FeExperiment(s), s_(std::move(s)) {
+    kind_ = "force_curve";
+    if (s_.noise > 0) {
+      scale_ = s_.noise;
+    } else {
+      const auto [lo, hi] = std::minmax_element(s_.ys.begin(), s_.ys.end());
+      scale_ = *hi - *lo > 0 ? *hi - *lo : 1.0;
+    }
+    for (std::size_t i = 0; i < s_.xs.size(); ++i) sqrt_w_.push_back(std::sqrt(s_.weight * (s_.point_weights.empty() ? 1.0 : s_.point_weights[i])));
+    thickness_ = s_.scene->input("sheet.thickness");
+    radius_ = s_.scene->input("tool.radius");
+    start_ = s_.scene->tool_centre_path()->at_distance(0.0);
+  }
+  int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
+  ExperimentCurve axes() const override { return {s_.x, s_.y, force_curve_abscissa_unit(s_.x), s_.y_unit, {}, {}, {}}; }
+  ExperimentCurve compare(const ParameterPoint& p) const override {
+    ExperimentCurve c{s_.x, s_.y, force_curve_abscissa_unit(s_.x), s_.y_unit, s_.xs, s_.ys, {}};
+    std::vector<double> r(s_.xs.size()), sim(s_.xs.size());
+    if (eval(p, r.data(), &sim)) c.simulated = sim;
+    return c;
+  }
+
+ private:
+  bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
+  bool eval(const ParameterPoint& p, double* r, std::vector<double>* simulated) const {
+    const auto res = run_at(p);
+    if (!res) return false;
+    const auto* fe = dynamic_cast<const scene::FeSceneResult*>(res.get());
+    if (!fe) return false;
+    // The scene inputs of p may move the tool (tool.radius) or the sheet (sheet.thickness).
+    const double t = input_at(p, "sheet.thickness", thickness_), radius = input_at(p, "tool.radius", radius_);
+    const ForceCurve c = force_curve(fe->force, start_, t, radius, s_.x, s_.y);
+    std::size_t seg = 0;
+    for (std::size_t i = 0; i < s_.xs.size(); ++i) {
+      const double x = s_.xs[i];
+      if (c.x.size() < 2 || x < c.x.front() - 1e-9 || x > c.x.back() + 1e-9) return false;  // never extrapolate
+      while (seg + 2 < c.x.size() && c.x[seg + 1] < x) ++seg;
+      const double u = std::clamp((x - c.x[seg]) / (c.x[seg + 1] - c.x[seg]), 0.0, 1.0);
+      const double y = c.y[seg] + (c.y[seg + 1] - c.y[seg]) * u;
+      r[i] = sqrt_w_[i] * (y - s_.ys[i]) / scale_;
+      if (simulated) (*simulated)[i] = y;
+    }
+    return true;
+  }
+  static double input_at(const ParameterPoint& p, const char* name, double fallback) {
+    for (const auto& [n, v] : p.scene)
+      if (n == name) return v;
+    return fallback;
+  }
+  ForceCurveSpec s_;
+  std::vector<double> sqrt_w_;
+  double thickness_ = 0.0, radius_ = 0.0;
+  Eigen::Vector3d start_ = Eigen::Vector3d::Zero();
+};
+
+}  // namespace
+
+std::unique_ptr<Experiment> make_fe_scalar_experiment(FeScalarSpec spec) { return std::make_unique<FeScalarExperiment>(std::move(spec)); }
+std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec) { return std::make_unique<ForceCurveExperiment>(std::move(spec)); }
+
+const char* force_curve_abscissa_names() { return "depth, travel, time"; }
+bool is_force_curve_abscissa(const std::string& x) {
+  return std::any_of(std::begin(kAbscissae), std::end(kAbscissae), [&](const char* a) { return x == a; });
+}
+const char* force_curve_abscissa_unit(const std::string& x) { return x == "time" ? "s" : "mm"; }
+const char* force_component_names() { return "fx, fy, fz, fr, ftheta"; }
+bool is_force_component(const std::string& y) {
+  return std::any_of(std::begin(kComponents), std::end(kComponents), [&](const char* c) { return y == c; });
+}
+
+ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& start, double thickness, double tool_radius,
+                       const std::string& x, const std::string& y) {
+  if (!is_force_curve_abscissa(x)) throw std::invalid_argument(std::string("unknown force curve abscissa ").append(x));
+  if (!is_force_component(y)) throw std::invalid_argument(std::string("unknown force component ").append(y));
+  ForceCurve c;
+  c.x.push_back(abscissa(x, start, 0.0, 0.0, thickness, tool_radius));
+  c.y.push_back(0.0);  // the tool starts off the sheet, or just touching it
+  for (const auto& s : h.samples()) {
+    const double v = abscissa(x, s.centre, s.travel, s.time, thickness, tool_radius);
+    if (!(v > c.x.back())) break;  // x stops increasing: the curve ends
+    c.x.push_back(v);
+    c.y.push_back(component(y, s.centre, s.force));
+  }
+  return c;
+}
+
+std::pair<double, double> force_curve_range(const toolpath::ToolPath& centre, double thickness, double tool_radius, const std::string& x) {
+  if (x == "travel") return {0.0, centre.length()};
+  if (x == "time") return {0.0, centre.duration()};
+  // depth: linear along each segment, so the waypoints give where it stops increasing.
+  const auto& w = centre.waypoints();
+  const double first = abscissa("depth", w.front().position, 0, 0, thickness, tool_radius);
+  double last = first;
+  for (std::size_t i = 1; i < w.size(); ++i) {
+    if (w[i].position == w[i - 1].position) continue;  // a zero-length segment
+    const double d = abscissa("depth", w[i].position, 0, 0, thickness, tool_radius);
+    if (!(d > last)) break;
+    last = d;
+  }
+  return {first, last};
+}
+
+}  // namespace spifit::inverse

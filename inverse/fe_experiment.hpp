@@ -1,0 +1,64 @@
+#pragma once
+// Experiments on FE scenes (indent, indent_line, line, cone, ...; docs/identification.md, "Fits
+// on FE scenes"): a tool-force curve against tool-tip depth, tool travel or time, or a scalar
+// observable of the scene kind (peak_fz, mean_fx over a travel window, steady_ftheta_over_fz
+// over a contour range, ...). The runs come from the fit's SceneRuns (one per parameter point,
+// shared by the experiments on the same scene); derivatives are central differences.
+#include "forward/scenes/common/fe_scene_result.hpp"
+#include "forward/scenes/common/scene.hpp"
+#include "inverse/experiment.hpp"
+#include "inverse/scene_runs.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+// What every FE experiment names: the scene (its card is replaced by the fit's), the runs it
+// shares, and the conditioning.
+struct FeExperimentBase {
+  std::string name;
+  std::shared_ptr<const scene::Scene> scene;
+  std::shared_ptr<const SceneRuns> runs;
+  double noise = 0.0;  // measurement standard deviation; 0: the range of the data (curve) or |value|
+  double weight = 1.0;
+};
+
+struct FeScalarSpec : FeExperimentBase {
+  const scene::Observable* observable = nullptr;  // of the scene's kind
+  scene::ObservableOptions options;                // window or contours when it needs them
+  double value = 0.0;
+  std::string source;
+};
+std::unique_ptr<Experiment> make_fe_scalar_experiment(FeScalarSpec spec);
+
+// A force component against an abscissa of the tool's motion.
+struct ForceCurveSpec : FeExperimentBase {
+  std::string x = "depth", y = "fz";  // force_curve_abscissa_names(), force_component_names()
+  std::vector<double> xs, ys, point_weights;
+  std::string y_unit = "N";
+};
+std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec);
+
+// depth (of the tool tip below the initial top surface, mm), travel (mm along the path), time (s).
+const char* force_curve_abscissa_names();
+bool is_force_curve_abscissa(const std::string& x);
+const char* force_curve_abscissa_unit(const std::string& x);
+// fx, fy, fz (global), fr, ftheta (polar about the z axis at the tool centre's angle).
+const char* force_component_names();
+bool is_force_component(const std::string& y);
+
+// The tool force component y against x over a run, starting at the path's start (zero force)
+// and ending where x stops increasing (a depth curve ends where the tool stops going down).
+// thickness and tool_radius place the tool tip; start is the tool centre at the path's start.
+struct ForceCurve {
+  std::vector<double> x, y;
+};
+ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& start, double thickness, double tool_radius,
+                       const std::string& x, const std::string& y);
+
+// The range [x at the start, x where it stops increasing] of an abscissa along a tool centre path.
+std::pair<double, double> force_curve_range(const toolpath::ToolPath& centre, double thickness, double tool_radius, const std::string& x);
+
+}  // namespace spifit::inverse

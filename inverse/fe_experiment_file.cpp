@@ -1,0 +1,108 @@
+#include "inverse/fe_experiment_file.hpp"
+
+#include "forward/scenes/scene_registry.hpp"
+#include "inverse/measurement.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace spifit::inverse {
+namespace {
+
+using io::format_number;
+using io::InputError;
+
+std::string resolve(const std::string& base_file, const std::string& p) {
+  std::filesystem::path q(p);
+  if (q.is_relative()) q = std::filesystem::path(base_file).parent_path() / q;
+  return q.lexically_normal().string();
+}
+
+std::string observable_names(const scene::SceneKind& k) {
+  std::string out;
+  for (const auto& o : k.observables) out += (out.empty() ? "" : ", ") + o.name;
+  return out;
+}
+
+std::unique_ptr<Experiment> scalar(const io::TomlTable& e, FeExperimentBase base) {
+  const scene::SceneKind* kind = scene::find_scene_kind(base.scene->kind());
+  FeScalarSpec s;
+  static_cast<FeExperimentBase&>(s) = std::move(base);
+  const std::string name = e.string("observable");
+  s.observable = kind->find_observable(name);
+  if (!s.observable) e.fail("observable", "not an observable of scene kind " + kind->name + " (known: " + observable_names(*kind) + ")");
+  if (s.observable->counts_failed_runs) e.fail("observable", "a count of the run, not a measurement");
+  using Needs = scene::Observable::Needs;
+  if (s.observable->needs == Needs::window) {
+    const auto w = e.number_list("window");
+    if (w.size() != 2 || !(w[0] < w[1])) e.fail("window", "expected [from, to] of tool travel in mm with from < to");
+    const auto path = s.scene->tool_centre_path();
+    const double length = path->length();
+    if (w[0] < 0.0 || w[1] > length + 1e-9)
+      e.fail("window", "must lie inside the tool path's travel [0, " + format_number(length) + "] mm");
+    s.options.window = std::array<double, 2>{w[0], w[1]};
+  } else if (e.has("window")) {
+    e.fail("window", name + " takes no travel window");
+  }
+  if (s.observable->needs == Needs::contours) {
+    const auto c = e.number_list("contours");
+    if (c.size() != 2 || c[0] < 1 || c[0] > c[1] || c[0] != std::floor(c[0]) || c[1] != std::floor(c[1]))
+      e.fail("contours", "expected [first, last] contour numbers with 1 <= first <= last");
+    s.options.contours = std::pair<int, int>{static_cast<int>(c[0]), static_cast<int>(c[1])};
+  } else if (e.has("contours")) {
+    e.fail("contours", name + " takes no contour range");
+  }
+  s.value = e.number("value");
+  s.source = e.string("source", "");
+  return make_fe_scalar_experiment(std::move(s));
+}
+
+}  // namespace
+
+const std::vector<std::string>& fe_experiment_keys() {
+  static const std::vector<std::string> keys{"name",   "scene", "data",  "x",      "y",     "noise",
+                                             "weight", "weight_column", "observable", "value", "window", "contours", "source"};
+  return keys;
+}
+
+std::unique_ptr<Experiment> read_fe_experiment(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
+  if (!base.scene->tool_centre_path()) e.fail("scene", "scene kind " + base.scene->kind() + " has no tool to measure");
+  if (e.has("observable")) {
+    for (const char* k : {"data", "x", "y", "weight_column"})
+      if (e.has(k)) e.fail(k, "a scalar experiment (observable = ...) takes no curve keys");
+    return scalar(e, std::move(base));
+  }
+  for (const char* k : {"value", "window", "contours"})
+    if (e.has(k)) e.fail(k, "a force curve (data = ...) takes no scalar keys; a scalar needs observable = ...");
+  ForceCurveSpec c;
+  static_cast<FeExperimentBase&>(c) = std::move(base);
+  c.x = e.string("x", "depth");
+  c.y = e.string("y", "fz");
+  if (!is_force_curve_abscissa(c.x)) e.fail("x", std::string("not an abscissa of a force curve (known: ") + force_curve_abscissa_names() + ")");
+  if (!is_force_component(c.y)) e.fail("y", std::string("not a tool-force component (known: ") + force_component_names() + ")");
+  const std::string data_path = resolve(path, e.string("data"));
+  const auto table = read_measurement_csv(data_path);
+  c.xs = table.column(c.x);
+  c.ys = table.column(c.y);
+  c.y_unit = table.units.at(c.y).empty() ? "N" : table.units.at(c.y);
+  if (c.y_unit != "N") throw InputError(data_path, "column " + c.y, c.y_unit, "tool forces are compared in N");
+  if (e.has("weight_column")) {
+    c.point_weights = table.column(e.string("weight_column"));
+    for (double w : c.point_weights)
+      if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
+  }
+  const double t = c.scene->input("sheet.thickness"), radius = c.scene->input("tool.radius");
+  const auto [lo, hi] = force_curve_range(*c.scene->tool_centre_path(), t, radius, c.x);
+  for (std::size_t i = 0; i < c.xs.size(); ++i) {
+    if (i > 0 && !(c.xs[i] > c.xs[i - 1]))
+      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
+    if (c.xs[i] < lo - 1e-9 || c.xs[i] > hi + 1e-9)
+      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]),
+                       "outside the simulated range [" + format_number(lo) + ", " + format_number(hi) + "] " + force_curve_abscissa_unit(c.x) +
+                           " of scene " + c.scene->name() + (c.x == "depth" ? " (the depth while the tool goes down)" : ""));
+  }
+  if (c.xs.empty()) throw InputError(data_path, "column " + c.x, "", "no data rows");
+  return make_force_curve_experiment(std::move(c));
+}
+
+}  // namespace spifit::inverse

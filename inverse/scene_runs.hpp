@@ -1,0 +1,66 @@
+#pragma once
+// The forward runs of the FE scenes of a fit (docs/identification.md, "Fits on FE scenes"): one
+// run per scene and parameter point, however many experiments read it and however many
+// threads ask at once (the pattern of Ceres's EvaluationCallback: one simulation per point,
+// read by every residual block on it). A run that fails is retried once with half the tool
+// travel per increment; what still fails is listed (fit.json "failed_runs") and its
+// experiments report a failed evaluation, which the optimisers survive.
+#include "forward/scenes/common/scene.hpp"
+#include "inverse/evaluation_cache.hpp"
+#include "inverse/parameter_point.hpp"
+
+#include <deque>
+#include <future>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+class SceneRuns {
+ public:
+  struct Failure {
+    std::string scene;    // scene file
+    std::string point;    // the parameter values, "swift.K=150 contact.friction=0.12"
+    std::string message;  // why (both attempts)
+    bool recovered = false;  // the retry with smaller increments ran
+  };
+
+  // base: the fit's starting card (failures name the parameters that differ from it).
+  explicit SceneRuns(material::MaterialParams<double> base) : base_(std::move(base)) {}
+
+  // The typed result of `scene` at p: the scene with the fit's card (p.material replaces the
+  // card's parameters) and p's scene inputs. Null when the run failed twice or p's inputs
+  // cannot be set on the scene. Thread-safe; a point already run (or running) is not run again.
+  std::shared_ptr<const scene::SceneResult> result(const scene::Scene& scene, const ParameterPoint& p) const;
+
+  // Evaluations kept on disk for a resume (null: none); the FE experiments read and add to it.
+  void keep_evaluations(std::shared_ptr<EvaluationCache> cache) { evaluations_ = std::move(cache); }
+  EvaluationCache* evaluations() const { return evaluations_.get(); }
+
+  long runs() const;                   // forward runs made (retries included)
+  std::vector<Failure> failures() const;  // in the order they happened
+
+ private:
+  using Entry = std::shared_future<std::shared_ptr<const scene::SceneResult>>;
+  std::shared_ptr<const scene::SceneResult> run(const scene::Scene& scene, const ParameterPoint& p) const;
+  material::MaterialParams<double> base_;
+  std::shared_ptr<EvaluationCache> evaluations_;
+  mutable std::mutex mutex_;
+  mutable std::map<std::string, Entry> cache_;
+  mutable std::deque<std::string> order_;  // keys, oldest first (the cache keeps the newest)
+  mutable std::vector<Failure> failures_;
+  mutable long runs_ = 0;
+};
+
+// The exact bits of every value of p (the card's parameters, then the scene inputs by name): the
+// key of a run and of a kept evaluation.
+std::string point_key(const ParameterPoint& p);
+
+// "swift.K=150 contact.friction=0.12": the material parameters of p that differ from the
+// card's and p's scene inputs (for messages).
+std::string describe_point(const ParameterPoint& p, const material::MaterialParams<double>& card);
+
+}  // namespace spifit::inverse

@@ -1,0 +1,225 @@
+// Fits on FE scenes (docs/identification.md, "Fits on FE scenes"): the force curve of a run,
+// the fit file's FE experiments and their input errors, the shared runs and their failures, and
+// a twin experiment that recovers the friction coefficient of the tiny line test.
+#include "forward/io/input_error.hpp"
+#include "forward/scenes/scene_registry.hpp"
+#include "inverse/fe_experiment.hpp"
+#include "inverse/fit_file.hpp"
+#include "inverse/numeric_cost.hpp"
+#include "inverse/run_fit.hpp"
+#include "inverse/synthetic.hpp"
+#include "tests/support/temp_files.hpp"
+#include "tests/support/tiny_scenes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using namespace spifit;
+
+namespace {
+
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+
+// A tool going down from z_c = t/2 + R (tip on the top surface) in 0.5 mm steps, then back up.
+scene::ToolForceHistory descent(double t, double r) {
+  scene::ToolForceHistory h;
+  const double z0 = 0.5 * t + r;
+  for (int k = 1; k <= 6; ++k) {
+    scene::ToolForceSample s;
+    const double depth = k <= 4 ? 0.5 * k : 0.5 * (8 - k);  // 0.5, 1, 1.5, 2, then 1.5, 1
+    s.travel = 0.5 * k;
+    s.time = 0.05 * k;
+    s.centre = Eigen::Vector3d(3.0, 4.0, z0 - depth);
+    s.force = Eigen::Vector3d(10.0 * k, 0.0, 100.0 * depth);
+    h.add(s);
+  }
+  return h;
+}
+
+TEST(ForceCurve, DepthStartsAtTheTopSurfaceAndEndsWhereTheToolTurns) {
+  const double t = 1.2, r = 5.0;
+  const auto h = descent(t, r);
+  const Eigen::Vector3d start(3.0, 4.0, 0.5 * t + r);
+  const auto c = inverse::force_curve(h, start, t, r, "depth", "fz");
+  ASSERT_EQ(c.x.size(), 5u);  // the start and the four samples going down
+  for (std::size_t i = 0; i < c.x.size(); ++i) {
+    EXPECT_NEAR(c.x[i], 0.5 * static_cast<double>(i), 1e-12);
+    EXPECT_NEAR(c.y[i], 50.0 * static_cast<double>(i), 1e-9);
+  }
+  const auto tr = inverse::force_curve(h, start, t, r, "travel", "fx");
+  EXPECT_EQ(tr.x.size(), 7u);  // travel keeps increasing
+  // Polar components at the centre's angle atan2(4, 3): Fr = 0.6 Fx, Ftheta = -0.8 Fx.
+  const auto fr = inverse::force_curve(h, start, t, r, "travel", "fr");
+  const auto ft = inverse::force_curve(h, start, t, r, "travel", "ftheta");
+  EXPECT_NEAR(fr.y[2], 0.6 * 20.0, 1e-12);
+  EXPECT_NEAR(ft.y[2], -0.8 * 20.0, 1e-12);
+  EXPECT_THROW(inverse::force_curve(h, start, t, r, "angle", "fz"), std::invalid_argument);
+}
+
+// The tiny line test (tests/support/tiny_scenes.hpp) at mu = 0.1 and its drag force Fx along
+// the travel, written as a synthetic measurement without noise.
+struct TinyLineData {
+  fs::path scene, data;
+};
+TinyLineData tiny_line_data(const std::string& y = "fx") {
+  TinyLineData d;
+  d.scene = test::write_tiny_line(test::temp_path("line.toml"));
+  std::ofstream(d.scene, std::ios::app) << "[contact]\nfriction = 0.1\n";
+  d.data = test::temp_path(y + ".csv");
+  inverse::SyntheticOptions o;
+  o.x = "travel";
+  o.y = y;
+  o.every = 4;
+  std::ofstream(d.data) << inverse::synthetic_force_curve_csv(*scene::read_scene(d.scene.string()), o);
+  return d;
+}
+
+std::string fit_head(const std::string& parameters) {
+  return "[fit]\ncard = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n" + parameters;
+}
+std::string experiment(const fs::path& scene, const std::string& body) { return "[[experiment]]\nscene = \"" + scene.string() + "\"\n" + body; }
+const char* kFriction = "[parameters.\"contact.friction\"]\ninitial = 0.14\nlower = 0.0\nupper = 0.5\n";
+
+fs::path write_fit(const std::string& text) {
+  const fs::path f = test::temp_path("fit.toml");
+  std::ofstream(f) << text;
+  return f;
+}
+
+std::string read_error(const fs::path& f) {
+  try {
+    inverse::read_fit_file(f.string());
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+TEST(FeFitFile, InputErrorsNameFileKeyAndValue) {
+  const fs::path scene = test::write_tiny_line(test::temp_path("line.toml"));
+  const fs::path data = test::temp_path("fz.csv");
+  std::ofstream(data) << "depth [mm],fz [N]\n1.0,10.0\n2.0,20.0\n";
+  const fs::path deep = test::temp_path("deep.csv");
+  std::ofstream(deep) << "depth [mm],fz [N]\n1.0,10.0\n3.5,20.0\n";  // the tool goes down 3 mm before it turns along x
+  const std::string curve = "data = \"" + data.string() + "\"\n";
+  struct Case {
+    std::string fit;
+    std::vector<std::string> parts;
+  };
+  const std::vector<Case> cases{
+      {fit_head(kFriction) + experiment(scene, "observable = \"peak_fq\"\nvalue = 1.0\n"), {"observable = \"peak_fq\"", "not an observable of scene kind line", "peak_fz"}},
+      {fit_head(kFriction) + experiment(scene, curve + "y = \"fq\"\n"), {"y = \"fq\"", "not a tool-force component", "ftheta"}},
+      {fit_head(kFriction) + experiment(scene, curve + "x = \"angle\"\n"), {"x = \"angle\"", "depth, travel, time"}},
+      {fit_head(kFriction) + experiment(scene, "data = \"" + deep.string() + "\"\n"), {"column depth", "3.5", "outside the simulated range [0, 3]"}},
+      {fit_head("[parameters.\"contact.stickiness\"]\nlower = 0.0\nupper = 1.0\n") + experiment(scene, curve),
+       {"parameters.contact.stickiness", "unknown parameter", "contact.friction"}},
+      {fit_head("[parameters.\"contact.friction\"]\nlower = 0.0\nupper = 3.0\n") + experiment(scene, curve), {"parameters.contact.friction.upper = 3"}},
+      {fit_head(kFriction) + experiment(scene, "observable = \"mean_fx\"\nvalue = 1.0\nwindow = [0.0, 90.0]\n"), {"window", "inside the tool path's travel"}},
+      {fit_head(kFriction) + experiment(scene, "observable = \"increments\"\nvalue = 100.0\n"), {"observable = \"increments\"", "a count of the run"}},
+      {fit_head(kFriction) + experiment(scene, curve + "value = 3.0\n"), {"value", "takes no scalar keys"}},
+      {fit_head("[parameters.\"swift.K\"]\nlower = 50.0\nupper = 500.0\n[parameters.\"contact.friction\"]\nlower = 0.0\nupper = 0.5\n") +
+           experiment(src("experiments/aa3003o/scenes/tensile_00.toml"), "data = \"" + src("experiments/aa3003o/data/tensile_00_c2_synthetic.csv") + "\"\n"),
+       {"parameters.contact.friction", "unknown parameter", "with an FE scene"}},
+  };
+  for (const auto& c : cases) {
+    const fs::path f = write_fit(c.fit);
+    const std::string e = read_error(f);
+    // The data file's errors name the data file, the others the fit file.
+    EXPECT_TRUE(e.rfind(f.string(), 0) == 0 || e.rfind(deep.string(), 0) == 0) << e;
+    for (const auto& part : c.parts) EXPECT_NE(e.find(part), std::string::npos) << "missing \"" << part << "\" in: " << e;
+  }
+}
+
+// The shared runs: a point whose scene input the scene refuses is a failed run, listed with the
+// reason; nothing runs.
+TEST(SceneRuns, AnInputTheSceneRefusesIsAListedFailure) {
+  const fs::path scene_file = test::write_tiny_line(test::temp_path("line.toml"));
+  const auto sc = scene::read_scene(scene_file.string());
+  inverse::SceneRuns runs(sc->card()->params);
+  inverse::ParameterPoint p{sc->card()->params, {{"contact.friction", 5.0}}};
+  EXPECT_EQ(runs.result(*sc, p), nullptr);
+  const auto failures = runs.failures();
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_EQ(runs.runs(), 0);
+  const auto& f = failures.front();
+  EXPECT_EQ(f.scene, scene_file.string());
+  EXPECT_EQ(f.point, "contact.friction=5");
+  EXPECT_NE(f.message.find("contact.friction = 5"), std::string::npos) << f.message;
+  EXPECT_FALSE(f.recovered);
+}
+
+// Twin experiment: the drag force Fx of the tiny line test made at mu = 0.1 (no noise) gives back
+// mu = 0.1 from a start 40 % off; an Fz curve on the same scene shares every run.
+TEST(FeFit, TinyLineFrictionIsRecoveredAndExperimentsShareTheirRuns) {
+  const TinyLineData fx = tiny_line_data("fx");
+  const fs::path fz = test::temp_path("fz.csv");
+  {
+    inverse::SyntheticOptions o;
+    o.x = "travel";
+    o.y = "fz";
+    o.every = 4;
+    std::ofstream(fz) << inverse::synthetic_force_curve_csv(*scene::read_scene(fx.scene.string()), o);
+  }
+  const fs::path f = write_fit(fit_head(kFriction) + experiment(fx.scene, "name = \"drag\"\ndata = \"" + fx.data.string() + "\"\nx = \"travel\"\ny = \"fx\"\nnoise = 1.0\n") +
+                               experiment(fx.scene, "name = \"press\"\ndata = \"" + fz.string() + "\"\nx = \"travel\"\ny = \"fz\"\nnoise = 1.0\n"));
+  const auto problem = inverse::read_fit_file(f.string());
+  ASSERT_TRUE(problem.scene_runs);
+  EXPECT_TRUE(problem.parameters->has_scene_inputs());
+  inverse::FitRunOptions options;
+  options.threads = 2;
+  const auto r = inverse::run_fit(problem, options);
+  std::printf("mu %.6f (start 0.14), %d iterations, %ld scene runs, %ld experiment evaluations, %.1f s, cost %.3g -> %.3g\n", r.values[0],
+              r.iterations, r.scene_runs, r.forward_runs, r.wall_seconds, r.cost_initial, r.cost_final);
+  ASSERT_TRUE(r.usable) << r.termination;
+  EXPECT_NEAR(r.values[0], 0.1, 1e-4);
+  ASSERT_EQ(r.uncertainty.ci95_lower.size(), 1u);
+  EXPECT_LE(r.uncertainty.ci95_lower[0], 0.1 + 1e-4);
+  EXPECT_GE(r.uncertainty.ci95_upper[0], 0.1 - 1e-4);
+  // Two experiments read each run: at most half as many scene runs as experiment evaluations.
+  EXPECT_LE(2 * r.scene_runs, r.forward_runs);
+  EXPECT_TRUE(r.failed_runs.empty());
+}
+
+}  // namespace
+
+// The central-difference Jacobian of an FE experiment (the fit's own, numeric_cost.hpp: relative
+// step 1e-6) against a reference with 100 times the step: the columns agree to 1e-4 of their
+// norm (docs/identification.md, "Derivatives": the forward model's noise lies far below).
+TEST(FeFit, JacobianOfAForceCurveAgreesWithALargerStep) {
+  const TinyLineData fx = tiny_line_data("fx");
+  const fs::path f = write_fit(fit_head(std::string(kFriction) + "[parameters.\"swift.K\"]\ninitial = 150.0\nlower = 100.0\nupper = 300.0\n") +
+                               experiment(fx.scene, "data = \"" + fx.data.string() + "\"\nx = \"travel\"\ny = \"fx\"\nnoise = 1.0\n"));
+  const auto problem = inverse::read_fit_file(f.string());
+  const auto& ps = *problem.parameters;
+  const inverse::Experiment& e = *problem.experiments.front();
+  const int m = e.num_residuals(), p = ps.num_free();
+  std::atomic<long> runs{0};
+  inverse::NumericDiffExperimentCost cost(&ps, &e, &runs);
+  const std::vector<double> x = ps.initial_internal();
+  std::vector<double> r(static_cast<std::size_t>(m)), jac(static_cast<std::size_t>(m * p));
+  const double* xs[] = {x.data()};
+  double* jacs[] = {jac.data()};
+  ASSERT_TRUE(cost.Evaluate(xs, r.data(), jacs));
+  for (int k = 0; k < p; ++k) {
+    const double h = 1e-4 * std::abs(x[static_cast<std::size_t>(k)]);
+    std::vector<double> xp = x, xm = x, rp(r.size()), rm(r.size());
+    xp[static_cast<std::size_t>(k)] += h;
+    xm[static_cast<std::size_t>(k)] -= h;
+    ASSERT_TRUE(e.residuals(ps.point(xp.data()), rp.data()));
+    ASSERT_TRUE(e.residuals(ps.point(xm.data()), rm.data()));
+    double diff = 0.0, norm = 0.0;
+    for (int i = 0; i < m; ++i) {
+      const double ref = (rp[static_cast<std::size_t>(i)] - rm[static_cast<std::size_t>(i)]) / (2.0 * h);
+      diff += std::pow(jac[static_cast<std::size_t>(i * p + k)] - ref, 2);
+      norm += ref * ref;
+    }
+    std::printf("column %d: |J| %.4g, relative difference %.2e\n", k, std::sqrt(norm), std::sqrt(diff / norm));
+    EXPECT_GT(norm, 0.0);
+    EXPECT_LT(std::sqrt(diff / norm), 1e-4) << "column " << k;
+  }
+}
