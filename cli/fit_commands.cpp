@@ -8,6 +8,7 @@
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/run_fit.hpp"
 #include "inverse/fit_file.hpp"
+#include "inverse/evaluation_cache.hpp"
 #include "inverse/fit_output.hpp"
 #include "inverse/sweep.hpp"
 #include "inverse/synthetic.hpp"
@@ -26,13 +27,15 @@
 namespace spifit::cli {
 
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
-  struct Opts { std::string file, out, algorithm; bool force = false; unsigned seed = 42; int multistart = 0; };
+  struct Opts { std::string file, out, algorithm; bool force = false, resume = false; unsigned seed = 42; int multistart = 0; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("fit", "Identify material parameters: fit a card to the experiments of a fit file (Ceres)");
   cmd->add_option("FIT", o->file, "fit file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory (fit.json, card.toml, experiments/*.csv)")->required();
   cmd->add_option("--algorithm", o->algorithm, std::string("override the fit file: ") + inverse::fit_algorithm_names());
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
+  cmd->add_flag("--resume", o->resume, "continue a killed fit in its output directory: the FE evaluations it finished are read back, not run")
+      ->excludes("--force");
   cmd->add_option("--seed", o->seed, "seed of NLopt's stochastic algorithms and of multi-start draws (default 42)");
   cmd->add_option("--multistart", o->multistart, "number of starts (overrides [fit] multistart)")->check(CLI::Range(1, 10000));
   cmd->callback([o, &g, &exit_code] {
@@ -40,7 +43,16 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file);
-    const auto dir = prepare_output(o->out, o->force, {o->file, problem.parameters->base().file});
+    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, problem.input_files);
+    if (problem.scene_runs) {
+      // The FE evaluations, kept as they finish (DIR/runs/evaluations.jsonl) for --resume.
+      auto cache = std::make_shared<inverse::EvaluationCache>(dir.path() / "runs" / "evaluations.jsonl",
+                                                             inverse::files_signature(problem.input_files), o->resume);
+      if (o->resume && !g.quiet) std::cout << "resuming: " << cache->loaded() << " FE evaluations read back\n";
+      problem.scene_runs->keep_evaluations(std::move(cache));
+    } else if (o->resume) {
+      throw io::InputError(o->file, "experiment", "", "--resume continues fits with FE experiments (the others take seconds)");
+    }
     nlohmann::json running{{"status", "running"}, {"fit_file", o->file}};
     dir.write_file("summary.json", running.dump(2) + "\n");
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -78,31 +90,75 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   });
 }
 
+namespace {
+
+// --set NAME=VALUE on a scene: io::InputError naming --set and the text when the name is not an
+// input of the scene or the value is not one it can run with.
+void set_scene_input(scene::Scene& sc, const std::string& assignment) {
+  const std::size_t eq = assignment.find('=');
+  if (eq == std::string::npos) throw io::InputError("", "--set", assignment, "expected NAME=VALUE");
+  const std::string name = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  double v = 0.0;
+  try {
+    std::size_t used = 0;
+    v = std::stod(text, &used);
+    if (used != text.size()) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw io::InputError("", "--set", assignment, "the value is not a number");
+  }
+  std::string why;
+  try {
+    why = sc.set_input(name, v);
+  } catch (const std::invalid_argument& e) {
+    why = e.what();
+  }
+  if (!why.empty()) throw io::InputError(sc.file(), "--set", assignment, why);
+}
+
+}  // namespace
+
 void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, const std::string& command_line) {
-  struct Opts { std::string scene, out, material; inverse::SyntheticOptions syn; bool force = false; };
+  struct Opts { std::string scene, out, material; std::vector<std::string> set; inverse::SyntheticOptions syn; bool force = false; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("synth", "Write a SYNTHETIC measurement (twin experiment): a scene's curve with seeded noise");
-  cmd->add_option("SCENE", o->scene, "material-point scene file (TOML)")->required();
+  cmd->add_option("SCENE", o->scene, "scene file (TOML): a material point, or an FE scene with a tool")->required();
   cmd->add_option("--out", o->out, "CSV file to write")->required();
   cmd->add_option("--material", o->material, "generating card (default: the scene's)");
-  cmd->add_option("--x", o->syn.x, "abscissa column (strain, cumulative_strain, increment)");
-  cmd->add_option("--y", o->syn.y, "response column (stress, eps_ww, eps_zz, ...)");
+  cmd->add_option("--set", o->set, "NAME=VALUE: a named input of an FE scene for this run (e.g. contact.friction=0.05); repeatable");
+  cmd->add_option("--x", o->syn.x, "abscissa column: strain, cumulative_strain, increment (material point; default strain); depth, travel, time (FE; default depth)");
+  cmd->add_option("--y", o->syn.y, "response column: stress, eps_ww, eps_zz, ... (material point; default stress); fx, fy, fz, fr, ftheta (FE; default fz)");
   cmd->add_option("--noise", o->syn.noise, "standard deviation of the Gaussian noise on y (units of y)");
   cmd->add_option("--seed", o->syn.seed, "random seed");
   cmd->add_option("--every", o->syn.every, "keep every k-th increment");
   cmd->add_flag("--force", o->force, "overwrite an existing file");
-  cmd->callback([o, &g, &exit_code, command_line] {
+  cmd->callback([o, &g, &exit_code, command_line, cmd] {
     const std::string kind = scene::scene_kind_of_file(o->scene);
     const scene::SceneKind* k = scene::find_scene_kind(kind);
     if (!k) throw io::InputError(o->scene, "scene.kind", kind, "unknown scene kind (known: " + scene::scene_kind_names() + ")");
-    if (k->family != "material_point")
-      throw io::InputError(o->scene, "scene.kind", kind, "synth writes the curve of a material-point scene (tensile, shear, bauschinger, plane_strain, biaxial)");
-    auto scene = scene::read_material_point_scene(o->scene);
-    if (!o->material.empty()) scene.card = material::load_material_card(o->material);
     if (std::filesystem::exists(o->out) && !o->force) throw io::InputError("", "--out", o->out, "file exists; pass --force to overwrite");
     o->syn.command = command_line;
-    const std::string csv = with_option_names({{"x", "--x"}, {"y", "--y"}, {"every", "--every"}, {"noise", "--noise"}},
-                                              [&] { return inverse::synthetic_measurement_csv(scene, o->syn); });
+    const bool fe = k->family != "material_point";
+    if (fe) {
+      if (cmd->count("--x") == 0) o->syn.x = "depth";
+      if (cmd->count("--y") == 0) o->syn.y = "fz";
+    }
+    std::string card_name;
+    const std::string csv = with_option_names({{"x", "--x"}, {"y", "--y"}, {"every", "--every"}, {"noise", "--noise"}}, [&] {
+      if (!fe) {
+        if (!o->set.empty()) throw io::InputError("", "--set", o->set.front(), "only for FE scenes (a material-point scene's inputs are its file's)");
+        auto scene = scene::read_material_point_scene(o->scene);
+        if (!o->material.empty()) scene.card = material::load_material_card(o->material);
+        card_name = scene.card.name;
+        return inverse::synthetic_measurement_csv(scene, o->syn);
+      }
+      auto scene = scene::read_scene(o->scene);
+      if (!scene->tool_centre_path() || !scene->card())
+        throw io::InputError(o->scene, "scene.kind", kind, "synth writes a material-point curve or the tool force of an FE scene with a tool and a card");
+      if (!o->material.empty()) *scene->card() = material::load_material_card(o->material);
+      for (const std::string& a : o->set) set_scene_input(*scene, a);
+      card_name = scene->card()->name;
+      return inverse::synthetic_force_curve_csv(*scene, o->syn);
+    });
     const std::string tmp = o->out + ".tmp";
     {
       std::ofstream f(tmp, std::ios::trunc);
@@ -110,7 +166,7 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
       f << csv;
     }
     std::filesystem::rename(tmp, o->out);
-    if (!g.quiet) std::cout << "wrote " << o->out << " (synthetic, card " << scene.card.name << ", noise " << o->syn.noise << ", seed " << o->syn.seed << ")\n";
+    if (!g.quiet) std::cout << "wrote " << o->out << " (synthetic, card " << card_name << ", noise " << o->syn.noise << ", seed " << o->syn.seed << ")\n";
     exit_code = 0;
   });
 }

@@ -44,30 +44,41 @@ inline CliResult run_spifit(const std::string& args) {
   return r;
 }
 
-// Runs `spifit -q run SCENE --out OUT` in a child process and kills it with SIGKILL `delay`
-// after the file `marker` (e.g. its first checkpoint) appears. Returns whether the kill hit the
-// running process (false: it finished first, or the marker never appeared within 300 s).
-inline bool run_and_kill(const std::filesystem::path& scene, const std::filesystem::path& out, const std::filesystem::path& marker,
-                         std::chrono::milliseconds delay) {
+// Runs `spifit ARGS...` in a child process (stdout and stderr to /dev/null) and kills it with
+// SIGKILL once `ready()` holds (checked every 10 ms) and `delay` has passed. Returns whether the
+// kill hit the running process (false: it finished first, or ready() never held within 300 s).
+template <typename Ready>
+bool spifit_and_kill(const std::vector<std::string>& args, Ready ready, std::chrono::milliseconds delay) {
   const pid_t pid = ::fork();
   if (pid < 0) return false;
   if (pid == 0) {
     const int null = ::open("/dev/null", O_WRONLY);
     ::dup2(null, 1);
     ::dup2(null, 2);
-    ::execl(SPIFIT_EXE, SPIFIT_EXE, "-q", "run", scene.c_str(), "--out", out.c_str(), static_cast<char*>(nullptr));
+    std::vector<char*> argv{const_cast<char*>(SPIFIT_EXE)};
+    for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    ::execv(SPIFIT_EXE, argv.data());
     ::_exit(127);
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(300);
   int status = 0;
-  while (!std::filesystem::exists(marker) && std::chrono::steady_clock::now() < deadline) {
+  bool is_ready = false;
+  while (!(is_ready = ready()) && std::chrono::steady_clock::now() < deadline) {
     if (::waitpid(pid, &status, WNOHANG) == pid) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  if (std::filesystem::exists(marker)) std::this_thread::sleep_for(delay);
+  if (is_ready) std::this_thread::sleep_for(delay);
   ::kill(pid, SIGKILL);
   ::waitpid(pid, &status, 0);
   return WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL;
+}
+
+// `spifit -q run SCENE --out OUT`, killed `delay` after the file `marker` (e.g. its first
+// checkpoint) appears.
+inline bool run_and_kill(const std::filesystem::path& scene, const std::filesystem::path& out, const std::filesystem::path& marker,
+                         std::chrono::milliseconds delay) {
+  return spifit_and_kill({"-q", "run", scene.string(), "--out", out.string()}, [&] { return std::filesystem::exists(marker); }, delay);
 }
 
 }  // namespace spifit::test
