@@ -1,5 +1,7 @@
 #include "inverse/fe_experiment.hpp"
 
+#include "forward/scenes/forming/forming_result.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -25,6 +27,35 @@ double component(const std::string& y, const Eigen::Vector3d& centre, const Eige
   const double theta = std::atan2(centre.y(), centre.x());
   const double c = std::cos(theta), s = std::sin(theta);
   return y == "fr" ? c * f.x() + s * f.y() : -s * f.x() + c * f.y();
+}
+
+// The conditioning of a measured curve: its stated noise or the range of its y; per-point weights.
+double curve_scale(double noise, const std::vector<double>& ys) {
+  if (noise > 0) return noise;
+  const auto [lo, hi] = std::minmax_element(ys.begin(), ys.end());
+  return *hi - *lo > 0 ? *hi - *lo : 1.0;
+}
+std::vector<double> sqrt_weights(double weight, std::size_t n, const std::vector<double>& point_weights) {
+  std::vector<double> w;
+  for (std::size_t i = 0; i < n; ++i) w.push_back(std::sqrt(weight * (point_weights.empty() ? 1.0 : point_weights[i])));
+  return w;
+}
+
+// Residuals of measured (xs, ys) against the simulated curve c, interpolated linearly at xs;
+// false when an xs lies outside c (never extrapolate).
+bool curve_residuals(const ForceCurve& c, const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& sqrt_w,
+                     double scale, double* r, std::vector<double>* simulated) {
+  std::size_t seg = 0;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const double x = xs[i];
+    if (c.x.size() < 2 || x < c.x.front() - 1e-9 || x > c.x.back() + 1e-9) return false;
+    while (seg + 2 < c.x.size() && c.x[seg + 1] < x) ++seg;
+    const double u = std::clamp((x - c.x[seg]) / (c.x[seg + 1] - c.x[seg]), 0.0, 1.0);
+    const double y = c.y[seg] + (c.y[seg + 1] - c.y[seg]) * u;
+    r[i] = sqrt_w[i] * (y - ys[i]) / scale;
+    if (simulated) (*simulated)[i] = y;
+  }
+  return true;
 }
 
 // The FE experiments' common part: the run at a point (from the shared runs) and conditioning.
@@ -96,13 +127,8 @@ class ForceCurveExperiment final : public FeExperiment {
  public:
   explicit ForceCurveExperiment(ForceCurveSpec s) : FeExperiment(s), s_(std::move(s)) {
     kind_ = "force_curve";
-    if (s_.noise > 0) {
-      scale_ = s_.noise;
-    } else {
-      const auto [lo, hi] = std::minmax_element(s_.ys.begin(), s_.ys.end());
-      scale_ = *hi - *lo > 0 ? *hi - *lo : 1.0;
-    }
-    for (std::size_t i = 0; i < s_.xs.size(); ++i) sqrt_w_.push_back(std::sqrt(s_.weight * (s_.point_weights.empty() ? 1.0 : s_.point_weights[i])));
+    scale_ = curve_scale(s_.noise, s_.ys);
+    sqrt_w_ = sqrt_weights(s_.weight, s_.xs.size(), s_.point_weights);
     thickness_ = s_.scene->input("sheet.thickness");
     radius_ = s_.scene->input("tool.radius");
     start_ = s_.scene->tool_centre_path()->at_distance(0.0);
@@ -124,19 +150,10 @@ class ForceCurveExperiment final : public FeExperiment {
     const auto* fe = dynamic_cast<const scene::FeSceneResult*>(res.get());
     if (!fe) return false;
     // The scene inputs of p may move the tool (tool.radius) or the sheet (sheet.thickness).
+    // The tool path lifts the tip by t/2 + R: its start moves with them.
     const double t = input_at(p, "sheet.thickness", thickness_), radius = input_at(p, "tool.radius", radius_);
-    const ForceCurve c = force_curve(fe->force, start_, t, radius, s_.x, s_.y);
-    std::size_t seg = 0;
-    for (std::size_t i = 0; i < s_.xs.size(); ++i) {
-      const double x = s_.xs[i];
-      if (c.x.size() < 2 || x < c.x.front() - 1e-9 || x > c.x.back() + 1e-9) return false;  // never extrapolate
-      while (seg + 2 < c.x.size() && c.x[seg + 1] < x) ++seg;
-      const double u = std::clamp((x - c.x[seg]) / (c.x[seg + 1] - c.x[seg]), 0.0, 1.0);
-      const double y = c.y[seg] + (c.y[seg + 1] - c.y[seg]) * u;
-      r[i] = sqrt_w_[i] * (y - s_.ys[i]) / scale_;
-      if (simulated) (*simulated)[i] = y;
-    }
-    return true;
+    const Eigen::Vector3d start = start_ + Eigen::Vector3d(0.0, 0.0, 0.5 * (t - thickness_) + (radius - radius_));
+    return curve_residuals(force_curve(fe->force, start, t, radius, s_.x, s_.y), s_.xs, s_.ys, sqrt_w_, scale_, r, simulated);
   }
   static double input_at(const ParameterPoint& p, const char* name, double fallback) {
     for (const auto& [n, v] : p.scene)
@@ -149,7 +166,57 @@ class ForceCurveExperiment final : public FeExperiment {
   Eigen::Vector3d start_ = Eigen::Vector3d::Zero();
 };
 
+class SectionExperiment final : public FeExperiment {
+ public:
+  explicit SectionExperiment(SectionSpec s) : FeExperiment(s), s_(std::move(s)) {
+    kind_ = "section";
+    scale_ = curve_scale(s_.noise, s_.ys);
+    sqrt_w_ = sqrt_weights(s_.weight, s_.xs.size(), s_.point_weights);
+  }
+  int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
+  ExperimentCurve axes() const override { return {s_.x, s_.y, "mm", "mm", {}, {}, {}}; }
+  ExperimentCurve compare(const ParameterPoint& p) const override {
+    ExperimentCurve c{s_.x, s_.y, "mm", "mm", s_.xs, s_.ys, {}};
+    std::vector<double> r(s_.xs.size()), sim(s_.xs.size());
+    if (eval(p, r.data(), &sim)) c.simulated = sim;
+    return c;
+  }
+
+ private:
+  bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
+  bool eval(const ParameterPoint& p, double* r, std::vector<double>* simulated) const {
+    const auto res = run_at(p);
+    return res && curve_residuals(section_curve(*res, s_.point, s_.x, s_.y), s_.xs, s_.ys, sqrt_w_, scale_, r, simulated);
+  }
+  SectionSpec s_;
+  std::vector<double> sqrt_w_;
+};
+
 }  // namespace
+
+std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec) { return std::make_unique<SectionExperiment>(std::move(spec)); }
+bool is_section_abscissa(const std::string& x) { return x == "x" || x == "x0"; }
+bool is_section_response(const std::string& y) { return y == "z" || y == "thickness"; }
+
+ForceCurve section_curve(const scene::SceneResult& r, const std::string& point, const std::string& x, const std::string& y) {
+  ForceCurve c;
+  const auto* f = dynamic_cast<const scene::FormingResult*>(&r);
+  if (!f) return c;
+  for (const auto& s : f->sections) {
+    if (s.point != point) continue;
+    const std::vector<double> xs = s.nodes.column(x), ys = s.nodes.column(y);
+    std::vector<std::size_t> order(xs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return xs[a] < xs[b]; });
+    for (std::size_t i : order) {
+      if (!c.x.empty() && !(xs[i] > c.x.back())) return {};  // two nodes at one x: a fold
+      c.x.push_back(xs[i]);
+      c.y.push_back(ys[i]);
+    }
+    break;
+  }
+  return c;
+}
 
 std::unique_ptr<Experiment> make_fe_scalar_experiment(FeScalarSpec spec) { return std::make_unique<FeScalarExperiment>(std::move(spec)); }
 std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec) { return std::make_unique<ForceCurveExperiment>(std::move(spec)); }

@@ -41,6 +41,17 @@ struct ForceCurveSpec : FeExperimentBase {
 };
 std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec);
 
+// A section y = 0 of a forming scene at a named path point (its [output] sections): the
+// mid-surface height z or the thickness against x (deformed) or x0 (initial), mm.
+struct SectionSpec : FeExperimentBase {
+  std::string point;
+  std::string x = "x", y = "z";  // x | x0; z | thickness
+  std::vector<double> xs, ys, point_weights;
+};
+std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec);
+bool is_section_abscissa(const std::string& x);
+bool is_section_response(const std::string& y);
+
 // depth (of the tool tip below the initial top surface, mm), travel (mm along the path), time (s).
 const char* force_curve_abscissa_names();
 bool is_force_curve_abscissa(const std::string& x);
@@ -60,5 +71,9 @@ ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& 
 
 // The range [x at the start, x where it stops increasing] of an abscissa along a tool centre path.
 std::pair<double, double> force_curve_range(const toolpath::ToolPath& centre, double thickness, double tool_radius, const std::string& x);
+
+// The section's y against x from a forming result (nodes ordered by x); empty when the result
+// has no section at `point` or x does not increase along it.
+ForceCurve section_curve(const scene::SceneResult& r, const std::string& point, const std::string& x, const std::string& y);
 
 }  // namespace spifit::inverse

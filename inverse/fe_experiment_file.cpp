@@ -3,6 +3,7 @@
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/measurement.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -57,11 +58,61 @@ std::unique_ptr<Experiment> scalar(const io::TomlTable& e, FeExperimentBase base
   return make_fe_scalar_experiment(std::move(s));
 }
 
+// The measured (x, y) of a curve: strictly increasing x inside [lo, hi]; per-point weights.
+struct CurveData {
+  std::vector<double> xs, ys, weights;
+  std::string y_unit;
+};
+CurveData read_curve_data(const io::TomlTable& e, const std::string& path, const std::string& x, const std::string& y, double lo, double hi,
+                          const std::string& range_note) {
+  const std::string data_path = resolve(path, e.string("data"));
+  const auto table = read_measurement_csv(data_path);
+  CurveData d{table.column(x), table.column(y), {}, table.units.at(y)};
+  if (e.has("weight_column")) {
+    d.weights = table.column(e.string("weight_column"));
+    for (double w : d.weights)
+      if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
+  }
+  if (d.xs.empty()) throw InputError(data_path, "column " + x, "", "no data rows");
+  for (std::size_t i = 0; i < d.xs.size(); ++i) {
+    if (i > 0 && !(d.xs[i] > d.xs[i - 1]))
+      throw InputError(data_path, "column " + x, format_number(d.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
+    if (d.xs[i] < lo - 1e-9 || d.xs[i] > hi + 1e-9)
+      throw InputError(data_path, "column " + x, format_number(d.xs[i]),
+                       "outside the simulated range [" + format_number(lo) + ", " + format_number(hi) + "] " + range_note);
+  }
+  return d;
+}
+
+// section = "C": the section y = 0 at a named path point of a forming scene.
+std::unique_ptr<Experiment> section(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
+  SectionSpec c;
+  static_cast<FeExperimentBase&>(c) = std::move(base);
+  c.point = e.string("section");
+  const auto points = c.scene->section_points();
+  if (std::find(points.begin(), points.end(), c.point) == points.end()) {
+    std::string known;
+    for (const auto& p : points) known += (known.empty() ? "" : ", ") + p;
+    e.fail("section", "scene " + c.scene->name() + " takes no section at this path point (its [output] sections: " + (known.empty() ? "none" : known) + ")");
+  }
+  c.x = e.string("x", "x");
+  c.y = e.string("y", "z");
+  if (!is_section_abscissa(c.x)) e.fail("x", "not an abscissa of a section (known: x, x0)");
+  if (!is_section_response(c.y)) e.fail("y", "not a column of a section (known: z, thickness)");
+  const double half = 0.5 * c.scene->input("sheet.length");
+  CurveData d = read_curve_data(e, path, c.x, c.y, -half, half, "mm (the sheet)");
+  if (!d.y_unit.empty() && d.y_unit != "mm") e.fail("data", "column " + c.y + " is in " + d.y_unit + "; sections are compared in mm");
+  c.xs = std::move(d.xs);
+  c.ys = std::move(d.ys);
+  c.point_weights = std::move(d.weights);
+  return make_section_experiment(std::move(c));
+}
+
 }  // namespace
 
 const std::vector<std::string>& fe_experiment_keys() {
-  static const std::vector<std::string> keys{"name",   "scene", "data",  "x",      "y",     "noise",
-                                             "weight", "weight_column", "observable", "value", "window", "contours", "source"};
+  static const std::vector<std::string> keys{"name",   "scene",         "data",       "x",     "y",      "noise",    "weight",
+                                             "weight_column", "observable", "value", "window", "contours", "source", "section"};
   return keys;
 }
 
@@ -73,35 +124,23 @@ std::unique_ptr<Experiment> read_fe_experiment(const io::TomlTable& e, const std
     return scalar(e, std::move(base));
   }
   for (const char* k : {"value", "window", "contours"})
-    if (e.has(k)) e.fail(k, "a force curve (data = ...) takes no scalar keys; a scalar needs observable = ...");
+    if (e.has(k)) e.fail(k, "a curve (data = ...) takes no scalar keys; a scalar needs observable = ...");
+  if (e.has("section")) return section(e, path, std::move(base));
   ForceCurveSpec c;
   static_cast<FeExperimentBase&>(c) = std::move(base);
   c.x = e.string("x", "depth");
   c.y = e.string("y", "fz");
   if (!is_force_curve_abscissa(c.x)) e.fail("x", std::string("not an abscissa of a force curve (known: ") + force_curve_abscissa_names() + ")");
   if (!is_force_component(c.y)) e.fail("y", std::string("not a tool-force component (known: ") + force_component_names() + ")");
-  const std::string data_path = resolve(path, e.string("data"));
-  const auto table = read_measurement_csv(data_path);
-  c.xs = table.column(c.x);
-  c.ys = table.column(c.y);
-  c.y_unit = table.units.at(c.y).empty() ? "N" : table.units.at(c.y);
-  if (c.y_unit != "N") throw InputError(data_path, "column " + c.y, c.y_unit, "tool forces are compared in N");
-  if (e.has("weight_column")) {
-    c.point_weights = table.column(e.string("weight_column"));
-    for (double w : c.point_weights)
-      if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
-  }
   const double t = c.scene->input("sheet.thickness"), radius = c.scene->input("tool.radius");
   const auto [lo, hi] = force_curve_range(*c.scene->tool_centre_path(), t, radius, c.x);
-  for (std::size_t i = 0; i < c.xs.size(); ++i) {
-    if (i > 0 && !(c.xs[i] > c.xs[i - 1]))
-      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
-    if (c.xs[i] < lo - 1e-9 || c.xs[i] > hi + 1e-9)
-      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]),
-                       "outside the simulated range [" + format_number(lo) + ", " + format_number(hi) + "] " + force_curve_abscissa_unit(c.x) +
-                           " of scene " + c.scene->name() + (c.x == "depth" ? " (the depth while the tool goes down)" : ""));
-  }
-  if (c.xs.empty()) throw InputError(data_path, "column " + c.x, "", "no data rows");
+  CurveData d = read_curve_data(e, path, c.x, c.y, lo, hi,
+                                std::string(force_curve_abscissa_unit(c.x)) + " of scene " + c.scene->name() +
+                                    (c.x == "depth" ? " (the depth while the tool goes down)" : ""));
+  if (!d.y_unit.empty() && d.y_unit != "N") e.fail("data", "column " + c.y + " is in " + d.y_unit + "; tool forces are compared in N");
+  c.xs = std::move(d.xs);
+  c.ys = std::move(d.ys);
+  c.point_weights = std::move(d.weights);
   return make_force_curve_experiment(std::move(c));
 }
 

@@ -294,6 +294,14 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
 
 }  // namespace
 
+FitSettings fe_fit_settings() {
+  FitSettings s;
+  s.function_tolerance = 1e-9;
+  s.parameter_tolerance = 1e-8;
+  s.gradient_tolerance = 1e-10;
+  return s;
+}
+
 FitProblem read_fit_file(const std::string& path) {
   const auto root = io::TomlTable::parse_file(path);
   root.allow_only({"fit", "parameters", "experiment"});
@@ -307,6 +315,13 @@ FitProblem read_fit_file(const std::string& path) {
   if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
   std::vector<const scene::Scene*> fe_scenes;
   for (const auto& e : exps) fp.experiments.push_back(read_experiment(e, path, card, fp, fe_scenes));
+  if (fp.scene_runs) {
+    const FitSettings fe = fe_fit_settings();
+    const auto ft = root.table("fit");
+    if (!ft->has("function_tolerance")) fp.settings.function_tolerance = fe.function_tolerance;
+    if (!ft->has("parameter_tolerance")) fp.settings.parameter_tolerance = fe.parameter_tolerance;
+    if (!ft->has("gradient_tolerance")) fp.settings.gradient_tolerance = fe.gradient_tolerance;
+  }
   read_parameters(root, card, normalise, fe_scenes, fp);
   check_card_at_bounds(path, fp);
   return fp;

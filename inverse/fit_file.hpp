@@ -19,6 +19,12 @@ struct FitSettings {
   double gradient_tolerance = 1e-14;
 };
 
+// The defaults of a fit with FE experiments (unless the fit file states them): an FE run's cost
+// wobbles from one evaluation to the next by about 1e-11 of itself at the solution (the Newton
+// tolerances), so the tolerances above would keep Levenberg-Marquardt stepping on that noise
+// (docs/identification.md, "Stopping").
+FitSettings fe_fit_settings();
+
 struct FitProblem {
   std::string name, description, file;
   std::unique_ptr<ParameterSet> parameters;

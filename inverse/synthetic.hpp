@@ -27,6 +27,10 @@ std::string synthetic_measurement_csv(const scene::MaterialPointScene& scene, co
 // the path to where x stops increasing (fe_experiment.hpp), every k-th increment.
 std::string synthetic_force_curve_csv(const scene::Scene& scene, const SyntheticOptions& options);
 
+// The section y = 0 of a forming scene at path point `point` (options.y: z or thickness against
+// options.x: x or x0), every k-th node.
+std::string synthetic_section_csv(const scene::Scene& scene, const std::string& point, const SyntheticOptions& options);
+
 // Standard normal deviates: std::mt19937_64 (its sequence is fixed by the C++ standard) and
 // Box-Muller written out (std::normal_distribution differs between standard libraries), so
 // the same seed gives the same numbers everywhere.

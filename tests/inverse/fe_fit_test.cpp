@@ -122,6 +122,8 @@ TEST(FeFitFile, InputErrorsNameFileKeyAndValue) {
       {fit_head(kFriction) + experiment(scene, "observable = \"mean_fx\"\nvalue = 1.0\nwindow = [0.0, 90.0]\n"), {"window", "inside the tool path's travel"}},
       {fit_head(kFriction) + experiment(scene, "observable = \"increments\"\nvalue = 100.0\n"), {"observable = \"increments\"", "a count of the run"}},
       {fit_head(kFriction) + experiment(scene, curve + "value = 3.0\n"), {"value", "takes no scalar keys"}},
+      {fit_head(kFriction) + experiment(scene, "section = \"Q\"\n" + curve), {"section = \"Q\"", "no section at this path point", "C, E"}},
+      {fit_head(kFriction) + experiment(scene, "section = \"E\"\ny = \"width\"\n" + curve), {"y = \"width\"", "z, thickness"}},
       {fit_head("[parameters.\"swift.K\"]\nlower = 50.0\nupper = 500.0\n[parameters.\"contact.friction\"]\nlower = 0.0\nupper = 0.5\n") +
            experiment(src("experiments/aa3003o/scenes/tensile_00.toml"), "data = \"" + src("experiments/aa3003o/data/tensile_00_c2_synthetic.csv") + "\"\n"),
        {"parameters.contact.friction", "unknown parameter", "with an FE scene"}},
@@ -185,7 +187,6 @@ TEST(FeFit, TinyLineFrictionIsRecoveredAndExperimentsShareTheirRuns) {
   EXPECT_TRUE(r.failed_runs.empty());
 }
 
-}  // namespace
 
 // The central-difference Jacobian of an FE experiment (the fit's own, numeric_cost.hpp: relative
 // step 1e-6) against a reference with 100 times the step: the columns agree to 1e-4 of their
@@ -223,3 +224,26 @@ TEST(FeFit, JacobianOfAForceCurveAgreesWithALargerStep) {
     EXPECT_LT(std::sqrt(diff / norm), 1e-4) << "column " << k;
   }
 }
+
+// Twin experiment on a shape: the section at E of the tiny line test made at mu = 0.1 (no noise)
+// gives back mu from 0.14. Friction drags the sheet: the section moves by up to 0.045 mm between
+// mu = 0 and 0.2 on this coarse mesh (docs/identification.md, "What each observable identifies").
+TEST(FeFit, TinyLineFrictionFromTheSectionAtE) {
+  const fs::path scene = test::write_tiny_line(test::temp_path("line.toml"));
+  std::ofstream(scene, std::ios::app) << "[contact]\nfriction = 0.1\n";
+  const fs::path data = test::temp_path("section_E.csv");
+  inverse::SyntheticOptions o;
+  o.x = "x";
+  o.y = "z";
+  std::ofstream(data) << inverse::synthetic_section_csv(*scene::read_scene(scene.string()), "E", o);
+  const fs::path f = write_fit(fit_head(kFriction) + experiment(scene, "section = \"E\"\ndata = \"" + data.string() + "\"\nnoise = 0.01\n"));
+  const auto problem = inverse::read_fit_file(f.string());
+  inverse::FitRunOptions options;
+  options.threads = 2;
+  const auto r = inverse::run_fit(problem, options);
+  std::printf("mu %.6f from the section (start 0.14), %d iterations, %ld scene runs, %.1f s\n", r.values[0], r.iterations, r.scene_runs, r.wall_seconds);
+  ASSERT_TRUE(r.usable) << r.termination;
+  EXPECT_NEAR(r.values[0], 0.1, 1e-3);
+}
+
+}  // namespace

@@ -43,6 +43,8 @@ class Scene {
   // The path of the tool centre of a scene with a tool (nothing for the others): what a fit
   // checks measured travels and depths against before anything runs.
   virtual std::optional<toolpath::ToolPath> tool_centre_path() const { return std::nullopt; }
+  // The path points where the run takes a section y = 0 (forming scenes' [output] sections).
+  virtual std::vector<std::string> section_points() const { return {}; }
 
   // Named inputs: the kind's own (its InputTable) and the card's parameters (material_inputs).
   // input: std::invalid_argument for a name that is neither. set_input: "" when set, else why

@@ -25,6 +25,7 @@ class FormingSceneFile final : public TableScene<FormingScene> {
     return std::make_unique<FormingResult>(run_forming_scene(data_, files, control));
   }
   std::optional<toolpath::ToolPath> tool_centre_path() const override { return forming_centre_path(data_); }
+  std::vector<std::string> section_points() const override { return data_.sections; }
 
  protected:
   std::string check_inputs() const override { return forming_scene_error(data_).text(); }
