@@ -85,7 +85,7 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   const auto ft = root.table("fit");
   if (!ft) root.fail("fit", "required table [fit] is missing");
   ft->allow_only({"name", "description", "card", "normalise_hill", "algorithm", "max_iterations", "function_tolerance",
-                  "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart"});
+                  "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart", "run_time_limit"});
   fp.multistart = ft->integer("multistart", 1);
   if (fp.multistart < 1 || fp.multistart > 10000) ft->fail("multistart", "must lie in [1, 10000]");
   fp.per_experiment = ft->boolean("per_experiment", false);
@@ -103,6 +103,8 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   st.function_tolerance = ft->number("function_tolerance", st.function_tolerance);
   st.parameter_tolerance = ft->number("parameter_tolerance", st.parameter_tolerance);
   st.gradient_tolerance = ft->number("gradient_tolerance", st.gradient_tolerance);
+  st.run_time_limit = ft->number("run_time_limit", 0.0);
+  if (!(st.run_time_limit >= 0.0)) ft->fail("run_time_limit", "must be >= 0 s (0: no limit)");
   for (const char* k : {"function_tolerance", "parameter_tolerance", "gradient_tolerance"}) {
     if (ft->has(k) && !(ft->number(k) >= 0)) ft->fail(k, "must be >= 0");
   }
@@ -284,7 +286,7 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   const double weight = e.number("weight", 1.0);
   if (!(weight > 0)) e.fail("weight", "must be > 0");
   if (fe) {
-    if (!fp.scene_runs) fp.scene_runs = std::make_shared<SceneRuns>(card.params);
+    if (!fp.scene_runs) fp.scene_runs = std::make_shared<SceneRuns>(card.params, fp.settings.run_time_limit);
     fe_scenes.push_back(fe_scene.get());
     return read_fe_experiment(e, path, FeExperimentBase{name, fe_scene, fp.scene_runs, noise, weight});
   }

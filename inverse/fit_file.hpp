@@ -17,6 +17,7 @@ struct FitSettings {
   double function_tolerance = 1e-14;
   double parameter_tolerance = 1e-12;
   double gradient_tolerance = 1e-14;
+  double run_time_limit = 0.0;  // s of wall time one FE forward run may take (0: no limit)
 };
 
 // The defaults of a fit with FE experiments (unless the fit file states them): an FE run's cost

@@ -101,7 +101,9 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
       ++runs_;
     }
     try {
-      std::shared_ptr<const scene::SceneResult> r = sc->run(scene::RunFiles(), {});
+      scene::RunControl control;
+      control.time_limit_seconds = time_limit_;
+      std::shared_ptr<const scene::SceneResult> r = sc->run(scene::RunFiles(), control);
       return r;
     } catch (const std::exception& e) {
       failure.message += std::string(failure.message.empty() ? "" : "; ") + e.what();
@@ -111,6 +113,7 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
   std::shared_ptr<const scene::SceneResult> r = attempt();
   if (r && r->ok()) return r;
   if (r) failure.message += (failure.message.empty() ? "" : "; ") + r->message;
+  if (r && r->status == scene::RunStatus::timed_out) return fail(failure.message);  // smaller increments would take longer
   // Once more with half the largest increment (the scene's own cut-backs have not sufficed).
   constexpr const char* kIncrement = "solver.travel_per_increment";
   double travel = 0.0;

@@ -3,7 +3,7 @@
 // run per scene and parameter point, however many experiments read it and however many
 // threads ask at once (the pattern of Ceres's EvaluationCallback: one simulation per point,
 // read by every residual block on it). A run that fails is retried once with half the tool
-// travel per increment; what still fails is listed (fit.json "failed_runs") and its
+// travel per increment (unless it ran out of its time limit); what still fails is listed (fit.json "failed_runs") and its
 // experiments report a failed evaluation, which the optimisers survive.
 #include "forward/scenes/common/scene.hpp"
 #include "inverse/evaluation_cache.hpp"
@@ -28,8 +28,10 @@ class SceneRuns {
     bool recovered = false;  // the retry with smaller increments ran
   };
 
-  // base: the fit's starting card (failures name the parameters that differ from it).
-  explicit SceneRuns(material::MaterialParams<double> base) : base_(std::move(base)) {}
+  // base: the fit's starting card (failures name the parameters that differ from it);
+  // time_limit: seconds of wall time one run may take (0: no limit; a run past it is a failure,
+  // not retried).
+  explicit SceneRuns(material::MaterialParams<double> base, double time_limit = 0.0) : base_(std::move(base)), time_limit_(time_limit) {}
 
   // The typed result of `scene` at p: the scene with the fit's card (p.material replaces the
   // card's parameters) and p's scene inputs. Null when the run failed twice or p's inputs
@@ -47,6 +49,7 @@ class SceneRuns {
   using Entry = std::shared_future<std::shared_ptr<const scene::SceneResult>>;
   std::shared_ptr<const scene::SceneResult> run(const scene::Scene& scene, const ParameterPoint& p) const;
   material::MaterialParams<double> base_;
+  double time_limit_ = 0.0;
   std::shared_ptr<EvaluationCache> evaluations_;
   mutable std::mutex mutex_;
   mutable std::map<std::string, Entry> cache_;

@@ -155,6 +155,19 @@ TEST(SceneRuns, AnInputTheSceneRefusesIsAListedFailure) {
   EXPECT_FALSE(f.recovered);
 }
 
+// A run past the fit's time limit (run_time_limit) is a listed failure and is not retried.
+TEST(SceneRuns, ARunPastItsTimeLimitIsAListedFailure) {
+  const fs::path scene_file = test::write_tiny_line(test::temp_path("line.toml"));
+  const auto sc = scene::read_scene(scene_file.string());
+  inverse::SceneRuns runs(sc->card()->params, 0.05);  // the run takes about a second
+  EXPECT_EQ(runs.result(*sc, inverse::ParameterPoint{sc->card()->params, {}}), nullptr);
+  EXPECT_EQ(runs.runs(), 1);
+  const auto failures = runs.failures();
+  ASSERT_EQ(failures.size(), 1u);
+  EXPECT_NE(failures.front().message.find("time limit of 0.05 s passed at tool travel"), std::string::npos) << failures.front().message;
+  EXPECT_FALSE(failures.front().recovered);
+}
+
 // Twin experiment: the drag force Fx of the tiny line test made at mu = 0.1 (no noise) gives back
 // mu = 0.1 from a start 40 % off; an Fz curve on the same scene shares every run.
 TEST(FeFit, TinyLineFrictionIsRecoveredAndExperimentsShareTheirRuns) {

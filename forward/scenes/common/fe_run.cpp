@@ -1,5 +1,6 @@
 #include "forward/scenes/common/fe_run.hpp"
 
+#include "forward/io/input_error.hpp"
 #include "forward/scenes/common/run_checkpoint.hpp"
 
 #include <chrono>
@@ -24,7 +25,7 @@ class FeRun::Stepper {
 
   RunLog log;
   CheckpointRecord checkpoints;
-  bool stopped = false;
+  bool stopped = false, timed_out = false;
 
   double wall() const { return std::chrono::duration<double>(Clock::now() - t0_).count(); }
   void start_from(const RunLog& restored) {
@@ -59,6 +60,10 @@ class FeRun::Stepper {
     if ((c.stop_after_marks > 0 && log.marks_reached >= c.stop_after_marks) ||
         (c.stop_after_increments > 0 && log.increments >= c.stop_after_increments)) {
       stopped = true;
+      return false;
+    }
+    if (c.time_limit_seconds > 0.0 && wall() > c.time_limit_seconds) {
+      timed_out = true;
       return false;
     }
     return true;
@@ -185,8 +190,13 @@ FeRunOutcome FeRun::run(const nlohmann::json& head) {
                   " marks (test option)";
   } else {
     for (auto& o : observers_) o->at_end(*model_, setup_.time_of_travel(out.travel_reached));
-    out.status = r.converged ? RunStatus::ok : RunStatus::failed;
-    if (!r.converged) out.message = "at tool travel " + std::to_string(out.travel_reached) + " mm: " + r.message;
+    out.status = step.timed_out ? RunStatus::timed_out : r.converged ? RunStatus::ok : RunStatus::failed;
+    if (step.timed_out) {
+      out.message = "time limit of " + io::format_number(control_.time_limit_seconds) + " s passed at tool travel " +
+                    std::to_string(out.travel_reached) + " mm, after " + std::to_string(step.log.increments) + " increments";
+    } else if (!r.converged) {
+      out.message = "at tool travel " + std::to_string(out.travel_reached) + " mm: " + r.message;
+    }
   }
   for (auto& o : observers_) o->write(WriteReason::end);
   out.wall_seconds = step.wall();

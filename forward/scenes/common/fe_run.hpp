@@ -70,6 +70,9 @@ struct RunControl {
   // their checkpoint), or after this many increments in all (0: run to the end).
   int stop_after_marks = 0;
   int stop_after_increments = 0;
+  // End the run (status timed_out) once its wall time passes this many seconds, checked after
+  // every increment (0: no limit).
+  double time_limit_seconds = 0.0;
 };
 
 struct CheckpointRecord {
