@@ -1,0 +1,57 @@
+// The bundled fits on FE scenes as twin experiments (experiments/README.md): started 30 % or more
+// off, each recovers the values its synthetic data were made with, every one inside its 95 %
+// interval. Minutes each on 2 cores: label long (ctest -L long).
+#include "inverse/fit_file.hpp"
+#include "inverse/run_fit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+using namespace spifit;
+
+namespace {
+
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+
+inverse::FitResult fit(const std::string& file) {
+  const auto problem = inverse::read_fit_file(src("experiments/aa3003o/" + file));
+  inverse::FitRunOptions o;
+  o.threads = 2;
+  const auto r = inverse::run_fit(problem, o);
+  std::printf("%s: %s, %d iterations, %ld scene runs, %zu failed, %.1f s\n", file.c_str(), r.termination.c_str(), r.iterations, r.scene_runs,
+              r.failed_runs.size(), r.wall_seconds);
+  return r;
+}
+
+void expect_inside(const inverse::FitResult& r, int k, double truth, const char* name) {
+  std::printf("  %-12s %.6g in [%.6g, %.6g] (truth %.6g)\n", name, r.values[static_cast<std::size_t>(k)], r.uncertainty.ci95_lower[k],
+              r.uncertainty.ci95_upper[k], truth);
+  EXPECT_LE(r.uncertainty.ci95_lower[k], truth) << name;
+  EXPECT_GE(r.uncertainty.ci95_upper[k], truth) << name;
+}
+
+// Tensile + Bauschinger + the indent test's Fz(depth), all from C.7 renormalised (H = 0.807).
+TEST(FeFitsLong, AfIndentRecoversC7) {
+  const auto problem = inverse::read_fit_file(src("experiments/aa3003o/fit_af_indent.toml"));
+  const auto truth = material::load_material_card(src("materials/aa3003o_c7n_af_shell.toml"));
+  const auto r = fit("fit_af_indent.toml");
+  ASSERT_TRUE(r.usable) << r.termination;
+  EXPECT_TRUE(r.failed_runs.empty());
+  const auto& ps = *problem.parameters;
+  for (int k = 0; k < ps.num_free(); ++k) {
+    const auto& name = ps.specs()[ps.free_indices()[k]].name;
+    expect_inside(r, k, inverse::parameter_value(truth, name), name.c_str());
+  }
+}
+
+// mu from the Ftheta history of the short cone70 pie generated at mu = 0.05.
+TEST(FeFitsLong, ConeFrictionRecoversMu) {
+  const auto r = fit("fit_cone_friction.toml");
+  ASSERT_TRUE(r.usable) << r.termination;
+  EXPECT_TRUE(r.failed_runs.empty());
+  expect_inside(r, 0, 0.05, "contact.friction");
+  EXPECT_NEAR(r.values[0], 0.05, 2e-3);
+}
+
+}  // namespace
