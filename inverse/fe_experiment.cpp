@@ -123,78 +123,84 @@ class FeScalarExperiment final : public FeExperiment {
   FeScalarSpec s_;
 };
 
-class ForceCurveExperiment final : public FeExperiment {
+// A measured curve (xs, ys) against a curve the run gives: force curves and sections.
+class CurveFeExperiment : public FeExperiment {
  public:
-  explicit ForceCurveExperiment(ForceCurveSpec s) : FeExperiment(s), s_(std::move(s)) {
-    kind_ = "force_curve";
-    scale_ = curve_scale(s_.noise, s_.ys);
-    sqrt_w_ = sqrt_weights(s_.weight, s_.xs.size(), s_.point_weights);
-    thickness_ = s_.scene->input("sheet.thickness");
-    radius_ = s_.scene->input("tool.radius");
-    start_ = s_.scene->tool_centre_path()->at_distance(0.0);
+  struct Curve {
+    std::string x, y, x_unit, y_unit;
+    std::vector<double> xs, ys, point_weights;
+  };
+  CurveFeExperiment(const FeExperimentBase& b, const char* kind, Curve c) : FeExperiment(b), c_(std::move(c)) {
+    kind_ = kind;
+    scale_ = curve_scale(b.noise, c_.ys);
+    sqrt_w_ = sqrt_weights(b.weight, c_.xs.size(), c_.point_weights);
   }
-  int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
-  ExperimentCurve axes() const override { return {s_.x, s_.y, force_curve_abscissa_unit(s_.x), s_.y_unit, {}, {}, {}}; }
+  int num_residuals() const override { return static_cast<int>(c_.xs.size()); }
+  ExperimentCurve axes() const override { return {c_.x, c_.y, c_.x_unit, c_.y_unit, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
-    ExperimentCurve c{s_.x, s_.y, force_curve_abscissa_unit(s_.x), s_.y_unit, s_.xs, s_.ys, {}};
-    std::vector<double> r(s_.xs.size()), sim(s_.xs.size());
+    ExperimentCurve c{c_.x, c_.y, c_.x_unit, c_.y_unit, c_.xs, c_.ys, {}};
+    std::vector<double> r(c_.xs.size()), sim(c_.xs.size());
     if (eval(p, r.data(), &sim)) c.simulated = sim;
     return c;
   }
 
+ protected:
+  // The simulated curve of a run at p (empty: the run does not give it).
+  virtual ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const = 0;
+
  private:
   bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
-  bool eval(const ParameterPoint& p, double* r, std::vector<double>* simulated) const {
+  bool eval(const ParameterPoint& p, double* r, std::vector<double>* sim) const {
     const auto res = run_at(p);
-    if (!res) return false;
-    const auto* fe = dynamic_cast<const scene::FeSceneResult*>(res.get());
-    if (!fe) return false;
-    // The scene inputs of p may move the tool (tool.radius) or the sheet (sheet.thickness).
-    // The tool path lifts the tip by t/2 + R: its start moves with them.
+    return res && curve_residuals(simulated(*res, p), c_.xs, c_.ys, sqrt_w_, scale_, r, sim);
+  }
+  Curve c_;
+  std::vector<double> sqrt_w_;
+};
+
+class ForceCurveExperiment final : public CurveFeExperiment {
+ public:
+  explicit ForceCurveExperiment(const ForceCurveSpec& s)
+      : CurveFeExperiment(s, "force_curve", {s.x, s.y, force_curve_abscissa_unit(s.x), s.y_unit, s.xs, s.ys, s.point_weights}),
+        x_(s.x),
+        y_(s.y),
+        thickness_(s.scene->input("sheet.thickness")),
+        radius_(s.scene->input("tool.radius")),
+        start_(s.scene->tool_centre_path()->at_distance(0.0)) {}
+
+ private:
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const override {
+    const auto* fe = dynamic_cast<const scene::FeSceneResult*>(&r);
+    if (!fe) return {};
+    // The scene inputs of p may move the tool (tool.radius) or the sheet (sheet.thickness); the
+    // tool path lifts the tip by t/2 + R, so its start moves with them.
     const double t = input_at(p, "sheet.thickness", thickness_), radius = input_at(p, "tool.radius", radius_);
     const Eigen::Vector3d start = start_ + Eigen::Vector3d(0.0, 0.0, 0.5 * (t - thickness_) + (radius - radius_));
-    return curve_residuals(force_curve(fe->force, start, t, radius, s_.x, s_.y), s_.xs, s_.ys, sqrt_w_, scale_, r, simulated);
+    return force_curve(fe->force, start, t, radius, x_, y_);
   }
   static double input_at(const ParameterPoint& p, const char* name, double fallback) {
     for (const auto& [n, v] : p.scene)
       if (n == name) return v;
     return fallback;
   }
-  ForceCurveSpec s_;
-  std::vector<double> sqrt_w_;
+  std::string x_, y_;
   double thickness_ = 0.0, radius_ = 0.0;
   Eigen::Vector3d start_ = Eigen::Vector3d::Zero();
 };
 
-class SectionExperiment final : public FeExperiment {
+class SectionExperiment final : public CurveFeExperiment {
  public:
-  explicit SectionExperiment(SectionSpec s) : FeExperiment(s), s_(std::move(s)) {
-    kind_ = "section";
-    scale_ = curve_scale(s_.noise, s_.ys);
-    sqrt_w_ = sqrt_weights(s_.weight, s_.xs.size(), s_.point_weights);
-  }
-  int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
-  ExperimentCurve axes() const override { return {s_.x, s_.y, "mm", "mm", {}, {}, {}}; }
-  ExperimentCurve compare(const ParameterPoint& p) const override {
-    ExperimentCurve c{s_.x, s_.y, "mm", "mm", s_.xs, s_.ys, {}};
-    std::vector<double> r(s_.xs.size()), sim(s_.xs.size());
-    if (eval(p, r.data(), &sim)) c.simulated = sim;
-    return c;
-  }
+  explicit SectionExperiment(const SectionSpec& s)
+      : CurveFeExperiment(s, "section", {s.x, s.y, "mm", "mm", s.xs, s.ys, s.point_weights}), point_(s.point), x_(s.x), y_(s.y) {}
 
  private:
-  bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
-  bool eval(const ParameterPoint& p, double* r, std::vector<double>* simulated) const {
-    const auto res = run_at(p);
-    return res && curve_residuals(section_curve(*res, s_.point, s_.x, s_.y), s_.xs, s_.ys, sqrt_w_, scale_, r, simulated);
-  }
-  SectionSpec s_;
-  std::vector<double> sqrt_w_;
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint&) const override { return section_curve(r, point_, x_, y_); }
+  std::string point_, x_, y_;
 };
 
 }  // namespace
 
-std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec) { return std::make_unique<SectionExperiment>(std::move(spec)); }
+std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec) { return std::make_unique<SectionExperiment>(spec); }
 bool is_section_abscissa(const std::string& x) { return x == "x" || x == "x0"; }
 bool is_section_response(const std::string& y) { return y == "z" || y == "thickness"; }
 
@@ -219,7 +225,7 @@ ForceCurve section_curve(const scene::SceneResult& r, const std::string& point, 
 }
 
 std::unique_ptr<Experiment> make_fe_scalar_experiment(FeScalarSpec spec) { return std::make_unique<FeScalarExperiment>(std::move(spec)); }
-std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec) { return std::make_unique<ForceCurveExperiment>(std::move(spec)); }
+std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec) { return std::make_unique<ForceCurveExperiment>(spec); }
 
 const char* force_curve_abscissa_names() { return "depth, travel, time"; }
 bool is_force_curve_abscissa(const std::string& x) {

@@ -13,12 +13,6 @@ namespace {
 using io::format_number;
 using io::InputError;
 
-std::string resolve(const std::string& base_file, const std::string& p) {
-  std::filesystem::path q(p);
-  if (q.is_relative()) q = std::filesystem::path(base_file).parent_path() / q;
-  return q.lexically_normal().string();
-}
-
 std::string observable_names(const scene::SceneKind& k) {
   std::string out;
   for (const auto& o : k.observables) out += (out.empty() ? "" : ", ") + o.name;
@@ -65,7 +59,7 @@ struct CurveData {
 };
 CurveData read_curve_data(const io::TomlTable& e, const std::string& path, const std::string& x, const std::string& y, double lo, double hi,
                           const std::string& range_note) {
-  const std::string data_path = resolve(path, e.string("data"));
+  const std::string data_path = resolve_path(path, e.string("data"));
   const auto table = read_measurement_csv(data_path);
   CurveData d{table.column(x), table.column(y), {}, table.units.at(y)};
   if (e.has("weight_column")) {

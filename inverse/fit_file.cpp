@@ -25,12 +25,6 @@ bool is_fit_algorithm(const std::string& n) { return n == "levenberg_marquardt" 
 
 namespace {
 
-std::string resolve(const std::string& base_file, const std::string& p) {
-  fs::path q(p);
-  if (q.is_relative()) q = fs::path(base_file).parent_path() / q;
-  return q.lexically_normal().string();
-}
-
 // Range of the simulated abscissa of a scene: [0, end] and whether it increases.
 std::pair<double, double> abscissa_range(const scene::MaterialPointSetup& s, const std::string& x, bool* monotone) {
   double prev = 0.0, total = 0.0, lo = 0.0, hi = 0.0;
@@ -91,7 +85,7 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   fp.per_experiment = ft->boolean("per_experiment", false);
   fp.name = ft->string("name", fs::path(path).stem().string());
   fp.description = ft->string("description", "");
-  const std::string card_path = resolve(path, ft->string("card"));
+  const std::string card_path = resolve_path(path, ft->string("card"));
   if (!fs::exists(card_path)) ft->fail("card", "starting card not found at " + card_path);
   auto card = material::load_material_card(card_path);
   *normalise = ft->boolean("normalise_hill", true);
@@ -223,7 +217,7 @@ std::unique_ptr<Experiment> curve_experiment(const io::TomlTable& e, const std::
   scene::CurvePoint<double> probe;
   if (!scene::curve_abscissa(probe, c.x)) e.fail("x", std::string("not an abscissa of a simulated curve (known: ") + scene::curve_abscissa_names() + ")");
   if (!scene::curve_response(probe, c.y)) e.fail("y", std::string("not a column of a simulated curve (known: ") + scene::curve_response_names() + ")");
-  const std::string data_path = resolve(path, e.string("data"));
+  const std::string data_path = resolve_path(path, e.string("data"));
   const auto table = read_measurement_csv(data_path);
   c.xs = table.column(c.x);
   c.ys = table.column(c.y);
@@ -248,7 +242,7 @@ std::unique_ptr<Experiment> curve_experiment(const io::TomlTable& e, const std::
 
 std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::string& path, const material::MaterialCard& card, FitProblem& fp,
                                             std::vector<const scene::Scene*>& fe_scenes) {
-  const std::string scene_path = resolve(path, e.string("scene"));
+  const std::string scene_path = resolve_path(path, e.string("scene"));
   if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
   const scene::SceneKind* kind = scene::find_scene_kind(scene::scene_kind_of_file(scene_path));
   if (!kind) (void)scene::read_scene(scene_path);  // names the unknown kind and the known ones
@@ -271,7 +265,7 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   } else {
     fp.input_files.push_back(scene_path);
   }
-  if (e.has("data")) fp.input_files.push_back(resolve(path, e.string("data")));
+  if (e.has("data")) fp.input_files.push_back(resolve_path(path, e.string("data")));
   // Names become file names (DIR/experiments/NAME.csv): plain and unique.
   const bool plain = !name.empty() && name[0] != '.' &&
                      std::all_of(name.begin(), name.end(), [](char ch) {
@@ -314,7 +308,6 @@ FitProblem read_fit_file(const std::string& path) {
   fp.input_files = {path, card.file};
   // The experiments first: the FE scenes among them say which scene inputs are parameters.
   const auto exps = root.table_array("experiment");
-  if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
   std::vector<const scene::Scene*> fe_scenes;
   for (const auto& e : exps) fp.experiments.push_back(read_experiment(e, path, card, fp, fe_scenes));
   if (fp.scene_runs) {
@@ -325,6 +318,7 @@ FitProblem read_fit_file(const std::string& path) {
     if (!ft->has("gradient_tolerance")) fp.settings.gradient_tolerance = fe.gradient_tolerance;
   }
   read_parameters(root, card, normalise, fe_scenes, fp);
+  if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
   check_card_at_bounds(path, fp);
   return fp;
 }

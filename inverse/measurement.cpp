@@ -91,4 +91,10 @@ MeasurementTable read_measurement_csv(const std::string& path) {
   return t;
 }
 
+std::string resolve_path(const std::string& base_file, const std::string& path) {
+  std::filesystem::path q(path);
+  if (q.is_relative()) q = std::filesystem::path(base_file).parent_path() / q;
+  return q.lexically_normal().string();
+}
+
 }  // namespace spifit::inverse

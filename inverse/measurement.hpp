@@ -21,4 +21,7 @@ struct MeasurementTable {
 
 MeasurementTable read_measurement_csv(const std::string& path);
 
+// A path written in file `base_file` (a fit file's scene or data), relative to that file's folder.
+std::string resolve_path(const std::string& base_file, const std::string& path);
+
 }  // namespace spifit::inverse

@@ -259,4 +259,51 @@ TEST(FeFit, TinyLineFrictionFromTheSectionAtE) {
   EXPECT_NEAR(r.values[0], 0.1, 1e-3);
 }
 
+// Fails chosen evaluations of an FE experiment, as a forward run that does not converge would:
+// the first trial step of the optimiser and one perturbed run of its first Jacobian.
+class FailingEvaluations final : public inverse::Experiment {
+ public:
+  explicit FailingEvaluations(std::shared_ptr<inverse::Experiment> inner) : inner_(std::move(inner)) {
+    name_ = inner_->name();
+    kind_ = inner_->kind();
+  }
+  int num_residuals() const override { return inner_->num_residuals(); }
+  bool residuals(const inverse::ParameterPoint& p, double* r) const override {
+    // 1: the start's check, 2: the initial cost, 3: the start in the solver, 4-5: its two
+    // perturbations, 6: the first trial step.
+    const int call = ++calls_;
+    if (call == 4 || call == 6) {
+      ++failures_;
+      return false;
+    }
+    return inner_->residuals(p, r);
+  }
+  bool residuals(const material::MaterialParams<inverse::Jet>&, inverse::Jet*) const override { return false; }
+  bool supports_jets() const override { return false; }
+  inverse::ExperimentCurve compare(const inverse::ParameterPoint& p) const override { return inner_->compare(p); }
+  inverse::ExperimentCurve axes() const override { return inner_->axes(); }
+  int failures() const { return failures_; }
+
+ private:
+  std::shared_ptr<inverse::Experiment> inner_;
+  mutable std::atomic<int> calls_{0}, failures_{0};
+};
+
+// Failed forward runs in the middle of a fit do not end it: a failed perturbation makes its
+// Jacobian column one-sided, a failed trial step is rejected, and the fit still ends at mu = 0.1.
+TEST(FeFit, FailedRunsMidFitDoNotEndIt) {
+  const TinyLineData fx = tiny_line_data("fx");
+  const fs::path f = write_fit(fit_head(kFriction) + experiment(fx.scene, "data = \"" + fx.data.string() + "\"\nx = \"travel\"\ny = \"fx\"\nnoise = 1.0\n"));
+  auto problem = inverse::read_fit_file(f.string());
+  auto failing = std::make_shared<FailingEvaluations>(problem.experiments.front());
+  problem.experiments.front() = failing;
+  inverse::FitRunOptions options;
+  options.threads = 1;  // the calls in a fixed order
+  const auto r = inverse::run_fit(problem, options);
+  std::printf("mu %.6f after %d failed evaluations, %d iterations\n", r.values[0], failing->failures(), r.iterations);
+  EXPECT_EQ(failing->failures(), 2);
+  ASSERT_TRUE(r.usable) << r.termination;
+  EXPECT_NEAR(r.values[0], 0.1, 1e-4);
+}
+
 }  // namespace

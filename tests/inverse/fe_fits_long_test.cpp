@@ -31,11 +31,11 @@ void expect_inside(const inverse::FitResult& r, int k, double truth, const char*
   EXPECT_GE(r.uncertainty.ci95_upper[k], truth) << name;
 }
 
-// Tensile + Bauschinger + the indent test's Fz(depth), all from C.7 renormalised (H = 0.807).
-TEST(FeFitsLong, AfIndentRecoversC7) {
-  const auto problem = inverse::read_fit_file(src("experiments/aa3003o/fit_af_indent.toml"));
-  const auto truth = material::load_material_card(src("materials/aa3003o_c7n_af_shell.toml"));
-  const auto r = fit("fit_af_indent.toml");
+// A fit of a card's parameters: every generating value inside its 95 % interval.
+void expect_card_recovered(const std::string& fit_file, const std::string& card) {
+  const auto problem = inverse::read_fit_file(src("experiments/aa3003o/" + fit_file));
+  const auto truth = material::load_material_card(src("materials/" + card));
+  const auto r = fit(fit_file);
   ASSERT_TRUE(r.usable) << r.termination;
   EXPECT_TRUE(r.failed_runs.empty());
   const auto& ps = *problem.parameters;
@@ -44,6 +44,12 @@ TEST(FeFitsLong, AfIndentRecoversC7) {
     expect_inside(r, k, inverse::parameter_value(truth, name), name.c_str());
   }
 }
+
+// Tensile + Bauschinger + the indent test's Fz(depth), all from C.7 renormalised (H = 0.807).
+TEST(FeFitsLong, AfIndentRecoversC7) { expect_card_recovered("fit_af_indent.toml", "aa3003o_c7n_af_shell.toml"); }
+
+// The same with Ziegler's rule, all from C.8 (von Mises).
+TEST(FeFitsLong, ZieglerIndentRecoversC8) { expect_card_recovered("fit_ziegler_indent.toml", "aa3003o_c8_ziegler_shell.toml"); }
 
 // mu from the Ftheta history of the short cone70 pie generated at mu = 0.05.
 TEST(FeFitsLong, ConeFrictionRecoversMu) {
