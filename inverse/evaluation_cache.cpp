@@ -58,7 +58,8 @@ void EvaluationCache::add(const std::string& experiment, const std::string& poin
   char buf[32];
   for (double v : e.residuals) {
     std::snprintf(buf, sizeof buf, "%.17g", v);
-    values += (values.empty() ? "" : ",") + std::string(buf);
+    if (!values.empty()) values += ',';
+    values += buf;
   }
   std::lock_guard<std::mutex> lock(mutex_);
   if (!entries_.emplace(experiment + " " + point, e).second) return;
