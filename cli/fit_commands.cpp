@@ -118,13 +118,14 @@ void set_scene_input(scene::Scene& sc, const std::string& assignment) {
 }  // namespace
 
 void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, const std::string& command_line) {
-  struct Opts { std::string scene, out, material, section; std::vector<std::string> set; inverse::SyntheticOptions syn; bool force = false; };
+  struct Opts { std::string scene, out, material, section, contour_means; std::vector<std::string> set; inverse::SyntheticOptions syn; bool force = false; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("synth", "Write a SYNTHETIC measurement (twin experiment): a scene's curve with seeded noise");
   cmd->add_option("SCENE", o->scene, "scene file (TOML): a material point, or an FE scene with a tool")->required();
   cmd->add_option("--out", o->out, "CSV file to write")->required();
   cmd->add_option("--material", o->material, "generating card (default: the scene's)");
   cmd->add_option("--section", o->section, "a forming scene's section y = 0 at this path point instead of the tool force (x: x or x0; y: z or thickness)");
+  cmd->add_option("--contour-means", o->contour_means, "a cone's central-third contour means of this component or ratio (fr, ftheta, fz, fx, fy, ftheta_over_fz, fr_over_fz) against the contour");
   cmd->add_option("--set", o->set, "NAME=VALUE: a named input of an FE scene for this run (e.g. contact.friction=0.05); repeatable");
   cmd->add_option("--x", o->syn.x, "abscissa column: strain, cumulative_strain, increment (material point; default strain); depth, travel, time (FE; default depth)");
   cmd->add_option("--y", o->syn.y, "response column: stress, eps_ww, eps_zz, ... (material point; default stress); fx, fy, fz, fr, ftheta (FE; default fz)");
@@ -160,6 +161,10 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
       if (!o->material.empty()) *scene->card() = material::load_material_card(o->material);
       for (const std::string& a : o->set) set_scene_input(*scene, a);
       card_name = scene->card()->name;
+      if (!o->contour_means.empty()) {
+        o->syn.y = o->contour_means;
+        return inverse::synthetic_contour_means_csv(*scene, o->syn);
+      }
       return o->section.empty() ? inverse::synthetic_force_curve_csv(*scene, o->syn) : inverse::synthetic_section_csv(*scene, o->section, o->syn);
     });
     const std::string tmp = o->out + ".tmp";

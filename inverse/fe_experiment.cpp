@@ -1,5 +1,6 @@
 #include "inverse/fe_experiment.hpp"
 
+#include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/forming/forming_result.hpp"
 
 #include <algorithm>
@@ -199,6 +200,50 @@ class SectionExperiment final : public CurveFeExperiment {
 };
 
 }  // namespace
+
+double contour_mean_value(const scene::ContourMean& m, const std::string& y) {
+  if (y == "fr") return m.polar.x();
+  if (y == "ftheta") return m.polar.y();
+  if (y == "fz") return m.polar.z();
+  if (y == "fx") return m.force.x();
+  if (y == "fy") return m.force.y();
+  if (y == "ftheta_over_fz") return m.polar.y() / m.polar.z();
+  return m.polar.x() / m.polar.z();  // fr_over_fz
+}
+
+namespace {
+
+class ContourMeansExperiment final : public CurveFeExperiment {
+ public:
+  explicit ContourMeansExperiment(const ContourMeansSpec& s)
+      : CurveFeExperiment(s, "contour_means", {"contour", s.y, "", s.y.find("_over_") == std::string::npos ? "N" : "", s.contours, s.ys, s.point_weights}),
+        y_(s.y) {}
+
+ private:
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint&) const override {
+    ForceCurve c;
+    const auto* cone = dynamic_cast<const scene::ConeResult*>(&r);
+    if (!cone) return c;
+    for (std::size_t i = 0; i < cone->contours.size(); ++i) {
+      const double v = contour_mean_value(cone->contours[i], y_);
+      if (!std::isfinite(v)) return {};  // a contour without samples: nothing to compare
+      c.x.push_back(static_cast<double>(i + 1));
+      c.y.push_back(v);
+    }
+    return c;
+  }
+  std::string y_;
+};
+
+}  // namespace
+
+std::unique_ptr<Experiment> make_contour_means_experiment(ContourMeansSpec spec) { return std::make_unique<ContourMeansExperiment>(spec); }
+const char* contour_mean_names() { return "fr, ftheta, fz, fx, fy, ftheta_over_fz, fr_over_fz"; }
+bool is_contour_mean(const std::string& y) {
+  for (const char* n : {"fr", "ftheta", "fz", "fx", "fy", "ftheta_over_fz", "fr_over_fz"})
+    if (y == n) return true;
+  return false;
+}
 
 std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec) { return std::make_unique<SectionExperiment>(spec); }
 bool is_section_abscissa(const std::string& x) { return x == "x" || x == "x0"; }

@@ -6,6 +6,7 @@
 // shared by the experiments on the same scene); derivatives are central differences.
 #include "forward/scenes/common/fe_scene_result.hpp"
 #include "forward/scenes/common/scene.hpp"
+#include "forward/scenes/cone/cone_observables.hpp"
 #include "inverse/experiment.hpp"
 #include "inverse/scene_runs.hpp"
 
@@ -51,6 +52,19 @@ struct SectionSpec : FeExperimentBase {
 std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec);
 bool is_section_abscissa(const std::string& x);
 bool is_section_response(const std::string& y);
+
+// The central-third means of a cone's contours (thesis §8.3) against the contour number: a force
+// component (fr, ftheta, fz in the polar frame; fx, fy, fz Cartesian) or a ratio
+// (ftheta_over_fz, fr_over_fz).
+struct ContourMeansSpec : FeExperimentBase {
+  std::string y = "ftheta";
+  std::vector<double> contours, ys, point_weights;
+};
+std::unique_ptr<Experiment> make_contour_means_experiment(ContourMeansSpec spec);
+const char* contour_mean_names();
+bool is_contour_mean(const std::string& y);
+// One value of a contour's means: a component or a ratio (contour_mean_names()).
+double contour_mean_value(const scene::ContourMean& m, const std::string& y);
 
 // depth (of the tool tip below the initial top surface, mm), travel (mm along the path), time (s).
 const char* force_curve_abscissa_names();

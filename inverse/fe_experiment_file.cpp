@@ -102,11 +102,29 @@ std::unique_ptr<Experiment> section(const io::TomlTable& e, const std::string& p
   return make_section_experiment(std::move(c));
 }
 
+// contour_means = "ftheta": a cone's central-third contour means against the contour number.
+std::unique_ptr<Experiment> contour_means(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
+  ContourMeansSpec c;
+  static_cast<FeExperimentBase&>(c) = std::move(base);
+  if (scene::find_scene_kind(c.scene->kind())->family != "cone") e.fail("contour_means", "only for cone scenes (contours of a cone)");
+  c.y = e.string("contour_means");
+  if (!is_contour_mean(c.y)) e.fail("contour_means", std::string("not a contour mean (known: ") + contour_mean_names() + ")");
+  for (const char* k : {"x", "y"})
+    if (e.has(k)) e.fail(k, "contour means take the columns contour and " + c.y + " of the data file");
+  CurveData d = read_curve_data(e, path, "contour", c.y, 1.0, 1e9, "(contours from 1)");
+  for (double k : d.xs)
+    if (k != std::floor(k)) e.fail("data", "contour numbers must be whole (" + format_number(k) + ")");
+  c.contours = std::move(d.xs);
+  c.ys = std::move(d.ys);
+  c.point_weights = std::move(d.weights);
+  return make_contour_means_experiment(std::move(c));
+}
+
 }  // namespace
 
 const std::vector<std::string>& fe_experiment_keys() {
   static const std::vector<std::string> keys{"name",   "scene",         "data",       "x",     "y",      "noise",    "weight",
-                                             "weight_column", "observable", "value", "window", "contours", "source", "section"};
+                                             "weight_column", "observable", "value", "window", "contours", "source", "section", "contour_means"};
   return keys;
 }
 
@@ -120,6 +138,7 @@ std::unique_ptr<Experiment> read_fe_experiment(const io::TomlTable& e, const std
   for (const char* k : {"value", "window", "contours"})
     if (e.has(k)) e.fail(k, "a curve (data = ...) takes no scalar keys; a scalar needs observable = ...");
   if (e.has("section")) return section(e, path, std::move(base));
+  if (e.has("contour_means")) return contour_means(e, path, std::move(base));
   ForceCurveSpec c;
   static_cast<FeExperimentBase&>(c) = std::move(base);
   c.x = e.string("x", "depth");

@@ -3,6 +3,7 @@
 #include "forward/io/csv_writer.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/common/fe_scene_result.hpp"
+#include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/material_point/curve_columns.hpp"
 #include "inverse/fe_experiment.hpp"
 
@@ -96,6 +97,20 @@ std::string synthetic_section_csv(const scene::Scene& sc, const std::string& poi
   io::CsvTable t({o.x + " [mm]", o.y + " [mm]"});
   for (std::size_t i = 0; i < c.x.size(); i += static_cast<std::size_t>(o.every)) t.add_row({c.x[i], c.y[i] + o.noise * noise.next()});
   return synthetic_header(sc.file(), *sc.card(), o, "node(s) of the section at " + point) + t.str();
+}
+
+std::string synthetic_contour_means_csv(const scene::Scene& sc, const SyntheticOptions& o) {
+  if (!is_contour_mean(o.y)) throw io::InputError("", "y", o.y, std::string("not a contour mean (known: ") + contour_mean_names() + ")");
+  if (!(o.noise >= 0)) throw io::InputError("", "noise", io::format_number(o.noise), "must be >= 0");
+  const auto r = sc.run(scene::RunFiles(), {});
+  if (!r->ok()) throw std::runtime_error("scene " + sc.name() + " failed: " + r->message);
+  const auto* cone = dynamic_cast<const scene::ConeResult*>(r.get());
+  if (!cone) throw io::InputError(sc.file(), "scene.kind", sc.kind(), "contour means are a cone's");
+  GaussianNoise noise(o.seed);
+  const bool ratio = o.y.find("_over_") != std::string::npos;
+  io::CsvTable t({"contour", ratio ? o.y : o.y + " [N]"});
+  for (std::size_t i = 0; i < cone->contours.size(); ++i) t.add_row({static_cast<double>(i + 1), contour_mean_value(cone->contours[i], o.y) + o.noise * noise.next()});
+  return synthetic_header(sc.file(), *sc.card(), o, "contour") + t.str();
 }
 
 }  // namespace spifit::inverse

@@ -31,6 +31,9 @@ std::string synthetic_force_curve_csv(const scene::Scene& scene, const Synthetic
 // options.x: x or x0), every k-th node.
 std::string synthetic_section_csv(const scene::Scene& scene, const std::string& point, const SyntheticOptions& options);
 
+// A cone's central-third contour means (options.y: contour_mean_names()) against the contour.
+std::string synthetic_contour_means_csv(const scene::Scene& scene, const SyntheticOptions& options);
+
 // Standard normal deviates: std::mt19937_64 (its sequence is fixed by the C++ standard) and
 // Box-Muller written out (std::normal_distribution differs between standard libraries), so
 // the same seed gives the same numbers everywhere.
