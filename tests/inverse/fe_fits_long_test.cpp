@@ -60,4 +60,13 @@ TEST(FeFitsLong, ConeFrictionRecoversMu) {
   EXPECT_NEAR(r.values[0], 0.05, 2e-3);
 }
 
+// mu from the Fx history of the half-model line test generated at mu = 0.1 (about 15 min).
+TEST(FeFitsLong, LineFrictionRecoversMu) {
+  const auto r = fit("fit_friction_line.toml");
+  ASSERT_TRUE(r.usable) << r.termination;
+  EXPECT_TRUE(r.failed_runs.empty());
+  expect_inside(r, 0, 0.1, "contact.friction");
+  EXPECT_NEAR(r.values[0], 0.1, 2e-3);
+}
+
 }  // namespace
