@@ -30,6 +30,12 @@ class CurveExperiment final : public Experiment {
       const double wp = s_.point_weights.empty() ? 1.0 : s_.point_weights[i];
       sqrt_w_[i] = std::sqrt(s_.weight * wp);
     }
+    if (s_.noise_relative > 0) {  // per-point standard deviations in the weights
+      const std::vector<double> sd = relative_noise(s_.ys, s_.noise_relative);
+      for (std::size_t i = 0; i < sd.size(); ++i) sqrt_w_[i] /= sd[i];
+      scale_ = 1.0;
+      noise_given_ = true;
+    }
   }
   int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
   bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
@@ -126,6 +132,14 @@ class ScalarExperiment final : public Experiment {
 const char* scalar_observable_names() { return "r_value, yield_stress, initial_yield_stress, reverse_yield_stress, final_stress"; }
 bool is_scalar_observable(const std::string& n) {
   return n == "r_value" || n == "yield_stress" || n == "initial_yield_stress" || n == "reverse_yield_stress" || n == "final_stress";
+}
+
+std::vector<double> relative_noise(const std::vector<double>& ys, double rel) {
+  double largest = 0.0;
+  for (double y : ys) largest = std::max(largest, std::abs(y));
+  std::vector<double> sd;
+  for (double y : ys) sd.push_back(rel * std::max(std::abs(y), 1e-3 * largest));
+  return sd;
 }
 
 std::unique_ptr<Experiment> make_curve_experiment(CurveExperimentSpec spec) {

@@ -59,9 +59,14 @@ struct CurveExperimentSpec {
   std::vector<double> xs, ys, point_weights;
   std::string x_unit, y_unit;
   double noise = 0.0;         // measurement standard deviation of y; 0: use the range of y
+  double noise_relative = 0.0;  // > 0: the standard deviation of each y is this fraction of |y|
   double weight = 1.0;
 };
 std::unique_ptr<Experiment> make_curve_experiment(CurveExperimentSpec spec);
+
+// The standard deviations of a relative noise: rel * max(|y_i|, 1e-3 max|y|) (a y of zero would
+// otherwise weigh infinitely).
+std::vector<double> relative_noise(const std::vector<double>& ys, double rel);
 
 // A scalar measured on a material-point scene (r_value, yield_stress, initial_yield_stress,
 // reverse_yield_stress, final_stress).

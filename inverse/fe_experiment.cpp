@@ -135,6 +135,12 @@ class CurveFeExperiment : public FeExperiment {
     kind_ = kind;
     scale_ = curve_scale(b.noise, c_.ys);
     sqrt_w_ = sqrt_weights(b.weight, c_.xs.size(), c_.point_weights);
+    if (b.noise_relative > 0) {  // per-point standard deviations in the weights
+      const std::vector<double> sd = relative_noise(c_.ys, b.noise_relative);
+      for (std::size_t i = 0; i < sd.size(); ++i) sqrt_w_[i] /= sd[i];
+      scale_ = 1.0;
+      noise_given_ = true;
+    }
   }
   int num_residuals() const override { return static_cast<int>(c_.xs.size()); }
   ExperimentCurve axes() const override { return {c_.x, c_.y, c_.x_unit, c_.y_unit, {}, {}, {}}; }

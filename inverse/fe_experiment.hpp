@@ -23,6 +23,7 @@ struct FeExperimentBase {
   std::shared_ptr<const scene::Scene> scene;
   std::shared_ptr<const SceneRuns> runs;
   double noise = 0.0;  // measurement standard deviation; 0: the range of the data (curve) or |value|
+  double noise_relative = 0.0;  // curves: > 0, each y's standard deviation is this fraction of |y|
   double weight = 1.0;
 };
 

@@ -124,14 +124,14 @@ std::unique_ptr<Experiment> contour_means(const io::TomlTable& e, const std::str
 
 const std::vector<std::string>& fe_experiment_keys() {
   static const std::vector<std::string> keys{"name",   "scene",         "data",       "x",     "y",      "noise",    "weight",
-                                             "weight_column", "observable", "value", "window", "contours", "source", "section", "contour_means"};
+                                             "weight_column", "observable", "value", "window", "contours", "source", "section", "contour_means", "noise_relative"};
   return keys;
 }
 
 std::unique_ptr<Experiment> read_fe_experiment(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
   if (!base.scene->tool_centre_path()) e.fail("scene", "scene kind " + base.scene->kind() + " has no tool to measure");
   if (e.has("observable")) {
-    for (const char* k : {"data", "x", "y", "weight_column"})
+    for (const char* k : {"data", "x", "y", "weight_column", "noise_relative"})
       if (e.has(k)) e.fail(k, "a scalar experiment (observable = ...) takes no curve keys");
     return scalar(e, std::move(base));
   }

@@ -206,11 +206,12 @@ std::unique_ptr<Experiment> scalar_experiment(const io::TomlTable& e, const std:
 
 // A curve [[experiment]]: a column of a measurement CSV against a simulated curve's.
 std::unique_ptr<Experiment> curve_experiment(const io::TomlTable& e, const std::string& path, const std::string& name,
-                                             scene::MaterialPointScene sc, double noise, double weight) {
+                                             scene::MaterialPointScene sc, double noise, double weight, double noise_relative) {
   CurveExperimentSpec c;
   c.name = name;
   c.scene = std::move(sc);
   c.noise = noise;
+  c.noise_relative = noise_relative;
   c.weight = weight;
   c.x = e.string("x", "strain");
   c.y = e.string("y", "stress");
@@ -250,7 +251,7 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   const bool scalar = e.has("observable");
   if (fe) e.allow_only(fe_experiment_keys());
   else if (scalar) e.allow_only({"name", "scene", "observable", "value", "noise", "weight", "source"});
-  else e.allow_only({"name", "scene", "data", "x", "y", "noise", "weight", "weight_column"});
+  else e.allow_only({"name", "scene", "data", "x", "y", "noise", "noise_relative", "weight", "weight_column"});
   std::shared_ptr<const scene::Scene> fe_scene;
   scene::MaterialPointScene sc;
   if (fe) {
@@ -277,15 +278,18 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   }
   const double noise = e.number("noise", 0.0);
   if (noise < 0) e.fail("noise", "must be >= 0 (0: condition by the range of the data)");
+  const double noise_relative = e.number("noise_relative", 0.0);
+  if (!(noise_relative >= 0.0 && noise_relative < 1.0)) e.fail("noise_relative", "must lie in [0, 1): a fraction of each |y|");
+  if (noise_relative > 0.0 && e.has("noise")) e.fail("noise_relative", "give noise (absolute) or noise_relative, not both");
   const double weight = e.number("weight", 1.0);
   if (!(weight > 0)) e.fail("weight", "must be > 0");
   if (fe) {
     if (!fp.scene_runs) fp.scene_runs = std::make_shared<SceneRuns>(card.params, fp.settings.run_time_limit);
     fe_scenes.push_back(fe_scene.get());
-    return read_fe_experiment(e, path, FeExperimentBase{name, fe_scene, fp.scene_runs, noise, weight});
+    return read_fe_experiment(e, path, FeExperimentBase{name, fe_scene, fp.scene_runs, noise, noise_relative, weight});
   }
   if (scalar) return scalar_experiment(e, name, std::move(sc), noise, weight);
-  return curve_experiment(e, path, name, std::move(sc), noise, weight);
+  return curve_experiment(e, path, name, std::move(sc), noise, weight, noise_relative);
 }
 
 }  // namespace

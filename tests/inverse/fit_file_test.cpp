@@ -110,3 +110,30 @@ TEST(FitFile, BundledFitClassicLoads) {
   EXPECT_EQ(fp.parameters->num_free(), 6);
   EXPECT_EQ(fp.experiments.size(), 7u);
 }
+
+// noise_relative: each point's standard deviation is that fraction of its |y|, so the residual is
+// (simulated - measured) / (rel |measured|); not together with noise, not on scalars.
+TEST(FitFile, RelativeNoiseDividesEachResidualByItsOwnDeviation) {
+  const std::string scene = src("experiments/aa3003o/scenes/tensile_00.toml"), data = src("experiments/aa3003o/data/tensile_00_c2_synthetic.csv");
+  const auto problem = inverse::read_fit_file(write("relnoise.toml", base_fit(kParam, "[[experiment]]\nscene = \"" + scene + "\"\ndata = \"" + data +
+                                                                               "\"\nnoise_relative = 0.01\n")));
+  const auto& e = *problem.experiments.front();
+  const auto p = problem.parameters->point(problem.parameters->initial_internal().data());
+  std::vector<double> r(static_cast<std::size_t>(e.num_residuals()));
+  ASSERT_TRUE(e.residuals(p, r.data()));
+  const auto c = e.compare(p);
+  ASSERT_EQ(c.simulated.size(), r.size());
+  for (std::size_t i = 0; i < r.size(); ++i)
+    EXPECT_NEAR(r[i], (c.simulated[i] - c.measured[i]) / (0.01 * std::abs(c.measured[i])), 1e-9 * std::max(1.0, std::abs(r[i]))) << i;
+  EXPECT_TRUE(e.noise_given());
+  for (const auto& [extra, key] : std::vector<std::pair<std::string, std::string>>{{"noise = 0.5\nnoise_relative = 0.01\n", "noise_relative"},
+                                                                                  {"noise_relative = 1.5\n", "noise_relative"}}) {
+    const std::string f = write("relnoise_bad.toml", base_fit(kParam, "[[experiment]]\nscene = \"" + scene + "\"\ndata = \"" + data + "\"\n" + extra));
+    try {
+      inverse::read_fit_file(f);
+      ADD_FAILURE() << extra << " accepted";
+    } catch (const io::InputError& err) {
+      EXPECT_NE(err.key().find(key), std::string::npos) << err.what();
+    }
+  }
+}
