@@ -18,24 +18,10 @@ class CurveExperiment final : public Experiment {
     name_ = s_.name;
     kind_ = "curve";
     weight_ = s_.weight;
-    if (s_.noise > 0) {
-      scale_ = s_.noise;
-      noise_given_ = true;
-    } else {
-      const auto [lo, hi] = std::minmax_element(s_.ys.begin(), s_.ys.end());
-      scale_ = *hi - *lo > 0 ? *hi - *lo : 1.0;
-    }
-    sqrt_w_.resize(s_.xs.size());
-    for (std::size_t i = 0; i < s_.xs.size(); ++i) {
-      const double wp = s_.point_weights.empty() ? 1.0 : s_.point_weights[i];
-      sqrt_w_[i] = std::sqrt(s_.weight * wp);
-    }
-    if (s_.noise_relative > 0) {  // per-point standard deviations in the weights
-      const std::vector<double> sd = relative_noise(s_.ys, s_.noise_relative);
-      for (std::size_t i = 0; i < sd.size(); ++i) sqrt_w_[i] /= sd[i];
-      scale_ = 1.0;
-      noise_given_ = true;
-    }
+    const CurveConditioning c = curve_conditioning(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
+    scale_ = c.scale;
+    noise_given_ = c.noise_given;
+    sqrt_w_ = c.sqrt_weights;
   }
   int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
   bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
@@ -134,12 +120,26 @@ bool is_scalar_observable(const std::string& n) {
   return n == "r_value" || n == "yield_stress" || n == "initial_yield_stress" || n == "reverse_yield_stress" || n == "final_stress";
 }
 
-std::vector<double> relative_noise(const std::vector<double>& ys, double rel) {
+CurveConditioning curve_conditioning(const std::vector<double>& ys, double noise, double noise_relative, double weight,
+                                     const std::vector<double>& point_weights) {
+  CurveConditioning c;
   double largest = 0.0;
   for (double y : ys) largest = std::max(largest, std::abs(y));
-  std::vector<double> sd;
-  for (double y : ys) sd.push_back(rel * std::max(std::abs(y), 1e-3 * largest));
-  return sd;
+  if (noise_relative > 0) {
+    c.noise_given = true;
+  } else if (noise > 0) {
+    c.scale = noise;
+    c.noise_given = true;
+  } else if (!ys.empty()) {
+    const auto [lo, hi] = std::minmax_element(ys.begin(), ys.end());
+    if (*hi - *lo > 0) c.scale = *hi - *lo;
+  }
+  for (std::size_t i = 0; i < ys.size(); ++i) {
+    double w = std::sqrt(weight * (point_weights.empty() ? 1.0 : point_weights[i]));
+    if (noise_relative > 0) w /= noise_relative * std::max(std::abs(ys[i]), 1e-3 * largest);
+    c.sqrt_weights.push_back(w);
+  }
+  return c;
 }
 
 std::unique_ptr<Experiment> make_curve_experiment(CurveExperimentSpec spec) {

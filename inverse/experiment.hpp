@@ -64,9 +64,17 @@ struct CurveExperimentSpec {
 };
 std::unique_ptr<Experiment> make_curve_experiment(CurveExperimentSpec spec);
 
-// The standard deviations of a relative noise: rel * max(|y_i|, 1e-3 max|y|) (a y of zero would
-// otherwise weigh infinitely).
-std::vector<double> relative_noise(const std::vector<double>& ys, double rel);
+// How the residuals of a measured curve ys are conditioned (material-point and FE curves alike):
+// the divisor `scale` (the stated noise, or the range of ys; 1 with a relative noise) and the
+// square roots of the point weights, divided by each point's standard deviation rel * max(|y_i|,
+// 1e-3 max|y|) with a relative noise (a y of zero would otherwise weigh infinitely).
+struct CurveConditioning {
+  double scale = 1.0;
+  bool noise_given = false;
+  std::vector<double> sqrt_weights;
+};
+CurveConditioning curve_conditioning(const std::vector<double>& ys, double noise, double noise_relative, double weight,
+                                     const std::vector<double>& point_weights);
 
 // A scalar measured on a material-point scene (r_value, yield_stress, initial_yield_stress,
 // reverse_yield_stress, final_stress).

@@ -30,18 +30,6 @@ double component(const std::string& y, const Eigen::Vector3d& centre, const Eige
   return y == "fr" ? c * f.x() + s * f.y() : -s * f.x() + c * f.y();
 }
 
-// The conditioning of a measured curve: its stated noise or the range of its y; per-point weights.
-double curve_scale(double noise, const std::vector<double>& ys) {
-  if (noise > 0) return noise;
-  const auto [lo, hi] = std::minmax_element(ys.begin(), ys.end());
-  return *hi - *lo > 0 ? *hi - *lo : 1.0;
-}
-std::vector<double> sqrt_weights(double weight, std::size_t n, const std::vector<double>& point_weights) {
-  std::vector<double> w;
-  for (std::size_t i = 0; i < n; ++i) w.push_back(std::sqrt(weight * (point_weights.empty() ? 1.0 : point_weights[i])));
-  return w;
-}
-
 // Residuals of measured (xs, ys) against the simulated curve c, interpolated linearly at xs;
 // false when an xs lies outside c (never extrapolate).
 bool curve_residuals(const ForceCurve& c, const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& sqrt_w,
@@ -133,14 +121,10 @@ class CurveFeExperiment : public FeExperiment {
   };
   CurveFeExperiment(const FeExperimentBase& b, const char* kind, Curve c) : FeExperiment(b), c_(std::move(c)) {
     kind_ = kind;
-    scale_ = curve_scale(b.noise, c_.ys);
-    sqrt_w_ = sqrt_weights(b.weight, c_.xs.size(), c_.point_weights);
-    if (b.noise_relative > 0) {  // per-point standard deviations in the weights
-      const std::vector<double> sd = relative_noise(c_.ys, b.noise_relative);
-      for (std::size_t i = 0; i < sd.size(); ++i) sqrt_w_[i] /= sd[i];
-      scale_ = 1.0;
-      noise_given_ = true;
-    }
+    const CurveConditioning k = curve_conditioning(c_.ys, b.noise, b.noise_relative, b.weight, c_.point_weights);
+    scale_ = k.scale;
+    noise_given_ = k.noise_given;
+    sqrt_w_ = k.sqrt_weights;
   }
   int num_residuals() const override { return static_cast<int>(c_.xs.size()); }
   ExperimentCurve axes() const override { return {c_.x, c_.y, c_.x_unit, c_.y_unit, {}, {}, {}}; }

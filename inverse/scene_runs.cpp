@@ -1,5 +1,6 @@
 #include "inverse/scene_runs.hpp"
 
+#include "forward/io/input_error.hpp"
 #include "forward/material/material_inputs.hpp"
 
 #include <cstdint>
@@ -15,12 +16,6 @@ constexpr std::size_t kCachedRuns = 256;
 
 // The scene file and the point.
 std::string key_of(const scene::Scene& scene, const ParameterPoint& p) { return scene.file() + " " + point_key(p); }
-
-std::string format(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", v);
-  return buf;
-}
 
 }  // namespace
 
@@ -45,9 +40,9 @@ std::string describe_point(const ParameterPoint& p, const material::MaterialPara
   std::string out;
   for (const auto& m : material::material_inputs()) {
     const double v = material::material_field(p.material, m.field);
-    if (v != material::material_field(card, m.field)) out += (out.empty() ? "" : " ") + m.info.name + "=" + format(v);
+    if (v != material::material_field(card, m.field)) out += (out.empty() ? "" : " ") + m.info.name + "=" + io::format_number(v);
   }
-  for (const auto& [name, v] : p.scene) out += (out.empty() ? "" : " ") + name + "=" + format(v);
+  for (const auto& [name, v] : p.scene) out += (out.empty() ? "" : " ") + name + "=" + io::format_number(v);
   return out.empty() ? "the card's values" : out;
 }
 
@@ -93,7 +88,7 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
     } catch (const std::invalid_argument& e) {
       why = e.what();
     }
-    if (!why.empty()) return fail(name + " = " + format(v) + ": " + why);
+    if (!why.empty()) return fail(name + " = " + io::format_number(v) + ": " + why);
   }
   auto attempt = [&]() -> std::shared_ptr<const scene::SceneResult> {
     {
@@ -126,12 +121,12 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
   r = attempt();
   if (r && r->ok()) {
     failure.recovered = true;
-    failure.message = "retried with " + std::string(kIncrement) + " = " + format(0.5 * travel) + " after: " + failure.message;
+    failure.message = "retried with " + std::string(kIncrement) + " = " + io::format_number(0.5 * travel) + " after: " + failure.message;
     std::lock_guard<std::mutex> lock(mutex_);
     failures_.push_back(failure);
     return r;
   }
-  if (r) failure.message += "; with " + std::string(kIncrement) + " = " + format(0.5 * travel) + ": " + r->message;
+  if (r) failure.message += "; with " + std::string(kIncrement) + " = " + io::format_number(0.5 * travel) + ": " + r->message;
   return fail(failure.message);
 }
 

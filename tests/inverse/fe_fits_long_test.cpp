@@ -51,22 +51,19 @@ TEST(FeFitsLong, AfIndentRecoversC7) { expect_card_recovered("fit_af_indent.toml
 // The same with Ziegler's rule, all from C.8 (von Mises).
 TEST(FeFitsLong, ZieglerIndentRecoversC8) { expect_card_recovered("fit_ziegler_indent.toml", "aa3003o_c8_ziegler_shell.toml"); }
 
-// mu from the Ftheta history of the short cone70 pie generated at mu = 0.05.
-TEST(FeFitsLong, ConeFrictionRecoversMu) {
-  const auto r = fit("fit_cone_friction.toml");
+// A friction fit: mu inside its 95 % interval and within 2e-3 of the generating value.
+void expect_friction_recovered(const std::string& fit_file, double truth) {
+  const auto r = fit(fit_file);
   ASSERT_TRUE(r.usable) << r.termination;
   EXPECT_TRUE(r.failed_runs.empty());
-  expect_inside(r, 0, 0.05, "contact.friction");
-  EXPECT_NEAR(r.values[0], 0.05, 2e-3);
+  expect_inside(r, 0, truth, "contact.friction");
+  EXPECT_NEAR(r.values[0], truth, 2e-3);
 }
 
+// mu from the Ftheta history of the short cone70 pie generated at mu = 0.05.
+TEST(FeFitsLong, ConeFrictionRecoversMu) { expect_friction_recovered("fit_cone_friction.toml", 0.05); }
+
 // mu from the Fx history of the half-model line test generated at mu = 0.1 (about 15 min).
-TEST(FeFitsLong, LineFrictionRecoversMu) {
-  const auto r = fit("fit_friction_line.toml");
-  ASSERT_TRUE(r.usable) << r.termination;
-  EXPECT_TRUE(r.failed_runs.empty());
-  expect_inside(r, 0, 0.1, "contact.friction");
-  EXPECT_NEAR(r.values[0], 0.1, 2e-3);
-}
+TEST(FeFitsLong, LineFrictionRecoversMu) { expect_friction_recovered("fit_friction_line.toml", 0.1); }
 
 }  // namespace
