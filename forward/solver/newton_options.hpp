@@ -60,6 +60,12 @@ struct NewtonOptions {
   // solve would drop it).
   std::vector<double> restarts{};
   LinearSolverKind linear_solver = LinearSolverKind::automatic;
+  // With linear_solver automatic: a tangent that is not symmetric (sliding friction) is
+  // replaced by its symmetric part (K + K^T) / 2 and factorised with CHOLMOD instead of
+  // factorising K with UMFPACK. The residual stays exact, so a converged increment is the same
+  // to the tolerances; the iterations lose their quadratic rate in the friction terms. Where
+  // CHOLMOD finds the symmetric part not positive definite, UMFPACK factorises the exact K.
+  bool symmetric_tangent = false;
   int element_chunk = 2048;    // elements evaluated in parallel before scattering
   // Linear analysis: one increment, one solve from the reference state, no equilibrium
   // iterations (patch tests and the linear benchmarks).

@@ -35,13 +35,19 @@ LinearSolver& NewtonSolver::cholmod() {
   return *cholmod_;
 }
 
-LinearSolver& NewtonSolver::linear_solver() {
+LinearSolver& NewtonSolver::linear_solver(const SparseMatrix** matrix) {
+  *matrix = k_.get();
   switch (options_.linear_solver) {
     case LinearSolverKind::umfpack: return umfpack();
     case LinearSolverKind::cholmod: return cholmod();
     case LinearSolverKind::automatic: break;
   }
-  return k_->is_symmetric(1e-10) ? cholmod() : umfpack();
+  if (k_->is_symmetric(1e-10)) return cholmod();
+  if (!options_.symmetric_tangent) return umfpack();
+  if (!k_symmetric_) k_symmetric_ = std::make_unique<SparseMatrix>(k_->pattern());
+  k_symmetric_->assign_symmetric_part(*k_);
+  *matrix = k_symmetric_.get();
+  return cholmod();
 }
 
 NewtonSolver::~NewtonSolver() = default;
@@ -110,13 +116,15 @@ bool NewtonSolver::solve_linear(const Eigen::VectorXd& rhs, Eigen::VectorXd* x, 
     ~Clock() { *sink += seconds_since(t0); }
   } clock{t0, &counters_.linear_seconds};
   last_factor_ = nullptr;
-  LinearSolver& first = linear_solver();
-  if (first.factorize(*k_) && first.solve(rhs, x)) {
+  const SparseMatrix* matrix = nullptr;
+  LinearSolver& first = linear_solver(&matrix);
+  if (first.factorize(*matrix) && first.solve(rhs, x)) {
     last_factor_ = &first;
     return true;
   }
   if (&first == cholmod_.get()) {
-    // Not positive definite (e.g. past a limit point): the general solver still applies.
+    // Not positive definite (e.g. past a limit point, or the symmetric part of a sliding
+    // tangent): the general solver still applies, to the exact tangent.
     LinearSolver& general = umfpack();
     if (general.factorize(*k_) && general.solve(rhs, x)) {
       last_factor_ = &general;

@@ -56,8 +56,10 @@ class NewtonSolver {
   };
   Assembly assemble(double lambda, bool with_tangent, const Eigen::VectorXd* dg_full);
   SparseMatrix& tangent() { return *k_; }
-  // The solver the next factorisation would use (automatic: by the tangent's symmetry).
-  LinearSolver& linear_solver();
+  // The solver the next factorisation would use (automatic: by the tangent's symmetry) and the
+  // matrix it factorises: K, or its symmetric part (NewtonOptions::symmetric_tangent), which
+  // this call then computes.
+  LinearSolver& linear_solver(const SparseMatrix** matrix);
 
  private:
   NonlinearProblem& problem_;
@@ -65,6 +67,7 @@ class NewtonSolver {
   NewtonOptions options_;
   std::unique_ptr<class ReducedAssembler> assembler_;
   std::unique_ptr<SparseMatrix> k_;
+  std::unique_ptr<SparseMatrix> k_symmetric_;  // (K + K^T) / 2 (NewtonOptions::symmetric_tangent)
   std::unique_ptr<LinearSolver> umfpack_, cholmod_;
   std::vector<Eigen::VectorXd> re_;  // per-chunk element residuals, tangents, statuses
   std::vector<Eigen::MatrixXd> ke_;

@@ -106,4 +106,15 @@ bool SparseMatrix::is_symmetric(double tol) const {
   return true;
 }
 
+void SparseMatrix::assign_symmetric_part(const SparseMatrix& a) {
+  const auto& p = *pattern_;
+  if (a.pattern_ != pattern_) throw std::invalid_argument("assign_symmetric_part: the matrices have different patterns");
+  if (p.mirror.size() != p.cols.size()) throw std::invalid_argument("assign_symmetric_part: the pattern has no mirror map");
+  for (std::size_t k = 0; k < values_.size(); ++k) {
+    const long t = p.mirror[k];
+    if (t < 0) throw std::invalid_argument("assign_symmetric_part: the pattern is not symmetric");
+    values_[k] = 0.5 * (a.values_[k] + a.values_[static_cast<std::size_t>(t)]);
+  }
+}
+
 }  // namespace spifit::solver

@@ -41,6 +41,8 @@ class SparseMatrix {
   Eigen::VectorXd diagonal() const;
   void add_to_diagonal(const Eigen::VectorXd& d);  // d: one value per row
   bool is_symmetric(double relative_tolerance) const;
+  // This matrix becomes (a + a^T) / 2; a has this matrix's pattern, which must be symmetric.
+  void assign_symmetric_part(const SparseMatrix& a);
 
  private:
   const SparsePattern* pattern_;

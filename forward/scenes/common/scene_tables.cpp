@@ -18,6 +18,30 @@ std::string InputViolation::text() const {
   return key + (value.empty() ? "" : " = " + value) + ": " + message;
 }
 
+std::string to_string(FrictionTangent t) {
+  switch (t) {
+    case FrictionTangent::exact: return "exact";
+    case FrictionTangent::symmetrised: return "symmetrised";
+    case FrictionTangent::automatic: break;
+  }
+  return "auto";
+}
+
+bool friction_tangent_from_string(const std::string& s, FrictionTangent* t) {
+  for (FrictionTangent v : {FrictionTangent::automatic, FrictionTangent::exact, FrictionTangent::symmetrised}) {
+    if (s == to_string(v)) {
+      *t = v;
+      return true;
+    }
+  }
+  return false;
+}
+
+bool symmetrised_tangent(FrictionTangent t, double friction) {
+  if (t == FrictionTangent::automatic) return friction <= kSymmetrisedTangentFriction;
+  return t == FrictionTangent::symmetrised;
+}
+
 nlohmann::json contact_json(const contact::ContactOptions& c) {
   return {{"penalty", c.penalty},
           {"friction", c.friction},

@@ -32,6 +32,16 @@ struct InputViolation {
   std::string text() const;  // "key = value: message"; "" for none
 };
 
+// [solver] tangent: how a tangent made non-symmetric by sliding friction is factorised. auto:
+// its symmetric part with CHOLMOD while the friction coefficient is at most
+// kSymmetrisedTangentFriction, else exact (NewtonOptions::symmetric_tangent; the measurements
+// behind the rule are in docs/contact.md, "Friction tangent").
+enum class FrictionTangent { automatic, exact, symmetrised };
+inline constexpr double kSymmetrisedTangentFriction = 0.2;
+std::string to_string(FrictionTangent t);
+bool friction_tangent_from_string(const std::string& s, FrictionTangent* t);
+bool symmetrised_tangent(FrictionTangent t, double friction);
+
 // Newton options of a tool scene (any type with the [solver] fields of tool_scene_inputs.hpp)
 // whose path is `length` mm long: the load factor is the travelled fraction of the path.
 template <typename Scene>
@@ -46,6 +56,7 @@ solver::NewtonOptions tool_newton_options(const Scene& s, double length) {
   o.displacement_tolerance = s.displacement_tolerance;
   o.divergence_after = s.divergence_after;
   if (s.linear_solver) o.linear_solver = *s.linear_solver;
+  o.symmetric_tangent = symmetrised_tangent(s.tangent, s.contact.friction);
   return o;
 }
 

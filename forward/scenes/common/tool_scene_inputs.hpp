@@ -3,6 +3,7 @@
 // [tool] radius, feed and spin, and the [output] steps of VTU files and checkpoints. Declared on any scene struct with the members they name
 // (forming_scene.hpp, cone_scene.hpp); the defaults are the struct's.
 #include "forward/io/named_inputs.hpp"
+#include "forward/scenes/common/scene_tables.hpp"
 #include "forward/solver/linear_solver.hpp"
 
 #include <optional>
@@ -48,6 +49,10 @@ void add_solver_inputs(io::InputTable<Scene>& t) {
             s.linear_solver = k;
             return true;
           }});
+  t.text({"solver.tangent", {}, "", {}, {"auto", "exact", "symmetrised"},
+          "a sliding-friction tangent: its symmetric part with CHOLMOD (auto: while friction <= 0.2) or exact with UMFPACK", false},
+         {[](const Scene& s) -> std::string { return to_string(s.tangent); },
+          [](Scene& s, const std::string& v) { return friction_tangent_from_string(v, &s.tangent); }});
   t.boolean({"solver.extrapolate", {}, "", {}, {}, "start each increment from the previous increment's displacement, scaled", false},
             [](Scene& s) -> bool& { return s.extrapolate; });
   t.boolean({"solver.line_search", {}, "", {}, {}, "energy line search on every Newton correction", false},

@@ -98,7 +98,8 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const mode
   j["solver"] = {{"travel_per_increment", s.travel_per_increment}, {"move_increments", s.move_increments},
                  {"line_search", s.line_search},                   {"extrapolate", s.extrapolate},
                  {"estimate_next_correction", s.estimate_next_correction}, {"divergence_after", s.divergence_after},
-                 {"stabilisation", s.stabilisation}};
+                 {"stabilisation", s.stabilisation},               {"tangent", to_string(s.tangent)},
+                 {"symmetrised_tangent", symmetrised_tangent(s.tangent, s.contact.friction)}};
   j["warnings"] = warnings;
   return j;
 }

@@ -73,6 +73,7 @@ struct ConeScene {
   // and the run ended all the same (docs/cone-scene.md); 1e-4 is the factor tried there.
   double stabilisation = 0.0;
   std::optional<solver::LinearSolverKind> linear_solver;
+  FrictionTangent tangent = FrictionTangent::automatic;  // [solver] tangent (scene_tables.hpp)
   // Output.
   int vtu_every = 0;
   int checkpoint_every = 1;  // completed contours between checkpoints (DIR/checkpoint/state.bin); 0: none

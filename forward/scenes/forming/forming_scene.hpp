@@ -48,6 +48,7 @@ struct FormingScene {
   double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
   int divergence_after = solver::NewtonOptions{}.divergence_after;  // the solver's 3
   std::optional<solver::LinearSolverKind> linear_solver;
+  FrictionTangent tangent = FrictionTangent::automatic;  // [solver] tangent (scene_tables.hpp)
   // Output.
   int vtu_every = 0;
   std::vector<std::string> sections;  // path point names where the y = 0 section is written

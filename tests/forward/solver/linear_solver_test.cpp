@@ -42,6 +42,28 @@ TEST(SparsePattern, BuildAndFind) {
   EXPECT_THROW(a.add_to_diagonal(Eigen::Vector2d(1.0, 1.0)), std::invalid_argument);
 }
 
+// The symmetric part of a non-symmetric tangent (NewtonOptions::symmetric_tangent): (A + A^T) / 2
+// entry by entry, the source left as it was, and patterns that differ refused.
+TEST(SparseMatrix, SymmetricPartAveragesMirroredEntries) {
+  const SparsePattern p = build_pattern(3, {{0, 1}, {1, 2}});
+  SparseMatrix a(p);
+  a.add(0, 0, 4.0);
+  a.add(0, 1, 1.0);
+  a.add(1, 0, 3.0);
+  a.add(1, 2, -2.0);
+  a.add(2, 2, 5.0);
+  SparseMatrix s(p);
+  s.assign_symmetric_part(a);
+  EXPECT_TRUE(s.is_symmetric(0.0));
+  EXPECT_FALSE(a.is_symmetric(1e-10));
+  EXPECT_EQ(s.multiply(Eigen::Vector3d(1.0, 0.0, 0.0)), Eigen::Vector3d(4.0, 2.0, 0.0));
+  EXPECT_EQ(s.multiply(Eigen::Vector3d(0.0, 0.0, 1.0)), Eigen::Vector3d(0.0, -1.0, 5.0));
+  EXPECT_EQ(a.multiply(Eigen::Vector3d(1.0, 0.0, 0.0)), Eigen::Vector3d(4.0, 3.0, 0.0));
+  const SparsePattern other = build_pattern(3, {{0, 1}, {1, 2}});
+  SparseMatrix b(other);
+  EXPECT_THROW(b.assign_symmetric_part(a), std::invalid_argument);
+}
+
 TEST(LinearSolver, BarAgainstExactSolutionBothSolvers) {
   const int n = 200;
   const double h = 1.0 / n;
