@@ -65,7 +65,7 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
                   "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart", "run_time_limit"});
   fp.multistart = ft->integer("multistart", 1);
   if (fp.multistart < 1 || fp.multistart > 10000) ft->fail("multistart", "must lie in [1, 10000]");
-  fp.per_experiment = ft->boolean("per_experiment", false);
+  fp.per_experiment = ft->boolean("per_experiment", false);  // default: see read_fit_file
   fp.name = ft->string("name", fs::path(path).stem().string());
   fp.description = ft->string("description", "");
   const std::string card_path = resolve_path(path, ft->string("card"));
@@ -237,9 +237,11 @@ FitProblem read_fit_file(const std::string& path) {
   const auto exps = root.table_array("experiment");
   std::vector<const scene::Scene*> fe_scenes;
   for (const auto& e : exps) fp.experiments.push_back(read_experiment(e, path, card, fp, fe_scenes));
+  const auto ft = root.table("fit");
+  // Each experiment fitted alone: cheap with material points only, every FE run again otherwise.
+  if (!ft->has("per_experiment")) fp.per_experiment = !fp.scene_runs;
   if (fp.scene_runs) {
     const FitSettings fe = fe_fit_settings();
-    const auto ft = root.table("fit");
     if (!ft->has("function_tolerance")) fp.settings.function_tolerance = fe.function_tolerance;
     if (!ft->has("parameter_tolerance")) fp.settings.parameter_tolerance = fe.parameter_tolerance;
     if (!ft->has("gradient_tolerance")) fp.settings.gradient_tolerance = fe.gradient_tolerance;
