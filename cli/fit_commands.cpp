@@ -150,7 +150,8 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
     const std::string csv = with_option_names({{"x", "--x"}, {"y", "--y"}, {"every", "--every"}, {"noise", "--noise"}}, [&] {
       if (!fe) {
         if (!o->set.empty()) throw io::InputError("", "--set", o->set.front(), "only for FE scenes (a material-point scene's inputs are its file's)");
-        auto scene = scene::read_material_point_scene(o->scene);
+        // With --material the scene's own card (or the default one) is not needed.
+        auto scene = scene::read_material_point_scene(o->scene, o->material.empty() ? scene::AbsentMaterial::default_card : scene::AbsentMaterial::no_card);
         if (!o->material.empty()) scene.card = material::load_material_card(o->material);
         card_name = scene.card.name;
         return inverse::synthetic_measurement_csv(scene, o->syn);

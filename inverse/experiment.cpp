@@ -113,6 +113,49 @@ class ScalarExperiment final : public Experiment {
   ScalarExperimentSpec s_;
 };
 
+class ScalarTableExperiment final : public Experiment {
+ public:
+  explicit ScalarTableExperiment(ScalarTableExperimentSpec s) : s_(std::move(s)) {
+    for (auto& setup : s_.setups) {
+      setup.want_r_value = s_.observable == "r_value";
+      setup.want_offset_yield = s_.observable == "yield_stress";
+    }
+    name_ = s_.name;
+    kind_ = "scalar_table";
+    weight_ = s_.weight;
+    const CurveConditioning c = curve_conditioning(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
+    scale_ = c.scale;
+    noise_given_ = c.noise_given;
+    sqrt_w_ = c.sqrt_weights;
+  }
+  int num_residuals() const override { return static_cast<int>(s_.ys.size()); }
+  bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
+  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  ExperimentCurve axes() const override { return {s_.x, s_.observable, s_.x_unit, s_.y_unit, {}, {}, {}}; }
+  ExperimentCurve compare(const ParameterPoint& p) const override {
+    ExperimentCurve c{s_.x, s_.observable, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
+    std::vector<double> r(s_.ys.size()), sim(s_.ys.size());
+    if (eval(p.material, r.data(), &sim)) c.simulated = sim;
+    return c;
+  }
+
+ private:
+  template <typename T>
+  bool eval(const material::MaterialParams<T>& m, T* r, std::vector<double>* simulated) const {
+    for (std::size_t i = 0; i < s_.setups.size(); ++i) {
+      const auto res = scene::run_material_point(m, s_.setups[i]);
+      if (!res.ok) return false;
+      const auto v = scalar_observable(res, s_.observable);
+      if (!v) return false;
+      r[i] = sqrt_w_[i] * (*v - s_.ys[i]) / scale_;
+      if (simulated) (*simulated)[i] = value_of(*v);
+    }
+    return true;
+  }
+  ScalarTableExperimentSpec s_;
+  std::vector<double> sqrt_w_;
+};
+
 }  // namespace
 
 const char* scalar_observable_names() { return "r_value, yield_stress, initial_yield_stress, reverse_yield_stress, final_stress"; }
@@ -147,6 +190,9 @@ std::unique_ptr<Experiment> make_curve_experiment(CurveExperimentSpec spec) {
 }
 std::unique_ptr<Experiment> make_scalar_experiment(ScalarExperimentSpec spec) {
   return std::make_unique<ScalarExperiment>(std::move(spec));
+}
+std::unique_ptr<Experiment> make_scalar_table_experiment(ScalarTableExperimentSpec spec) {
+  return std::make_unique<ScalarTableExperiment>(std::move(spec));
 }
 
 }  // namespace spifit::inverse

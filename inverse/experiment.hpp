@@ -86,6 +86,19 @@ struct ScalarExperimentSpec {
   std::string source;  // provenance, e.g. "thesis App. C.1"
 };
 std::unique_ptr<Experiment> make_scalar_experiment(ScalarExperimentSpec spec);
+
+// A table of scalars measured on a material-point scene: row i runs the scene with its input x
+// (e.g. scene.angle) at xs[i] and compares the observable with ys[i]; one residual per row,
+// conditioned as a curve's (curve_conditioning).
+struct ScalarTableExperimentSpec {
+  std::string name;
+  std::vector<scene::MaterialPointSetup> setups;  // one per row, the row's x set
+  std::string observable, x, x_unit, y_unit;      // x: the data column (a scene input's key)
+  std::vector<double> xs, ys, point_weights;
+  double noise = 0.0, noise_relative = 0.0, weight = 1.0;
+  std::string source;
+};
+std::unique_ptr<Experiment> make_scalar_table_experiment(ScalarTableExperimentSpec spec);
 const char* scalar_observable_names();
 bool is_scalar_observable(const std::string& name);
 

@@ -1,9 +1,9 @@
 #include "inverse/fit_file.hpp"
 
 #include "forward/io/toml_reader.hpp"
-#include "forward/scenes/material_point/curve_columns.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/fe_experiment_file.hpp"
+#include "inverse/material_point_experiment_file.hpp"
 #include "inverse/measurement.hpp"
 #include "inverse/nlopt_fit.hpp"
 
@@ -24,23 +24,6 @@ const char* fit_algorithm_names() {
 bool is_fit_algorithm(const std::string& n) { return n == "levenberg_marquardt" || n == "dogleg" || is_nlopt_algorithm(n); }
 
 namespace {
-
-// Range of the simulated abscissa of a scene: [0, end] and whether it increases.
-std::pair<double, double> abscissa_range(const scene::MaterialPointSetup& s, const std::string& x, bool* monotone) {
-  double prev = 0.0, total = 0.0, lo = 0.0, hi = 0.0;
-  bool increasing = true;
-  for (double t : s.strain_path) {
-    total += std::abs(t - prev);
-    if (t < prev) increasing = false;
-    lo = std::min(lo, t);
-    hi = std::max(hi, t);
-    prev = t;
-  }
-  if (x == "cumulative_strain") { *monotone = true; return {0.0, total}; }
-  if (x == "increment") { *monotone = true; return {0.0, double(s.increments)}; }
-  *monotone = increasing;
-  return {lo, hi};
-}
 
 // scene_info: the named input of the FE scenes for a scene-input parameter, else null.
 ParameterSpec read_parameter(const io::TomlTable& t, const std::string& name, double current, const io::InputInfo* scene_info) {
@@ -82,7 +65,7 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
                   "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart", "run_time_limit"});
   fp.multistart = ft->integer("multistart", 1);
   if (fp.multistart < 1 || fp.multistart > 10000) ft->fail("multistart", "must lie in [1, 10000]");
-  fp.per_experiment = ft->boolean("per_experiment", false);
+  fp.per_experiment = ft->boolean("per_experiment", false);  // default: see read_fit_file
   fp.name = ft->string("name", fs::path(path).stem().string());
   fp.description = ft->string("description", "");
   const std::string card_path = resolve_path(path, ft->string("card"));
@@ -184,63 +167,6 @@ void check_card_at_bounds(const std::string& path, const FitProblem& fp) {
   }
 }
 
-// A scalar [[experiment]] (an observable of a material-point scene against a value).
-std::unique_ptr<Experiment> scalar_experiment(const io::TomlTable& e, const std::string& name, scene::MaterialPointScene sc, double noise,
-                                              double weight) {
-  ScalarExperimentSpec s;
-  s.name = name;
-  s.scene = std::move(sc);
-  s.observable = e.string("observable");
-  if (!is_scalar_observable(s.observable)) e.fail("observable", std::string("unknown observable (known: ") + scalar_observable_names() + ")");
-  if (s.observable == "reverse_yield_stress" && s.scene.setup.strain_path.size() < 2)
-    e.fail("observable", "reverse_yield_stress needs a scene whose strain path reverses");
-  if (s.observable == "r_value" || s.observable == "yield_stress") {
-    if (s.scene.setup.kind != scene::MaterialPointKind::tensile) e.fail("observable", "r_value and yield_stress need a tensile scene");
-  }
-  s.value = e.number("value");
-  s.noise = noise;
-  s.weight = weight;
-  s.source = e.string("source", "");
-  return make_scalar_experiment(std::move(s));
-}
-
-// A curve [[experiment]]: a column of a measurement CSV against a simulated curve's.
-std::unique_ptr<Experiment> curve_experiment(const io::TomlTable& e, const std::string& path, const std::string& name,
-                                             scene::MaterialPointScene sc, double noise, double weight, double noise_relative) {
-  CurveExperimentSpec c;
-  c.name = name;
-  c.scene = std::move(sc);
-  c.noise = noise;
-  c.noise_relative = noise_relative;
-  c.weight = weight;
-  c.x = e.string("x", "strain");
-  c.y = e.string("y", "stress");
-  scene::CurvePoint<double> probe;
-  if (!scene::curve_abscissa(probe, c.x)) e.fail("x", std::string("not an abscissa of a simulated curve (known: ") + scene::curve_abscissa_names() + ")");
-  if (!scene::curve_response(probe, c.y)) e.fail("y", std::string("not a column of a simulated curve (known: ") + scene::curve_response_names() + ")");
-  const std::string data_path = resolve_path(path, e.string("data"));
-  const auto table = read_measurement_csv(data_path);
-  c.xs = table.column(c.x);
-  c.ys = table.column(c.y);
-  c.x_unit = table.units.at(c.x);
-  c.y_unit = table.units.at(c.y);
-  if (e.has("weight_column")) {
-    c.point_weights = table.column(e.string("weight_column"));
-    for (double w : c.point_weights) if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
-  }
-  bool monotone = true;
-  const auto [x_lo, x_hi] = abscissa_range(c.scene.setup, c.x, &monotone);
-  if (!monotone) e.fail("x", "the scene's strain reverses: use x = \"cumulative_strain\" (or \"increment\") for curves that reverse");
-  for (std::size_t i = 0; i < c.xs.size(); ++i) {
-    if (i > 0 && !(c.xs[i] > c.xs[i - 1]))
-      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
-    if (c.xs[i] < x_lo - 1e-12 || c.xs[i] > x_hi + 1e-12)
-      throw InputError(data_path, "column " + c.x, format_number(c.xs[i]),
-                       "outside the simulated range [" + format_number(x_lo) + ", " + format_number(x_hi) + "] of scene " + c.scene.name);
-  }
-  return make_curve_experiment(std::move(c));
-}
-
 std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::string& path, const material::MaterialCard& card, FitProblem& fp,
                                             std::vector<const scene::Scene*>& fe_scenes) {
   const std::string scene_path = resolve_path(path, e.string("scene"));
@@ -248,17 +174,15 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   const scene::SceneKind* kind = scene::find_scene_kind(scene::scene_kind_of_file(scene_path));
   if (!kind) (void)scene::read_scene(scene_path);  // names the unknown kind and the known ones
   const bool fe = kind->family != "material_point";
-  const bool scalar = e.has("observable");
   if (fe) e.allow_only(fe_experiment_keys());
-  else if (scalar) e.allow_only({"name", "scene", "observable", "value", "noise", "weight", "source"});
-  else e.allow_only({"name", "scene", "data", "x", "y", "noise", "noise_relative", "weight", "weight_column"});
+  else allow_material_point_keys(e);
   std::shared_ptr<const scene::Scene> fe_scene;
   scene::MaterialPointScene sc;
   if (fe) {
     fe_scene = scene::read_scene(scene_path);
     if (!fe_scene->card()) e.fail("scene", "scene kind " + kind->name + " has a material of its own: a fit cannot set its card");
   } else {
-    sc = scene::read_material_point_scene(scene_path);
+    sc = read_experiment_scene(e, scene_path);
   }
   const std::string name = e.string("name", fe ? fe_scene->name() : sc.name);
   if (fe) {
@@ -288,8 +212,7 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
     fe_scenes.push_back(fe_scene.get());
     return read_fe_experiment(e, path, FeExperimentBase{name, fe_scene, fp.scene_runs, noise, noise_relative, weight});
   }
-  if (scalar) return scalar_experiment(e, name, std::move(sc), noise, weight);
-  return curve_experiment(e, path, name, std::move(sc), noise, weight, noise_relative);
+  return read_material_point_experiment(e, path, {name, std::move(sc), noise, noise_relative, weight});
 }
 
 }  // namespace
@@ -314,9 +237,11 @@ FitProblem read_fit_file(const std::string& path) {
   const auto exps = root.table_array("experiment");
   std::vector<const scene::Scene*> fe_scenes;
   for (const auto& e : exps) fp.experiments.push_back(read_experiment(e, path, card, fp, fe_scenes));
+  const auto ft = root.table("fit");
+  // Each experiment fitted alone: cheap with material points only, every FE run again otherwise.
+  if (!ft->has("per_experiment")) fp.per_experiment = !fp.scene_runs;
   if (fp.scene_runs) {
     const FitSettings fe = fe_fit_settings();
-    const auto ft = root.table("fit");
     if (!ft->has("function_tolerance")) fp.settings.function_tolerance = fe.function_tolerance;
     if (!ft->has("parameter_tolerance")) fp.settings.parameter_tolerance = fe.parameter_tolerance;
     if (!ft->has("gradient_tolerance")) fp.settings.gradient_tolerance = fe.gradient_tolerance;

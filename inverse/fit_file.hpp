@@ -31,7 +31,9 @@ struct FitProblem {
   std::unique_ptr<ParameterSet> parameters;
   std::vector<std::shared_ptr<Experiment>> experiments;
   FitSettings settings;
-  bool per_experiment = false;  // also fit each experiment alone and compare (conflicts)
+  // Also fit each experiment alone and compare (conflicts); a fit file's default: true with
+  // material-point experiments only, false with any FE experiment.
+  bool per_experiment = false;
   int multistart = 1;           // number of starts (1: the initial point only)
   std::vector<std::string> notes;  // reading remarks shown with the result (e.g. renormalised Hill)
   // The forward runs of the FE experiments (null without any): shared by the experiments on

@@ -138,6 +138,8 @@ TEST(Cli, BadScenesExitTwoWithOneLine) {
       {"wrong_type.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"" + mat + "\"\nincrements = \"many\"\n", "scene.increments = \"many\""},
       {"unknown_kind.toml", "[scene]\nkind = \"tensle\"\nmaterial = \"" + mat + "\"\n", "scene.kind = \"tensle\""},
       {"missing_card.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"nope.toml\"\n", "scene.material = \"nope.toml\""},
+      // No card and no default card C.3 + C.4 beside the temporary directory.
+      {"no_card.toml", "[scene]\nkind = \"tensile\"\n", "no_card.toml: scene.material: not given, and the default card C.3 + C.4 is not at"},
       {"negative_K.toml", "", "swift.K = -180"},
       {"one_newton.toml", "[scene]\nkind = \"tensile\"\nmaterial = \"" + mat + "\"\n[solver]\nmax_newton_iterations = 1\n", "solver.max_newton_iterations = 1"},
   };

@@ -49,10 +49,11 @@ TEST(BundledFits, NConflictIsReportedPerExperiment) {
   EXPECT_NE(r.conflicts[0].find("lies in shear_00's interval only, so r45 is not satisfied"), std::string::npos) << r.conflicts[0];
 }
 
-// fit_classic: the three measured r-values and the synthetic curves agree (no conflict
-// reported among identifiable pairs is expected here? not requested: just check it fits).
+// fit_classic recovers C.2, and its default conflict check (material points only) fits each
+// experiment alone and finds the measured r-values and the synthetic C.2 curves agree.
 TEST(BundledFits, ClassicFitsNearC2) {
   const auto fp = inverse::read_fit_file(src("experiments/aa3003o/fit_classic.toml"));
+  ASSERT_TRUE(fp.per_experiment);
   const auto r = inverse::run_fit(fp);
   ASSERT_TRUE(r.usable);
   const auto truth = material::load_material_card(src("materials/aa3003o_c2.toml"));
@@ -60,6 +61,16 @@ TEST(BundledFits, ClassicFitsNearC2) {
     const int k = index_of(fp, name);
     EXPECT_NEAR(r.values[k] / inverse::parameter_value(truth, name), 1.0, 0.01) << name;
   }
+  ASSERT_EQ(r.per_experiment.size(), 5u);
+  EXPECT_TRUE(r.conflicts.empty()) << r.conflicts.front();
+  // The table of r-values alone fixes Hill by eq. C.3 (H = 2 - G): G = 2 / (1 + r0),
+  // F = H / r90, N = (F + G)(r45 + 1/2).
+  const auto& alone = r.per_experiment[0];
+  EXPECT_EQ(alone.experiment, "r_values");
+  const double G = 2.0 / 1.68, F = (2.0 - G) / 0.66, N = (F + G) * 1.23;
+  EXPECT_NEAR(alone.values[index_of(fp, "hill.G")], G, 1e-5);
+  EXPECT_NEAR(alone.values[index_of(fp, "hill.F")], F, 1e-5);
+  EXPECT_NEAR(alone.values[index_of(fp, "hill.N")], N, 1e-5);
 }
 
 // Multi-start: random starts inside the bounds all reach the same minimum for fit_kinematic,

@@ -105,10 +105,29 @@ TEST(FitFile, MeasurementUnitsAndComments) {
   EXPECT_EQ(t.column("stress")[0], 60.5);
 }
 
+// [fit] per_experiment: by default on when every experiment is a material point (each fit alone
+// is cheap), off with an FE experiment (each would run the FE scenes again); a stated value wins.
+TEST(FitFile, PerExperimentDefaultsToOnWithMaterialPointsOnly) {
+  const std::string data = write("pe.csv", "strain [-],stress [MPa]\n0.01,60\n0.02,70\n");
+  const std::string head = "[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") + "\"\n";
+  const std::string fe = "[[experiment]]\nname = \"indent\"\nscene = \"" + src("experiments/aa3003o/scenes/indent.toml") +
+                         "\"\nobservable = \"peak_fz\"\nvalue = 100.0\n";
+  auto per_experiment = [&](const std::string& fit_keys, const std::string& experiments) {
+    return inverse::read_fit_file(write("pe.toml", head + fit_keys + kParam + experiments)).per_experiment;
+  };
+  EXPECT_TRUE(per_experiment("", curve(data)));
+  EXPECT_FALSE(per_experiment("per_experiment = false\n", curve(data)));
+  EXPECT_FALSE(per_experiment("", fe));
+  EXPECT_FALSE(per_experiment("", curve(data) + fe));
+  EXPECT_TRUE(per_experiment("per_experiment = true\n", curve(data) + fe));
+}
+
 TEST(FitFile, BundledFitClassicLoads) {
   const auto fp = inverse::read_fit_file(src("experiments/aa3003o/fit_classic.toml"));
   EXPECT_EQ(fp.parameters->num_free(), 6);
-  EXPECT_EQ(fp.experiments.size(), 7u);
+  ASSERT_EQ(fp.experiments.size(), 5u);  // the r-values are one table
+  EXPECT_EQ(fp.experiments[0]->num_residuals(), 3);
+  EXPECT_EQ(fp.experiments[0]->kind(), "scalar_table");
 }
 
 // noise_relative: each point's standard deviation is that fraction of its |y|, so the residual is

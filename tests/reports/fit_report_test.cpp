@@ -210,8 +210,8 @@ TEST_F(FitReportTest, PlotsAreSvgFilesReferencedByTheReport) {
   const fs::path d = copy_of_fit("plots");
   const auto s = reports::render_fit_report(d, {});
   EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
-  // 4 curves x (fit + residuals) + scalars + convergence.
-  ASSERT_EQ(s.plots.size(), 10u);
+  // 4 curves and the table of r-values x (fit + residuals) + convergence; no scalar experiment.
+  ASSERT_EQ(s.plots.size(), 11u);
   const std::string md = slurp(d / "report.md"), html = slurp(d / "report.html");
   for (const auto& p : s.plots) {
     ASSERT_TRUE(fs::exists(p)) << p;
@@ -227,9 +227,9 @@ TEST_F(FitReportTest, PlotsAreSvgFilesReferencedByTheReport) {
     EXPECT_TRUE(fs::exists(d / "plots" / "src" / (p.stem().string() + ".gp"))) << p;
   }
   EXPECT_TRUE(fs::exists(d / "plots" / "convergence.svg"));
-  EXPECT_TRUE(fs::exists(d / "plots" / "04_tensile_00_fit.svg"));
-  EXPECT_TRUE(fs::exists(d / "plots" / "04_tensile_00_residuals.svg"));
-  EXPECT_NE(slurp(d / "plots" / "04_tensile_00_fit.svg").find("measured"), std::string::npos);
+  EXPECT_TRUE(fs::exists(d / "plots" / "02_tensile_00_fit.svg"));
+  EXPECT_TRUE(fs::exists(d / "plots" / "02_tensile_00_residuals.svg"));
+  EXPECT_NE(slurp(d / "plots" / "02_tensile_00_fit.svg").find("measured"), std::string::npos);
   std::string why;
   EXPECT_TRUE(html_well_formed(html, &why)) << why;
 }
@@ -304,7 +304,7 @@ TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
   json j = json::parse(slurp(d / "fit.json"));
   for (auto& e : j["experiments"]) {
     if (e["name"] == "tensile_45") e["rms"] = 4.5;   // residuals 4.5 times the stated noise
-    if (e["name"] == "r90") e["rms"] = 6.0;          // 6 sigma off
+    if (e["name"] == "r_values") e["rms"] = 6.0;     // the table of r-values 6 sigma off
   }
   j["parameters"]["hill.N"]["value"] = j["parameters"]["hill.N"]["upper"];
   j["warnings"] = json::array({"swift.eps0 is not identifiable from the chosen experiments"});
@@ -321,7 +321,7 @@ TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
   };
   EXPECT_TRUE(finding("tensile_45", "disagrees with the model"));
   EXPECT_TRUE(finding("tensile_45", "4.5 times the stated noise"));
-  EXPECT_TRUE(finding("r90", "disagrees with the model"));
+  EXPECT_TRUE(finding("r_values", "disagrees with the model"));
   EXPECT_TRUE(finding("hill.N", "upper bound"));
   EXPECT_TRUE(finding("swift.eps0", "not identifiable"));
   EXPECT_FALSE(finding("tensile_00", ""));
@@ -416,7 +416,7 @@ TEST_F(FitReportTest, HostileExperimentNamesAreEscapedEverywhere) {
   const auto s = reports::render_fit_report(d, {});
   EXPECT_FALSE(fs::exists(marker));
   EXPECT_TRUE(s.warnings.empty()) << s.warnings.front();
-  EXPECT_EQ(s.plots.size(), 10u);
+  EXPECT_EQ(s.plots.size(), 11u);
   for (const auto& p : s.plots) {
     for (char c : p.filename().string()) EXPECT_TRUE(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.') << p;
   }
@@ -427,7 +427,7 @@ TEST_F(FitReportTest, HostileExperimentNamesAreEscapedEverywhere) {
   EXPECT_TRUE(html_well_formed(html, &why)) << why;
   EXPECT_NE(slurp(d / "report.md").find("| a'b\"&lt;i>\\|\\`$(touch " + marker + ")\\`'; system('touch " + marker + "') |"), std::string::npos);
   // A data_file pointing outside DIR is not read.
-  j["experiments"][3]["data_file"] = "../../etc/passwd";
+  j["experiments"][1]["data_file"] = "../../etc/passwd";  // the renamed tensile_00
   write(d / "fit.json", j.dump(2));
   const auto s2 = reports::render_fit_report(d, {false});
   EXPECT_FALSE(s2.warnings.empty());

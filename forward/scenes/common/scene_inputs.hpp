@@ -29,12 +29,19 @@ void add_scene_inputs(io::InputTable<Scene>& t, std::vector<std::string> kinds, 
   t.custom({"scene.material", {}, "", {}, {}, "material card, relative to the scene file (" + when + ")", false}, InputType::text);
 }
 
-// [scene] name (default: the file's stem), description and material card of the scene file at
-// `path` into s.name, s.description and s.card.
+// [scene] name (default: the file's stem) and description of the scene file at `path` into
+// s.name and s.description.
 template <typename Scene>
-void read_scene_header(const io::TomlTable& sc, const std::string& path, Scene& s, bool card_required = false) {
+void read_scene_name(const io::TomlTable& sc, const std::string& path, Scene& s) {
   s.name = sc.string("name", std::filesystem::path(path).stem().string());
   s.description = sc.string("description", "");
+}
+
+// The name, description and material card of the scene file at `path` into s.name,
+// s.description and s.card.
+template <typename Scene>
+void read_scene_header(const io::TomlTable& sc, const std::string& path, Scene& s, bool card_required = false) {
+  read_scene_name(sc, path, s);
   s.card = read_scene_material(sc, path, card_required);
 }
 

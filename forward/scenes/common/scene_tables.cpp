@@ -7,10 +7,15 @@
 namespace spifit::scene {
 
 material::MaterialCard read_scene_material(const io::TomlTable& sc, const std::string& scene_path, bool required) {
-  std::filesystem::path mp(required ? sc.string("material") : sc.string("material", "../../../materials/aa3003o_c3c4.toml"));
+  const char* default_card = "../../../materials/aa3003o_c3c4.toml";
+  std::filesystem::path mp(required ? sc.string("material") : sc.string("material", default_card));
   if (mp.is_relative()) mp = std::filesystem::path(scene_path).parent_path() / mp;
-  if (!std::filesystem::exists(mp)) sc.fail("material", "material card not found at " + mp.lexically_normal().string());
-  return material::load_material_card(mp.lexically_normal().string());
+  const std::string card = mp.lexically_normal().string();
+  if (!std::filesystem::exists(mp) && !sc.has("material"))
+    sc.fail("material", "not given, and the default card C.3 + C.4 is not at " + std::filesystem::absolute(mp).lexically_normal().string() + " (" +
+                            default_card + " from the scene's folder): give the scene's card");
+  if (!std::filesystem::exists(mp)) sc.fail("material", "material card not found at " + card);
+  return material::load_material_card(card);
 }
 
 std::string InputViolation::text() const {

@@ -20,7 +20,8 @@
 namespace spifit::scene {
 
 // [scene] material: the card file relative to the scene file (unless required, default C.3 +
-// C.4 of the bundled tree); a missing key (if required) or file fails on the key.
+// C.4 of the bundled tree: ../../../materials/aa3003o_c3c4.toml from the scene's folder); a
+// missing key (if required), card file or default card fails on the key.
 material::MaterialCard read_scene_material(const io::TomlTable& sc, const std::string& scene_path, bool required = false);
 
 // A check across keys that a scene's values fail (empty key: none): the key blamed, its value

@@ -35,7 +35,7 @@ void read_strain_path(const io::TomlTable& sc, MaterialPointSetup& s) {
 
 }  // namespace
 
-MaterialPointScene read_material_point_scene(const std::string& path) {
+MaterialPointScene read_material_point_scene(const std::string& path, AbsentMaterial absent) {
   const auto root = io::TomlTable::parse_file(path);
   root.allow_only({"scene", "solver"});
   const auto sc = root.table("scene");
@@ -47,7 +47,8 @@ MaterialPointScene read_material_point_scene(const std::string& path) {
   if (!material_point_kind_from_string(kind, &s.kind)) sc->fail("kind", "expected a material-point kind: tensile, shear, bauschinger, plane_strain or biaxial");
   const auto& inputs = material_point_inputs(s.kind);
   sc->allow_only(inputs.keys_of("scene"));
-  read_scene_header(*sc, path, out, true);
+  if (absent == AbsentMaterial::no_card && !sc->has("material")) read_scene_name(*sc, path, out);
+  else read_scene_header(*sc, path, out);
   inputs.read(*sc, "scene", out);
   read_strain_path(*sc, s);
   read_input_tables(root, inputs, {"solver"}, out);

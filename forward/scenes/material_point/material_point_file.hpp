@@ -16,7 +16,11 @@ struct MaterialPointScene {
   MaterialPointSetup setup;
 };
 
+// What a scene file without [scene] material gets: the default card C.3 + C.4, as the FE
+// scenes (a run), or no card (a fit, whose card replaces the scene's; card stays empty).
+enum class AbsentMaterial { default_card, no_card };
+
 // Throws io::InputError naming file, key and value.
-MaterialPointScene read_material_point_scene(const std::string& path);
+MaterialPointScene read_material_point_scene(const std::string& path, AbsentMaterial absent = AbsentMaterial::default_card);
 
 }  // namespace spifit::scene

@@ -10,7 +10,7 @@ using io::Range;
 using Table = io::InputTable<MaterialPointScene>;
 
 void add_scene(Table& t) {
-  add_scene_inputs(t, {"tensile", "shear", "bauschinger", "plane_strain", "biaxial"}, SceneMaterialKey::required);
+  add_scene_inputs(t, {"tensile", "shear", "bauschinger", "plane_strain", "biaxial"}, SceneMaterialKey::optional);
   t.real({"scene.angle", {}, "deg", Range::closed(-180.0, 180.0), {}, "loading direction from the rolling direction", true},
          [](MaterialPointScene& s) -> double& { return s.setup.angle_deg; });
   t.custom({"scene.strain_path", {}, "", {}, {},
