@@ -72,7 +72,7 @@ struct FitRecord {
   };
   // experiments[i]: costs, the divisor of the residuals and the axes of the data file.
   struct Experiment {
-    std::string name, kind;  // kind: "curve" or "scalar"
+    std::string name, kind;  // curve, scalar (material points); force_curve, section, contour_means, fe_scalar (FE)
     int points = 0;
     double cost = kNaN, rms = kNaN;
     double scale = kNaN;              // divisor of the residuals (noise, or range / |value|)

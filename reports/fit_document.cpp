@@ -248,7 +248,7 @@ void add_scalars(Document& d, const FitReportContent& c) {
       continue;
     }
     const double diff = data.fitted[0] - data.measured[0];
-    sc.rows.push_back({cell(x.name), cell(with_unit(x.y, x.y_unit)), cell(fmt(data.measured[0])), cell(fmt(data.initial[0])),
+    sc.rows.push_back({cell(x.name), cell(axis_label(x.y, x.y_unit, "n/a")), cell(fmt(data.measured[0])), cell(fmt(data.initial[0])),
                        cell(fmt(data.fitted[0])), cell(fmt(diff, 4)), cell(fmt(diff / x.scale, 3), bad_if(c.verdict.experiments[i].level == 2))});
   }
   d.table(sc);

@@ -1,6 +1,7 @@
 // The fit report: a real fit (fit_classic) is run once, written like `spifit fit --out DIR`
 // does, and rendered; the report must show what fit.json says, the HTML must be well formed,
 // plots must exist when gnuplot is there, and a broken gnuplot or fit.json is handled.
+#include "tests/support/markdown_rows.hpp"
 #include "tests/support/temp_files.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
@@ -29,35 +30,12 @@ using namespace spifit;
 
 namespace {
 
+using spifit::test::md_row;
 using spifit::test::slurp;
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 bool have_gnuplot() { return !reports::find_executable("gnuplot").empty(); }
-
-// Cells of the Markdown table row that starts with "| NAME |".
-std::vector<std::string> md_row(const std::string& md, const std::string& name) {
-  std::istringstream in(md);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("| " + name + " |", 0) != 0) continue;
-    std::vector<std::string> cells;
-    std::string cell;
-    for (std::size_t i = 1; i < line.size(); ++i) {
-      if (line[i] == '\\' && i + 1 < line.size()) {
-        cell += line[++i];
-      } else if (line[i] == '|') {
-        const auto a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
-        cells.push_back(a == std::string::npos ? std::string() : cell.substr(a, b - a + 1));
-        cell.clear();
-      } else {
-        cell += line[i];
-      }
-    }
-    return cells;
-  }
-  return {};
-}
 
 double rel_diff(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
@@ -366,6 +344,26 @@ TEST_F(FitReportTest, MultiStartSectionAndSpreadNote) {
   EXPECT_NE(md.find("| 1 (best) | yes | 87 |"), std::string::npos) << md;
   EXPECT_NE(md.find("give swift.K from"), std::string::npos);
   EXPECT_TRUE(s.findings.empty()) << "notes are not warnings";
+}
+
+// An FE scene's scalar observable (kind fe_scalar, e.g. peak_fz in N) is reported like a
+// material point's scalar: a row of the scalar table and a bar, no curve plots.
+TEST_F(FitReportTest, FeScalarsAreScalars) {
+  const fs::path d = copy_of_fit("fe_scalar");
+  json j = json::parse(slurp(d / "fit.json"));
+  for (auto& e : j["experiments"]) {
+    if (e["name"] != "r90") continue;
+    e["kind"] = "fe_scalar";
+    e["y"] = "peak_fz";
+    e["y_unit"] = "N";
+  }
+  write(d / "fit.json", j.dump(2));
+  reports::render_fit_report(d, {false});
+  const std::string md = slurp(d / "report.md");
+  const auto row = md_row(test::md_section(md, "### Scalar experiments"), "r90");
+  ASSERT_EQ(row.size(), 7u) << md;
+  EXPECT_EQ(row[1], "peak_fz [N]");
+  EXPECT_EQ(test::md_section(md, "## Curves: data and fit").find("### r90"), std::string::npos);
 }
 
 // A real conflict (fit_n_conflict: r45 and the shear curve disagree on Hill's N; each
