@@ -15,6 +15,9 @@ struct ExperimentCost {
   int points = 0;
   double cost = 0.0;  // 1/2 sum r^2 of this experiment at the solution
   double rms = 0.0;   // root-mean-square conditioned residual
+  // Per free parameter: this experiment's share of its Fisher information at the solution
+  // (information_shares in uncertainty.hpp; NaN where no experiment responds to it).
+  std::vector<double> information_share;
 };
 
 struct FitResult {
