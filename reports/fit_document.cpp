@@ -1,5 +1,6 @@
 #include "reports/fit_document.hpp"
 
+#include "reports/fit_sections.hpp"
 #include "reports/report_format.hpp"
 
 #include <algorithm>
@@ -381,10 +382,12 @@ Document fit_report_document(const FitReportContent& c) {
   add_parameters(d, c);
   add_experiments(d, c);
   add_per_experiment(d, c.record);
+  add_information_shares(d, c.record);
   add_multistart(d, c.record);
   add_scalars(d, c);
   add_curves(d, c);
   add_convergence(d, c);
+  add_forward_runs(d, c.record);
   add_correlation(d, c.record);
   add_singular_values(d, c.record);
   add_files(d, c);

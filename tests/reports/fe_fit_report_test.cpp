@@ -2,7 +2,8 @@
 // its drag force Fx against the tool travel and its section at E, both made at mu = 0.1 and
 // fitted from mu = 0.12 in one iteration, written like `spifit fit --out DIR` does and
 // rendered. The plots of both curves are listed with axis labels in words and units, the
-// residual plots beside them.
+// residual plots beside them; the forward runs per experiment and scene file and the shares of
+// the Fisher information are in fit.json and the report, and they add up.
 #include "tests/support/csv_rows.hpp"
 #include "tests/support/markdown_rows.hpp"
 #include "tests/support/temp_files.hpp"
@@ -15,6 +16,7 @@
 #include "inverse/synthetic.hpp"
 #include "reports/fit_report.hpp"
 #include "reports/plot.hpp"
+#include "reports/report_format.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -72,10 +74,71 @@ FeFit run_fe_fit() {
   return f;
 }
 
-TEST(FeFitReport, CurvesAndSectionsArePlottedWithLabelsAndUnits) {
+// The forward runs: fit.json as the result counts them, the report as fit.json.
+void expect_runs(const FeFit& f, const json& j, const std::string& md) {
+  const auto& r = f.result;
+  ASSERT_EQ(j["experiments"].size(), 2u);
+  ASSERT_EQ(r.experiment_runs.size(), 2u);
+  long evaluations = 0, scene_runs = 0;
+  double seconds = 0.0;
+  const std::string runs = md_section(md, "## Forward runs");
+  for (std::size_t i = 0; i < 2; ++i) {
+    const auto& e = j["experiments"][i];
+    const std::string name = e["name"];
+    EXPECT_EQ(e["evaluations"].get<long>(), r.experiment_runs[i].evaluations) << name;
+    EXPECT_EQ(e["scene_runs"].get<long>(), r.experiment_runs[i].scene_runs) << name;
+    EXPECT_EQ(e["run_seconds"].get<double>(), r.experiment_runs[i].run_seconds) << name;
+    evaluations += e["evaluations"].get<long>();
+    scene_runs += e["scene_runs"].get<long>();
+    seconds += e["run_seconds"].get<double>();
+    EXPECT_EQ(md_row(runs, name), (std::vector<std::string>{name, e["kind"], std::to_string(e["evaluations"].get<long>()),
+                                                             std::to_string(e["scene_runs"].get<long>()),
+                                                             reports::format_significant(e["run_seconds"].get<double>(), 3)}))
+        << runs;
+  }
+  // The drag curve is evaluated first at the start: the first run is its own; the section reads it.
+  EXPECT_GE(j["experiments"][0]["scene_runs"].get<long>(), 1);
+  // One more evaluation per experiment than forward_runs counts: the check at the start.
+  EXPECT_EQ(evaluations, j["forward_runs"].get<long>() + 2);
+  // Every run counts for one experiment; one scene file, no failures.
+  EXPECT_EQ(scene_runs, j["scene_runs"].get<long>());
+  ASSERT_EQ(j["runs_by_scene"].size(), 1u);
+  const auto& file = j["runs_by_scene"][0];
+  const std::string scene = file["scene"];
+  EXPECT_EQ(scene, test::temp_path("line.toml").string());
+  EXPECT_EQ(file["runs"].get<long>(), scene_runs);
+  EXPECT_EQ(file["failures"].get<long>(), 0);
+  EXPECT_EQ(file["retried"].get<long>(), 0);
+  EXPECT_NEAR(file["seconds"].get<double>(), seconds, 1e-9 * seconds);
+  EXPECT_GT(file["median_seconds"].get<double>(), 0.0);
+  EXPECT_LE(file["median_seconds"].get<double>(), file["seconds"].get<double>());
+  EXPECT_EQ(md_row(runs, scene), (std::vector<std::string>{scene, std::to_string(scene_runs), "0", "0", reports::format_significant(file["seconds"].get<double>(), 3),
+                                                           reports::format_significant(file["median_seconds"].get<double>(), 3)}))
+      << runs;
+}
+
+// The drag force informs the friction (Fx moves by about Fz times the change of mu, against a
+// noise of 1 N); the section at E hardly (it moves by hundredths of a mm, against 0.01 mm): about
+// 0.02 % of the information. The shares add up to 1.
+void expect_information(const json& j, const std::string& md) {
+  const std::string info = md_section(md, "### Which experiment informs which parameter");
+  const double drag = j["experiments"][0]["information_share"]["contact.friction"].get<double>();
+  const double shape = j["experiments"][1]["information_share"]["contact.friction"].get<double>();
+  EXPECT_GT(drag, 0.99);
+  EXPECT_GT(shape, 0.0);
+  EXPECT_LT(shape, 0.01);
+  EXPECT_NEAR(drag + shape, 1.0, 1e-12);
+  EXPECT_EQ(md_row(info, "drag"), (std::vector<std::string>{"drag", reports::format_percent(drag)})) << info;
+  EXPECT_EQ(md_row(info, "shape"), (std::vector<std::string>{"shape", reports::format_percent(shape)})) << info;
+}
+
+TEST(FeFitReport, CurvesSectionsRunsAndInformation) {
   const FeFit f = run_fe_fit();
   ASSERT_TRUE(f.result.usable) << f.result.termination;
   const std::string md = slurp(f.dir / "report.md");
+  const json j = json::parse(slurp(f.dir / "fit.json"));
+  expect_runs(f, j, md);
+  expect_information(j, md);
   // The simulated curves at the start and at the solution are in the data files.
   for (const char* name : {"drag", "shape"}) {
     std::ifstream csv(f.dir / "experiments" / (std::string(name) + ".csv"));

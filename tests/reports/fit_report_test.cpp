@@ -10,6 +10,7 @@
 #include "inverse/fit_output.hpp"
 #include "reports/fit_report.hpp"
 #include "reports/plot.hpp"
+#include "reports/report_format.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -344,6 +345,64 @@ TEST_F(FitReportTest, MultiStartSectionAndSpreadNote) {
   EXPECT_NE(md.find("| 1 (best) | yes | 87 |"), std::string::npos) << md;
   EXPECT_NE(md.find("give swift.K from"), std::string::npos);
   EXPECT_TRUE(s.findings.empty()) << "notes are not warnings";
+}
+
+// The forward runs per experiment (evaluations; a material-point fit has no scene runs) and the
+// share of each parameter's Fisher information per experiment, as fit.json gives them.
+TEST_F(FitReportTest, ForwardRunsAndInformationSharesAsInFitJson) {
+  const fs::path d = copy_of_fit("runs");
+  reports::render_fit_report(d, {false});
+  const std::string md = slurp(d / "report.md");
+  const json j = json::parse(slurp(d / "fit.json"));
+  const std::string runs = test::md_section(md, "## Forward runs"), info = test::md_section(md, "### Which experiment informs which parameter");
+  ASSERT_FALSE(runs.empty()) << md;
+  ASSERT_FALSE(info.empty()) << md;
+  long evaluations = 0;
+  for (const auto& e : j["experiments"]) {
+    const std::string name = e["name"];
+    EXPECT_EQ(e.count("scene_runs"), 0u) << name << ": no FE scene";
+    const auto row = md_row(runs, name);
+    ASSERT_EQ(row.size(), 3u) << name << "\n" << runs;
+    EXPECT_EQ(row[2], std::to_string(e["evaluations"].get<long>())) << name;
+    evaluations += e["evaluations"].get<long>();
+    const auto shares = md_row(info, name);
+    ASSERT_EQ(shares.size(), 7u) << name << "\n" << info;
+    int k = 1;
+    for (const auto& q : j["correlation"]["names"]) {
+      const double share = e["information_share"][q.get<std::string>()].get<double>();
+      EXPECT_EQ(shares[static_cast<std::size_t>(k++)], reports::format_percent(share)) << name << " " << q;
+    }
+  }
+  // Every experiment is evaluated for each of the fit's residual evaluations, and once more at
+  // the start (its check): forward_runs counts the former per experiment.
+  EXPECT_EQ(evaluations, j["forward_runs"].get<long>() + static_cast<long>(j["experiments"].size()));
+  // A column of shares adds up to 1; an r-value does not depend on the hardening law.
+  for (const auto& q : j["correlation"]["names"]) {
+    double sum = 0.0;
+    for (const auto& e : j["experiments"]) sum += e["information_share"][q.get<std::string>()].get<double>();
+    EXPECT_NEAR(sum, 1.0, 1e-12) << q;
+  }
+  for (const auto& e : j["experiments"]) {
+    if (e["kind"] == "scalar") {
+      EXPECT_LT(e["information_share"]["swift.K"].get<double>(), 1e-12) << e["name"];
+    }
+  }
+}
+
+// A fit.json of an older spifit, without the runs and shares: the report says so, no tables.
+TEST_F(FitReportTest, OlderFitJsonWithoutRunsOrShares) {
+  const fs::path d = copy_of_fit("older");
+  json j = json::parse(slurp(d / "fit.json"));
+  for (auto& e : j["experiments"]) {
+    e.erase("evaluations");
+    e.erase("information_share");
+  }
+  write(d / "fit.json", j.dump(2));
+  reports::render_fit_report(d, {false});
+  const std::string md = slurp(d / "report.md");
+  EXPECT_EQ(test::md_section(md, "## Forward runs"),
+            "## Forward runs\n\nfit.json does not count the forward runs per experiment (written by an older spifit).\n");
+  EXPECT_EQ(md.find("Which experiment informs which parameter"), std::string::npos);
 }
 
 // An FE scene's scalar observable (kind fe_scalar, e.g. peak_fz in N) is reported like a
