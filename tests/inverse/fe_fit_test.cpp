@@ -138,6 +138,40 @@ TEST(FeFitFile, InputErrorsNameFileKeyAndValue) {
   }
 }
 
+// A contour range beyond a cone's path is an input error when the fit file is read (before any
+// run): a scalar's `contours` and the contour column of `contour_means` data, naming the fit
+// file, the key and its value. The small tiny cone of three contours.
+TEST(FeFitFile, ContourRangeBeyondTheConeIsAnInputError) {
+  const fs::path scene = test::write_tiny_cone(test::temp_path("cone.toml"), "", test::small_tiny_cone(3));
+  EXPECT_EQ(scene::read_scene(scene.string())->contours(), 3);
+  EXPECT_EQ(scene::read_scene(test::write_tiny_line(test::temp_path("line.toml")).string())->contours(), 0);
+  const fs::path means = test::temp_path("means.csv"), beyond = test::temp_path("beyond.csv");
+  std::ofstream(means) << "contour,ftheta_over_fz\n1,-0.2\n2,-0.21\n3,-0.22\n";
+  std::ofstream(beyond) << "contour,ftheta_over_fz\n2,-0.21\n3,-0.22\n4,-0.23\n";
+  const std::string steady = "observable = \"steady_ftheta_over_fz\"\nvalue = -0.2\n";
+  const std::string beyond_path = "it has 3 contours (numbers 1 to 3)";
+  struct Case {
+    std::string body, key_value, message;
+  };
+  const std::vector<Case> errors{
+      {steady + "contours = [2, 4]\n", ".contours = [2, 4]: ", "beyond the path of scene " + scene.string() + ": " + beyond_path},
+      {steady + "contours = [4, 4]\n", ".contours = [4, 4]: ", "beyond the path of scene " + scene.string() + ": " + beyond_path},
+      {"contour_means = \"ftheta_over_fz\"\ndata = \"" + beyond.string() + "\"\n", ".data = \"" + beyond.string() + "\": ",
+       "column contour holds contour 4, beyond the path of scene " + scene.string() + ": " + beyond_path},
+  };
+  for (const auto& c : errors) {
+    const fs::path f = write_fit(fit_head(kFriction) + experiment(scene, c.body));
+    const std::string e = read_error(f);
+    EXPECT_EQ(e.rfind(f.string() + ": ", 0), 0u) << e;
+    EXPECT_NE(e.find(c.key_value + c.message), std::string::npos) << e;
+  }
+  // The whole path is fine.
+  for (const std::string& body : {steady + "contours = [1, 3]\n", "contour_means = \"ftheta_over_fz\"\ndata = \"" + means.string() + "\"\n"}) {
+    const fs::path f = write_fit(fit_head(kFriction) + experiment(scene, body));
+    EXPECT_EQ(read_error(f), "(no error)") << body;
+  }
+}
+
 // The shared runs: a point whose scene input the scene refuses is a failed run, listed with the
 // reason; nothing runs.
 TEST(SceneRuns, AnInputTheSceneRefusesIsAListedFailure) {
