@@ -9,11 +9,12 @@
 #include "tests/support/temp_files.hpp"
 #include "tests/support/tiny_scenes.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/common/fe_scene_result.hpp"
 #include "forward/scenes/scene_registry.hpp"
+#include "inverse/fe_experiment.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/fit_output.hpp"
 #include "inverse/run_fit.hpp"
-#include "inverse/synthetic.hpp"
 #include "reports/fit_report.hpp"
 #include "reports/plot.hpp"
 #include "reports/report_format.hpp"
@@ -26,6 +27,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -46,17 +48,21 @@ struct FeFit {
 FeFit run_fe_fit() {
   const fs::path scene = test::write_tiny_line(test::temp_path("line.toml"));
   std::ofstream(scene, std::ios::app) << "[contact]\nfriction = 0.1\n";
+  // The measurements: every 4th point of the drag force and the section, from one run.
   const auto sc = scene::read_scene(scene.string());
+  const auto run = sc->run(scene::RunFiles(), scene::RunControl());
+  const auto& fe = dynamic_cast<const scene::FeSceneResult&>(*run);
+  const auto fx = inverse::force_curve(fe.force, sc->tool_centre_path()->at_distance(0.0), sc->input("sheet.thickness"), sc->input("tool.radius"),
+                                       "travel", "fx");
+  const auto z = inverse::section_curve(*run, "E", "x", "z");
   const fs::path drag = test::temp_path("fx.csv"), shape = test::temp_path("section_E.csv");
-  inverse::SyntheticOptions o;
-  o.x = "travel";
-  o.y = "fx";
-  o.every = 4;
-  std::ofstream(drag) << inverse::synthetic_force_curve_csv(*sc, o);
-  o = {};
-  o.x = "x";
-  o.y = "z";
-  std::ofstream(shape) << inverse::synthetic_section_csv(*sc, "E", o);
+  std::ofstream d(drag), e(shape);
+  d << "travel [mm],fx [N]\n" << std::setprecision(17);
+  for (std::size_t i = 4; i < fx.x.size(); i += 4) d << fx.x[i] << "," << fx.y[i] << "\n";
+  e << "x [mm],z [mm]\n" << std::setprecision(17);
+  for (std::size_t i = 0; i < z.x.size(); ++i) e << z.x[i] << "," << z.y[i] << "\n";
+  d.close();
+  e.close();
   const fs::path fit = test::write_temp_file(
       "fit.toml", "[fit]\ncard = \"" + std::string(SPIFIT_SOURCE_DIR) + "/materials/aa3003o_c3c4.toml\"\nmax_iterations = 1\n" +
                       "[parameters.\"contact.friction\"]\ninitial = 0.12\nlower = 0.0\nupper = 0.5\n" + "[[experiment]]\nname = \"drag\"\nscene = \"" +
