@@ -24,8 +24,14 @@ class CurveExperiment final : public Experiment {
     sqrt_w_ = c.sqrt_weights;
   }
   int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
-  bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
-  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  bool residuals(const ParameterPoint& p, double* r) const override {
+    count_evaluation();
+    return eval(p.material, r, nullptr);
+  }
+  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override {
+    count_evaluation();
+    return eval(m, r, nullptr);
+  }
   ExperimentCurve axes() const override { return {s_.x, s_.y, s_.x_unit, s_.y_unit, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{s_.x, s_.y, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
@@ -89,8 +95,14 @@ class ScalarExperiment final : public Experiment {
     noise_given_ = s_.noise > 0;
   }
   int num_residuals() const override { return 1; }
-  bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
-  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  bool residuals(const ParameterPoint& p, double* r) const override {
+    count_evaluation();
+    return eval(p.material, r, nullptr);
+  }
+  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override {
+    count_evaluation();
+    return eval(m, r, nullptr);
+  }
   ExperimentCurve axes() const override { return {"", s_.observable, "", "", {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{"", s_.observable, "", "", {0.0}, {s_.value}, {}};

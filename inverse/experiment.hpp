@@ -10,6 +10,7 @@
 
 #include <ceres/jet.h>
 
+#include <atomic>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,11 +44,18 @@ class Experiment {
   virtual ExperimentCurve compare(const ParameterPoint& p) const = 0;
   // Names and units of the compared quantities, without running anything.
   virtual ExperimentCurve axes() const = 0;
+  // How often residuals were asked for so far (with doubles or Jets; an FE experiment's answers
+  // from a resumed fit's kept evaluations included). compare() does not count.
+  long evaluations() const { return evaluations_.load(std::memory_order_relaxed); }
 
  protected:
+  void count_evaluation() const { evaluations_.fetch_add(1, std::memory_order_relaxed); }
   std::string name_, kind_;
   double weight_ = 1.0, scale_ = 1.0;
   bool noise_given_ = false;
+
+ private:
+  mutable std::atomic<long> evaluations_{0};
 };
 
 // A curve measured on a material-point scene: y(x) with x an abscissa of the simulated curve

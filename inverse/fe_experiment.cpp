@@ -60,6 +60,7 @@ class FeExperiment : public Experiment {
   // The residuals at p: kept from an earlier (killed) fit when the runs keep evaluations, else
   // computed (and kept).
   bool residuals(const ParameterPoint& p, double* r) const final {
+    count_evaluation();
     EvaluationCache* cache = runs_->evaluations();
     const std::string key = cache ? point_key(p) : std::string();
     if (cache) {
@@ -76,7 +77,7 @@ class FeExperiment : public Experiment {
  protected:
   virtual bool compute(const ParameterPoint& p, double* r) const = 0;
   std::shared_ptr<const scene::SceneResult> run_at(const ParameterPoint& p) const {
-    auto r = runs_->result(*scene_, p);
+    auto r = runs_->result(*scene_, p, name_);
     return r && r->ok() ? r : nullptr;
   }
   std::shared_ptr<const scene::Scene> scene_;

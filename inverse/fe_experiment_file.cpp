@@ -19,6 +19,12 @@ std::string observable_names(const scene::SceneKind& k) {
   return out;
 }
 
+// "it has 3 contours (numbers 1 to 3)".
+std::string contour_count(const scene::Scene& s) {
+  const std::string n = std::to_string(s.contours());
+  return "it has " + n + (s.contours() == 1 ? " contour (number 1)" : " contours (numbers 1 to " + n + ")");
+}
+
 std::unique_ptr<Experiment> scalar(const io::TomlTable& e, FeExperimentBase base) {
   const scene::SceneKind* kind = scene::find_scene_kind(base.scene->kind());
   FeScalarSpec s;
@@ -43,6 +49,7 @@ std::unique_ptr<Experiment> scalar(const io::TomlTable& e, FeExperimentBase base
     const auto c = e.number_list("contours");
     if (c.size() != 2 || c[0] < 1 || c[0] > c[1] || c[0] != std::floor(c[0]) || c[1] != std::floor(c[1]))
       e.fail("contours", "expected [first, last] contour numbers with 1 <= first <= last");
+    if (c[1] > s.scene->contours()) e.fail("contours", "beyond the path of scene " + s.scene->file() + ": " + contour_count(*s.scene));
     s.options.contours = std::pair<int, int>{static_cast<int>(c[0]), static_cast<int>(c[1])};
   } else if (e.has("contours")) {
     e.fail("contours", name + " takes no contour range");
@@ -112,8 +119,12 @@ std::unique_ptr<Experiment> contour_means(const io::TomlTable& e, const std::str
   for (const char* k : {"x", "y"})
     if (e.has(k)) e.fail(k, "contour means take the columns contour and " + c.y + " of the data file");
   CurveData d = read_curve_data(e, path, "contour", c.y, 1.0, 1e9, "(contours from 1)");
-  for (double k : d.xs)
+  for (double k : d.xs) {
     if (k != std::floor(k)) e.fail("data", "contour numbers must be whole (" + format_number(k) + ")");
+    if (k > c.scene->contours())
+      e.fail("data", "column contour holds contour " + format_number(k) + ", beyond the path of scene " + c.scene->file() + ": " +
+                         contour_count(*c.scene));
+  }
   c.contours = std::move(d.xs);
   c.ys = std::move(d.ys);
   c.point_weights = std::move(d.weights);

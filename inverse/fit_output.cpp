@@ -98,6 +98,15 @@ std::vector<FitRecord::Experiment> record_experiments(const FitProblem& fp, cons
     x.x_unit = axes.x_unit;
     x.y_unit = axes.y_unit;
     x.data_file = "experiments/" + c.name + ".csv";
+    x.information_share = c.information_share;
+    if (i < r.experiment_runs.size()) {
+      const auto& runs = r.experiment_runs[i];
+      x.evaluations = runs.evaluations;
+      if (fp.scene_runs) {
+        x.scene_runs = runs.scene_runs;
+        x.run_seconds = runs.run_seconds;
+      }
+    }
     out.push_back(x);
   }
   return out;
@@ -120,6 +129,7 @@ FitRecord fit_record(const FitProblem& fp, const FitResult& r) {
   if (fp.scene_runs) {
     rec.scene_runs = r.scene_runs;
     for (const auto& f : r.failed_runs) rec.failed_runs.push_back({f.scene, f.point, f.message, f.recovered});
+    for (const auto& f : r.runs_by_scene) rec.runs_by_scene.push_back({f.scene, f.runs, f.failures, f.retried, f.seconds, f.median_seconds});
   }
   rec.wall_seconds = r.wall_seconds;
   rec.cost_definition = "1/2 sum of squared conditioned residuals sqrt(w) (simulated - measured) / scale";

@@ -74,12 +74,32 @@ json multistart_json(const FitRecord::MultiStart& ms) {
           {"spread_at_best_cost", spread}, {"solutions", sols}};
 }
 
-json experiment_json(const FitRecord::Experiment& e) {
+json experiment_json(const FitRecord::Experiment& e, const std::vector<FitRecord::Parameter>& parameters) {
   json ej{{"name", e.name}, {"kind", e.kind}, {"points", e.points}, {"cost", number_or_null(e.cost)}, {"rms", number_or_null(e.rms)},
           {"scale", number_or_null(e.scale)}, {"weight", number_or_null(e.weight)}, {"x", e.x}, {"y", e.y}, {"x_unit", e.x_unit},
           {"y_unit", e.y_unit}, {"data_file", e.data_file}};
   if (e.noise_given) ej["noise_given"] = *e.noise_given;
+  if (!e.information_share.empty()) {
+    json shares = json::object();
+    for (std::size_t k = 0; k < e.information_share.size() && k < parameters.size(); ++k)
+      shares[parameters[k].name] = number_or_null(e.information_share[k]);
+    ej["information_share"] = shares;
+  }
+  if (e.evaluations) ej["evaluations"] = *e.evaluations;
+  if (e.scene_runs) {
+    ej["scene_runs"] = *e.scene_runs;
+    ej["run_seconds"] = number_or_null(e.run_seconds);
+  }
   return ej;
+}
+
+json runs_by_scene_json(const std::vector<FitRecord::SceneFile>& files) {
+  json a = json::array();
+  for (const auto& f : files) {
+    a.push_back({{"scene", f.scene}, {"runs", f.runs}, {"failures", f.failures}, {"retried", f.retried},
+                 {"seconds", number_or_null(f.seconds)}, {"median_seconds", number_or_null(f.median_seconds)}});
+  }
+  return a;
 }
 
 // ---------------------------------------------------------------- reading
@@ -174,6 +194,25 @@ void read_summary(const Reader& r, const json& j, FitRecord& rec) {
   rec.cost_initial = r.number(j, "cost_initial", "");
   rec.cost_final = r.number(j, "cost_final", "");
   rec.cost_history = r.numbers(j, "cost_history", "");
+}
+
+void read_runs_by_scene(const Reader& r, const json& j, FitRecord& rec) {
+  const json* a = member(j, "runs_by_scene");
+  if (!a) return;
+  if (!a->is_array()) bad(r.file, "runs_by_scene", *a, "expected an array of objects");
+  int index = 0;
+  for (const auto& fj : *a) {
+    const std::string at = "runs_by_scene[" + std::to_string(index++) + "].";
+    if (!fj.is_object()) bad(r.file, at.substr(0, at.size() - 1), fj, "expected an object");
+    FitRecord::SceneFile f;
+    f.scene = r.text(fj, "scene", at);
+    f.runs = r.whole(fj, "runs", at).value_or(0);
+    f.failures = r.whole(fj, "failures", at).value_or(0);
+    f.retried = r.whole(fj, "retried", at).value_or(0);
+    f.seconds = r.number(fj, "seconds", at);
+    f.median_seconds = r.number(fj, "median_seconds", at);
+    rec.runs_by_scene.push_back(f);
+  }
 }
 
 void read_correlation(const Reader& r, const json& j, FitRecord& rec) {
@@ -350,6 +389,13 @@ void read_experiments(const Reader& r, const json& j, FitRecord& rec) {
     const double w = r.number(ej, "weight", at);
     e.weight = std::isfinite(w) ? w : 1.0;
     if (const json* n = member(ej, "noise_given"); n && n->is_boolean()) e.noise_given = n->get<bool>();
+    if (const json* shares = member(ej, "information_share")) {
+      if (!shares->is_object()) bad(r.file, at + "information_share", *shares, "expected an object of parameter names and numbers");
+      for (const auto& q : rec.parameters) e.information_share.push_back(r.number(*shares, q.name, at + "information_share."));
+    }
+    e.evaluations = r.whole(ej, "evaluations", at);
+    e.scene_runs = r.whole(ej, "scene_runs", at);
+    e.run_seconds = r.number(ej, "run_seconds", at);
     rec.experiments.push_back(std::move(e));
   }
 }
@@ -373,6 +419,7 @@ json to_json(const FitRecord& rec) {
     for (const auto& f : rec.failed_runs)
       failed.push_back({{"scene", f.scene}, {"point", f.point}, {"message", f.message}, {"recovered", f.recovered}});
     j["failed_runs"] = failed;
+    j["runs_by_scene"] = runs_by_scene_json(rec.runs_by_scene);
   }
   j["wall_seconds"] = number_or_null(rec.wall_seconds);
   j["cost_definition"] = rec.cost_definition;
@@ -394,7 +441,7 @@ json to_json(const FitRecord& rec) {
   j["per_experiment"] = per_experiment_json(rec.per_experiment);
   if (rec.multistart.starts > 1) j["multistart"] = multistart_json(rec.multistart);
   json ex = json::array();
-  for (const auto& e : rec.experiments) ex.push_back(experiment_json(e));
+  for (const auto& e : rec.experiments) ex.push_back(experiment_json(e, rec.parameters));
   j["experiments"] = ex;
   return j;
 }
@@ -411,6 +458,7 @@ FitRecord fit_record_from_json(const json& j, const std::string& file) {
       bad(file, "experiments", j.value("experiments", json()), "missing or not an array: not a fit.json");
     }
     read_summary(r, j, rec);
+    read_runs_by_scene(r, j, rec);
     read_correlation(r, j, rec);
     read_parameters(r, j, rec);
     read_uncertainty(r, j, rec);

@@ -72,7 +72,7 @@ struct FitRecord {
   };
   // experiments[i]: costs, the divisor of the residuals and the axes of the data file.
   struct Experiment {
-    std::string name, kind;  // kind: "curve" or "scalar"
+    std::string name, kind;  // curve, scalar (material points); force_curve, section, contour_means, fe_scalar (FE)
     int points = 0;
     double cost = kNaN, rms = kNaN;
     double scale = kNaN;              // divisor of the residuals (noise, or range / |value|)
@@ -80,6 +80,13 @@ struct FitRecord {
     double weight = 1.0;
     std::string x, y, x_unit, y_unit;
     std::string data_file;  // relative to DIR, e.g. experiments/NAME.csv
+    // Forward runs (absent from a fit.json of an older spifit): evaluations of the residuals;
+    // FE experiments: the scene runs they asked for first and those runs' summed wall seconds.
+    std::optional<long> evaluations, scene_runs;
+    double run_seconds = kNaN;
+    // information_share: per free parameter (in the order of parameters) this experiment's
+    // share of its Fisher information at the solution; empty when fit.json has none.
+    std::vector<double> information_share;
   };
 
   std::string spifit_version;
@@ -106,6 +113,14 @@ struct FitRecord {
   };
   std::optional<long> scene_runs;
   std::vector<FailedRun> failed_runs;
+  // runs_by_scene: per FE scene file its runs (retries included), failed points, retried runs,
+  // and their wall time (summed; the median of one run).
+  struct SceneFile {
+    std::string scene;
+    long runs = 0, failures = 0, retried = 0;
+    double seconds = kNaN, median_seconds = kNaN;
+  };
+  std::vector<SceneFile> runs_by_scene;
 };
 
 // fit.json's object. Its dump(2) plus a newline is the file `spifit fit` writes.

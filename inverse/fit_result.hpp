@@ -15,6 +15,9 @@ struct ExperimentCost {
   int points = 0;
   double cost = 0.0;  // 1/2 sum r^2 of this experiment at the solution
   double rms = 0.0;   // root-mean-square conditioned residual
+  // Per free parameter: this experiment's share of its Fisher information at the solution
+  // (information_shares in uncertainty.hpp; NaN where no experiment responds to it).
+  std::vector<double> information_share;
 };
 
 struct FitResult {
@@ -54,6 +57,16 @@ struct FitResult {
   // that failed or needed a retry (fit.json "failed_runs").
   long scene_runs = 0;
   std::vector<SceneRuns::Failure> failed_runs;
+  // Forward runs and wall time per experiment (in fit order; run_fit fills them): evaluations
+  // of its residuals, and for FE experiments the scene runs it asked for first and their summed
+  // wall seconds; per FE scene file its runs (scene_file_runs).
+  struct ExperimentRuns {
+    std::string experiment;
+    long evaluations = 0, scene_runs = 0;
+    double run_seconds = 0.0;
+  };
+  std::vector<ExperimentRuns> experiment_runs;
+  std::vector<SceneFileRuns> runs_by_scene;
 };
 
 struct FitRunOptions {

@@ -8,6 +8,30 @@
 #include <chrono>
 
 namespace spifit::inverse {
+namespace {
+
+// The forward runs of the fit: per experiment and, with FE experiments, per scene file.
+void record_runs(const FitProblem& problem, FitResult* r) {
+  std::vector<SceneRuns::Run> log;
+  if (problem.scene_runs) {
+    r->scene_runs = problem.scene_runs->runs();
+    r->failed_runs = problem.scene_runs->failures();
+    log = problem.scene_runs->run_log();
+    r->runs_by_scene = scene_file_runs(log, r->failed_runs);
+  }
+  r->experiment_runs.clear();
+  for (const auto& e : problem.experiments) {
+    FitResult::ExperimentRuns x{e->name(), e->evaluations(), 0, 0.0};
+    for (const auto& run : log) {
+      if (run.experiment != e->name()) continue;
+      ++x.scene_runs;
+      x.run_seconds += run.seconds;
+    }
+    r->experiment_runs.push_back(x);
+  }
+}
+
+}  // namespace
 
 FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
   const std::string alg = options.algorithm.empty() ? problem.settings.algorithm : options.algorithm;
@@ -19,10 +43,7 @@ FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
     analyse_conflicts(problem, options, &r);
     r.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
-  if (problem.scene_runs) {
-    r.scene_runs = problem.scene_runs->runs();
-    r.failed_runs = problem.scene_runs->failures();
-  }
+  record_runs(problem, &r);
   return r;
 }
 

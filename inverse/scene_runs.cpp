@@ -3,9 +3,12 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_inputs.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 
 namespace spifit::inverse {
 namespace {
@@ -46,7 +49,7 @@ std::string describe_point(const ParameterPoint& p, const material::MaterialPara
   return out.empty() ? "the card's values" : out;
 }
 
-std::shared_ptr<const scene::SceneResult> SceneRuns::result(const scene::Scene& scene, const ParameterPoint& p) const {
+std::shared_ptr<const scene::SceneResult> SceneRuns::result(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const {
   const std::string key = key_of(scene, p);
   std::promise<std::shared_ptr<const scene::SceneResult>> promise;
   Entry entry;
@@ -66,11 +69,11 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::result(const scene::Scene& 
       mine = true;
     }
   }
-  if (mine) promise.set_value(run(scene, p));
+  if (mine) promise.set_value(run(scene, p, experiment));
   return entry.get();
 }
 
-std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& scene, const ParameterPoint& p) const {
+std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const {
   Failure failure{scene.file(), describe_point(p, base_), {}, false};
   auto fail = [&](const std::string& why) -> std::shared_ptr<const scene::SceneResult> {
     failure.message = why;
@@ -90,22 +93,26 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
     }
     if (!why.empty()) return fail(name + " = " + io::format_number(v) + ": " + why);
   }
-  auto attempt = [&]() -> std::shared_ptr<const scene::SceneResult> {
+  auto attempt = [&](bool retry) -> std::shared_ptr<const scene::SceneResult> {
     {
       std::lock_guard<std::mutex> lock(mutex_);
       ++runs_;
     }
+    const auto t0 = std::chrono::steady_clock::now();
+    std::shared_ptr<const scene::SceneResult> r;
     try {
       scene::RunControl control;
       control.time_limit_seconds = time_limit_;
-      std::shared_ptr<const scene::SceneResult> r = sc->run(scene::RunFiles(), control);
-      return r;
+      r = sc->run(scene::RunFiles(), control);
     } catch (const std::exception& e) {
       failure.message += std::string(failure.message.empty() ? "" : "; ") + e.what();
-      return nullptr;
     }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    std::lock_guard<std::mutex> lock(mutex_);
+    log_.push_back({scene.file(), experiment, seconds, retry, r && r->ok()});
+    return r;
   };
-  std::shared_ptr<const scene::SceneResult> r = attempt();
+  std::shared_ptr<const scene::SceneResult> r = attempt(false);
   if (r && r->ok()) return r;
   if (r) failure.message += (failure.message.empty() ? "" : "; ") + r->message;
   if (r && r->status == scene::RunStatus::timed_out) return fail(failure.message);  // smaller increments would take longer
@@ -118,7 +125,7 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
     return fail(failure.message);
   }
   if (!sc->set_input(kIncrement, 0.5 * travel).empty()) return fail(failure.message);
-  r = attempt();
+  r = attempt(true);
   if (r && r->ok()) {
     failure.recovered = true;
     failure.message = "retried with " + std::string(kIncrement) + " = " + io::format_number(0.5 * travel) + " after: " + failure.message;
@@ -138,6 +145,40 @@ long SceneRuns::runs() const {
 std::vector<SceneRuns::Failure> SceneRuns::failures() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return failures_;
+}
+
+std::vector<SceneRuns::Run> SceneRuns::run_log() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return log_;
+}
+
+std::vector<SceneFileRuns> scene_file_runs(const std::vector<SceneRuns::Run>& log, const std::vector<SceneRuns::Failure>& failures) {
+  std::vector<SceneFileRuns> out;
+  std::vector<std::vector<double>> seconds;
+  auto of = [&](const std::string& scene) -> std::size_t {
+    for (std::size_t i = 0; i < out.size(); ++i)
+      if (out[i].scene == scene) return i;
+    out.push_back({scene, 0, 0, 0, 0.0, std::numeric_limits<double>::quiet_NaN()});
+    seconds.emplace_back();
+    return out.size() - 1;
+  };
+  for (const auto& r : log) {
+    const std::size_t i = of(r.scene);
+    ++out[i].runs;
+    if (r.retry) ++out[i].retried;
+    out[i].seconds += r.seconds;
+    seconds[i].push_back(r.seconds);
+  }
+  for (const auto& f : failures)
+    if (!f.recovered) ++out[of(f.scene)].failures;
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    auto& s = seconds[i];
+    if (s.empty()) continue;
+    std::sort(s.begin(), s.end());
+    const std::size_t n = s.size();
+    out[i].median_seconds = n % 2 ? s[n / 2] : 0.5 * (s[n / 2 - 1] + s[n / 2]);
+  }
+  return out;
 }
 
 }  // namespace spifit::inverse

@@ -27,6 +27,14 @@ class SceneRuns {
     std::string message;  // why (both attempts)
     bool recovered = false;  // the retry with smaller increments ran
   };
+  // One forward run, as it ended (a retry is a run of its own).
+  struct Run {
+    std::string scene;       // scene file
+    std::string experiment;  // the experiment whose evaluation asked for the point first
+    double seconds = 0.0;    // wall time
+    bool retry = false;      // the second attempt, with half the increment
+    bool ok = false;
+  };
 
   // base: the fit's starting card (failures name the parameters that differ from it);
   // time_limit: seconds of wall time one run may take (0: no limit; a run past it is a failure,
@@ -36,7 +44,9 @@ class SceneRuns {
   // The typed result of `scene` at p: the scene with the fit's card (p.material replaces the
   // card's parameters) and p's scene inputs. Null when the run failed twice or p's inputs
   // cannot be set on the scene. Thread-safe; a point already run (or running) is not run again.
-  std::shared_ptr<const scene::SceneResult> result(const scene::Scene& scene, const ParameterPoint& p) const;
+  // experiment: who asks (its runs are counted for it when it asks first).
+  std::shared_ptr<const scene::SceneResult> result(const scene::Scene& scene, const ParameterPoint& p,
+                                                   const std::string& experiment = "") const;
 
   // Evaluations kept on disk for a resume (null: none); the FE experiments read and add to it.
   void keep_evaluations(std::shared_ptr<EvaluationCache> cache) { evaluations_ = std::move(cache); }
@@ -44,10 +54,11 @@ class SceneRuns {
 
   long runs() const;                   // forward runs made (retries included)
   std::vector<Failure> failures() const;  // in the order they happened
+  std::vector<Run> run_log() const;       // every run made, in the order they ended
 
  private:
   using Entry = std::shared_future<std::shared_ptr<const scene::SceneResult>>;
-  std::shared_ptr<const scene::SceneResult> run(const scene::Scene& scene, const ParameterPoint& p) const;
+  std::shared_ptr<const scene::SceneResult> run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const;
   material::MaterialParams<double> base_;
   double time_limit_ = 0.0;
   std::shared_ptr<EvaluationCache> evaluations_;
@@ -55,8 +66,20 @@ class SceneRuns {
   mutable std::map<std::string, Entry> cache_;
   mutable std::deque<std::string> order_;  // keys, oldest first (the cache keeps the newest)
   mutable std::vector<Failure> failures_;
+  mutable std::vector<Run> log_;
   mutable long runs_ = 0;
 };
+
+// The runs of one scene file of a fit: runs made (retries included), points that failed (after
+// their retry, or whose inputs the scene refused), runs that were retries, and their wall time.
+struct SceneFileRuns {
+  std::string scene;
+  long runs = 0, failures = 0, retried = 0;
+  double seconds = 0.0;         // summed over the runs (side by side on several threads: more than the fit's wall time)
+  double median_seconds = 0.0;  // of one run; NaN without runs
+};
+// Per scene file, in the order the files first ran or failed.
+std::vector<SceneFileRuns> scene_file_runs(const std::vector<SceneRuns::Run>& log, const std::vector<SceneRuns::Failure>& failures);
 
 // The exact bits of every value of p (the card's parameters, then the scene inputs by name): the
 // key of a run and of a kept evaluation.

@@ -76,11 +76,16 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
       }
     }
     out.experiment_costs.clear();
+    std::vector<int> rows;
+    for (const auto& e : fp.experiments) rows.push_back(e->num_residuals());
+    const Eigen::MatrixXd shares = information_shares(J, rows);
     int offset = 0;
-    for (const auto& e : fp.experiments) {
-      ExperimentCost ec{e->name(), e->kind(), e->num_residuals(), 0.0, 0.0};
+    for (std::size_t n = 0; n < fp.experiments.size(); ++n) {
+      const auto& e = fp.experiments[n];
+      ExperimentCost ec{e->name(), e->kind(), e->num_residuals(), 0.0, 0.0, {}};
       for (int i = 0; i < ec.points; ++i) ec.cost += 0.5 * r(offset + i) * r(offset + i);
       ec.rms = std::sqrt(2.0 * ec.cost / ec.points);
+      for (int k = 0; k < p; ++k) ec.information_share.push_back(shares(static_cast<Eigen::Index>(n), k));
       offset += ec.points;
       out.experiment_costs.push_back(ec);
     }

@@ -57,6 +57,20 @@ double student_t_quantile(double p, int dof) {
   return 0.5 * (lo + hi);
 }
 
+Eigen::MatrixXd information_shares(const Eigen::MatrixXd& J, const std::vector<int>& rows) {
+  const Eigen::Index p = J.cols();
+  Eigen::MatrixXd share(static_cast<Eigen::Index>(rows.size()), p);
+  const Eigen::RowVectorXd total = J.colwise().squaredNorm();
+  Eigen::Index first = 0;
+  for (std::size_t e = 0; e < rows.size(); ++e) {
+    const Eigen::RowVectorXd own = J.middleRows(first, rows[e]).colwise().squaredNorm();
+    for (Eigen::Index k = 0; k < p; ++k)
+      share(static_cast<Eigen::Index>(e), k) = total(k) > 0.0 ? own(k) / total(k) : std::numeric_limits<double>::quiet_NaN();
+    first += rows[e];
+  }
+  return share;
+}
+
 Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd& r, const std::vector<double>& values,
                                 const std::vector<std::string>& names, double sigma2_without_dof) {
   Uncertainty u;

@@ -29,6 +29,12 @@ struct Uncertainty {
 Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd& residuals, const std::vector<double>& values,
                                 const std::vector<std::string>& names, double sigma2_without_dof = std::numeric_limits<double>::quiet_NaN());
 
+// Which block of rows informs which parameter (docs/identification.md, "Which experiment informs
+// which parameter"): entry (e, k) is block e's share of parameter k's Fisher information,
+// diag(J_eᵀ J_e)_k / diag(Jᵀ J)_k, where J_e are the rows[e] rows of block e (blocks in order).
+// A column's shares add up to 1; NaN where no row responds to the parameter.
+Eigen::MatrixXd information_shares(const Eigen::MatrixXd& J, const std::vector<int>& rows);
+
 // Quantile of Student's t distribution (two-sided intervals use p = 0.975).
 double student_t_quantile(double p, int dof);
 

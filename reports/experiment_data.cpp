@@ -93,7 +93,7 @@ std::vector<ExperimentData> read_fit_data(const fs::path& dir, const inverse::Fi
       warnings->push_back(why + "; no table or plot for it");
       continue;
     }
-    if (e.kind == "scalar" && out[i].measured.size() != 1) {
+    if (is_scalar(e) && out[i].measured.size() != 1) {
       out[i].ok = false;
       warnings->push_back((dir / rel).string() + ": a scalar experiment needs exactly one row");
     }

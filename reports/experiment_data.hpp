@@ -15,6 +15,10 @@ struct ExperimentData {
   std::vector<double> x, measured, initial, fitted;  // NaN where a cell is not a number
 };
 
+// A scalar experiment (one measured value): a material point's ("scalar") or an FE scene's
+// observable ("fe_scalar"); every other kind is a curve.
+inline bool is_scalar(const inverse::FitRecord::Experiment& e) { return e.kind == "scalar" || e.kind == "fe_scalar"; }
+
 // `relative` as a path inside a directory (relative, no ".." at the front), else empty.
 std::filesystem::path path_inside(const std::string& relative);
 

@@ -1,5 +1,6 @@
 #include "reports/fit_document.hpp"
 
+#include "reports/fit_sections.hpp"
 #include "reports/report_format.hpp"
 
 #include <algorithm>
@@ -248,7 +249,7 @@ void add_scalars(Document& d, const FitReportContent& c) {
       continue;
     }
     const double diff = data.fitted[0] - data.measured[0];
-    sc.rows.push_back({cell(x.name), cell(with_unit(x.y, x.y_unit)), cell(fmt(data.measured[0])), cell(fmt(data.initial[0])),
+    sc.rows.push_back({cell(x.name), cell(axis_label(x.y, x.y_unit, "n/a")), cell(fmt(data.measured[0])), cell(fmt(data.initial[0])),
                        cell(fmt(data.fitted[0])), cell(fmt(diff, 4)), cell(fmt(diff / x.scale, 3), bad_if(c.verdict.experiments[i].level == 2))});
   }
   d.table(sc);
@@ -381,10 +382,12 @@ Document fit_report_document(const FitReportContent& c) {
   add_parameters(d, c);
   add_experiments(d, c);
   add_per_experiment(d, c.record);
+  add_information_shares(d, c.record);
   add_multistart(d, c.record);
   add_scalars(d, c);
   add_curves(d, c);
   add_convergence(d, c);
+  add_forward_runs(d, c.record);
   add_correlation(d, c.record);
   add_singular_values(d, c.record);
   add_files(d, c);

@@ -1,6 +1,6 @@
 #pragma once
 // The fit report as a Document (report_document.hpp): warnings, summary, parameters,
-// experiments, curves, convergence, correlation, singular values and files, in the order
+// experiments, curves, convergence, forward runs, correlation, singular values and files, in the order
 // docs/reports.md lists them.
 #include "inverse/fit_record.hpp"
 #include "reports/experiment_data.hpp"

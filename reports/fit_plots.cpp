@@ -18,9 +18,36 @@ std::string curve_stem(int index, const FitRecord::Experiment& e) {
   return std::string(num) + "_" + safe_file_stem(e.name);
 }
 
-std::string x_label(const FitRecord::Experiment& e, const ExperimentData& d) {
-  return axis_label(e.x.empty() ? d.x_column : e.x, e.x_unit, "x");
+// The quantities of FE experiments in words, by kind (the names are fit-file keys: y = "fz").
+struct Words {
+  const char* kind;
+  const char* name;
+  const char* words;
+};
+constexpr Words kWords[] = {
+    {"force_curve", "depth", "tool-tip depth"}, {"force_curve", "travel", "tool travel"}, {"force_curve", "time", "time"},
+    {"force_curve", "fx", "Fx"}, {"force_curve", "fy", "Fy"}, {"force_curve", "fz", "Fz"}, {"force_curve", "fr", "Fr"},
+    {"force_curve", "ftheta", "Fθ"},
+    {"section", "x", "x"}, {"section", "x0", "initial x"}, {"section", "z", "z"}, {"section", "thickness", "thickness"},
+    {"contour_means", "contour", "contour"}, {"contour_means", "fx", "contour mean Fx"}, {"contour_means", "fy", "contour mean Fy"},
+    {"contour_means", "fz", "contour mean Fz"}, {"contour_means", "fr", "contour mean Fr"}, {"contour_means", "ftheta", "contour mean Fθ"},
+    {"contour_means", "ftheta_over_fz", "contour mean Fθ / Fz"}, {"contour_means", "fr_over_fz", "contour mean Fr / Fz"},
+};
+
+std::string x_label(const FitRecord::Experiment& e, const ExperimentData& d) { return experiment_axis_label(e, true, d.x_column); }
+
+}  // namespace
+
+std::string experiment_axis_label(const FitRecord::Experiment& e, bool abscissa, const std::string& fallback) {
+  const std::string& name = abscissa ? e.x : e.y;
+  std::string shown = name.empty() ? fallback : name;
+  for (const Words& w : kWords) {
+    if (e.kind == w.kind && name == w.name) shown = w.words;
+  }
+  return axis_label(shown, abscissa ? e.x_unit : e.y_unit, abscissa ? "x" : "y");
 }
+
+namespace {
 
 // The link of a rendered image, relative to the report ("plots/NAME.svg"), or empty.
 std::string render(PlotSession& session, const PlotSpec& spec) {
@@ -35,7 +62,8 @@ PlotSpec curve_fit_plot(int index, const FitRecord::Experiment& e, const Experim
   f.stem = curve_stem(index, e) + "_fit";
   f.title = e.name + ": data and simulation";
   f.xlabel = x_label(e, d);
-  f.ylabel = axis_label(e.y, e.y_unit, "y");
+  f.ylabel = experiment_axis_label(e, false, "");
+  f.key_outside = e.kind == "section";  // a formed shape fills the top left
   f.series.push_back({"measured", d.x, d.measured, Series::Style::points, ""});
   f.series.push_back({"initial simulation", d.x, d.initial, Series::Style::dashed_line, ""});
   f.series.push_back({"fitted simulation", d.x, d.fitted, Series::Style::line, "#d62728"});
@@ -71,6 +99,14 @@ PlotSpec curve_residual_plot(int index, const FitRecord::Experiment& e, const Ex
   if (sigma) {
     r.hlines.push_back({1.0, true});
     r.hlines.push_back({-1.0, true});
+    // The lines at +-1 sigma stay in view: residuals far below the noise look small.
+    double m = 1.2;
+    for (double x : res) {
+      if (std::isfinite(x)) m = std::max(m, 1.15 * std::abs(x));
+    }
+    r.has_yrange = true;
+    r.ymin = -m;
+    r.ymax = m;
   }
   return r;
 }

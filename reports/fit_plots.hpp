@@ -18,6 +18,11 @@ struct FitPlots {
   std::string scalars, convergence;
 };
 
+// The label of an experiment's abscissa (or response) with its unit: the quantities of FE
+// experiments in words ("tool travel [mm]", "Fz [N]", "contour mean Fθ / Fz"), the others by
+// their names ("strain [-]"); fallback when the record names none.
+std::string experiment_axis_label(const inverse::FitRecord::Experiment& e, bool abscissa, const std::string& fallback);
+
 // NN_NAME_fit: measured points, initial (dashed) and fitted simulation; the initial curve is
 // clipped when it spans more than 3 times the data. index: the experiment's position (1-based).
 PlotSpec curve_fit_plot(int index, const inverse::FitRecord::Experiment& e, const ExperimentData& d);

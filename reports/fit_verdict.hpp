@@ -58,8 +58,6 @@ struct FitVerdict {
   std::vector<Finding> findings;               // warnings and notes, in the order the report lists them
 };
 
-inline bool is_scalar(const inverse::FitRecord::Experiment& e) { return e.kind == "scalar"; }
-
 // The verdict on one experiment, without the shares of the total cost and points.
 ExperimentVerdict judge_experiment(const inverse::FitRecord::Experiment& e, const ExperimentData& data);
 

@@ -138,7 +138,7 @@ std::string gnuplot_script(const PlotSpec& spec, PlotFormat format, const std::s
   g << "set xlabel " << gnuplot_quote(spec.xlabel) << "\n";
   g << "set ylabel " << gnuplot_quote(spec.ylabel) << "\n";
   g << "set grid lc rgb '#dddddd'\n";
-  if (spec.key) g << "set key top left box opaque\n";
+  if (spec.key) g << (spec.key_outside ? "set key outside right top vertical box opaque\n" : "set key top left box opaque\n");
   else g << "unset key\n";
   if (spec.integer_x) {
     double xmax = 0.0;

@@ -202,6 +202,18 @@ TEST(Cli, FitWritesFitJsonCardAndExports) {
   EXPECT_TRUE(fs::exists(out / "report.html"));
   EXPECT_EQ(run("report " + out.string() + " --no-plots").code, 0);
   EXPECT_EQ(run("report " + fresh_dir("nofit").string()).code, 2);
+  // A fit.json of an older spifit, without the evaluations and information shares of the
+  // experiments, still makes a report.
+  for (const char* k : {"evaluations", "information_share"}) EXPECT_TRUE(j["experiments"][0].contains(k)) << k;
+  auto older = j;
+  for (auto& e : older["experiments"]) {
+    e.erase("evaluations");
+    e.erase("information_share");
+  }
+  std::ofstream(out / "fit.json") << older.dump(2);
+  const auto old_report = run("report " + out.string() + " --no-plots");
+  EXPECT_EQ(old_report.code, 0) << old_report.err;
+  EXPECT_NE(spifit::test::slurp(out / "report.md").find("fit.json does not count the forward runs per experiment"), std::string::npos);
   // The fitted card loads and shows.
   EXPECT_EQ(run("material show " + (out / "card.toml").string()).code, 0);
   fs::remove_all(out);

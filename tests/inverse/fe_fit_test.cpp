@@ -138,6 +138,40 @@ TEST(FeFitFile, InputErrorsNameFileKeyAndValue) {
   }
 }
 
+// A contour range beyond a cone's path is an input error when the fit file is read (before any
+// run): a scalar's `contours` and the contour column of `contour_means` data, naming the fit
+// file, the key and its value. The small tiny cone of three contours.
+TEST(FeFitFile, ContourRangeBeyondTheConeIsAnInputError) {
+  const fs::path scene = test::write_tiny_cone(test::temp_path("cone.toml"), "", test::small_tiny_cone(3));
+  EXPECT_EQ(scene::read_scene(scene.string())->contours(), 3);
+  EXPECT_EQ(scene::read_scene(test::write_tiny_line(test::temp_path("line.toml")).string())->contours(), 0);
+  const fs::path means = test::temp_path("means.csv"), beyond = test::temp_path("beyond.csv");
+  std::ofstream(means) << "contour,ftheta_over_fz\n1,-0.2\n2,-0.21\n3,-0.22\n";
+  std::ofstream(beyond) << "contour,ftheta_over_fz\n2,-0.21\n3,-0.22\n4,-0.23\n";
+  const std::string steady = "observable = \"steady_ftheta_over_fz\"\nvalue = -0.2\n";
+  const std::string beyond_path = "it has 3 contours (numbers 1 to 3)";
+  struct Case {
+    std::string body, key_value, message;
+  };
+  const std::vector<Case> errors{
+      {steady + "contours = [2, 4]\n", ".contours = [2, 4]: ", "beyond the path of scene " + scene.string() + ": " + beyond_path},
+      {steady + "contours = [4, 4]\n", ".contours = [4, 4]: ", "beyond the path of scene " + scene.string() + ": " + beyond_path},
+      {"contour_means = \"ftheta_over_fz\"\ndata = \"" + beyond.string() + "\"\n", ".data = \"" + beyond.string() + "\": ",
+       "column contour holds contour 4, beyond the path of scene " + scene.string() + ": " + beyond_path},
+  };
+  for (const auto& c : errors) {
+    const fs::path f = write_fit(fit_head(kFriction) + experiment(scene, c.body));
+    const std::string e = read_error(f);
+    EXPECT_EQ(e.rfind(f.string() + ": ", 0), 0u) << e;
+    EXPECT_NE(e.find(c.key_value + c.message), std::string::npos) << e;
+  }
+  // The whole path is fine.
+  for (const std::string& body : {steady + "contours = [1, 3]\n", "contour_means = \"ftheta_over_fz\"\ndata = \"" + means.string() + "\"\n"}) {
+    const fs::path f = write_fit(fit_head(kFriction) + experiment(scene, body));
+    EXPECT_EQ(read_error(f), "(no error)") << body;
+  }
+}
+
 // The shared runs: a point whose scene input the scene refuses is a failed run, listed with the
 // reason; nothing runs.
 TEST(SceneRuns, AnInputTheSceneRefusesIsAListedFailure) {
@@ -161,12 +195,48 @@ TEST(SceneRuns, ARunPastItsTimeLimitIsAListedFailure) {
   const fs::path scene_file = test::write_tiny_line(test::temp_path("line.toml"));
   const auto sc = scene::read_scene(scene_file.string());
   inverse::SceneRuns runs(sc->card()->params, 0.05);  // the run takes about a second
-  EXPECT_EQ(runs.result(*sc, inverse::ParameterPoint{sc->card()->params, {}}), nullptr);
+  EXPECT_EQ(runs.result(*sc, inverse::ParameterPoint{sc->card()->params, {}}, "press"), nullptr);
   EXPECT_EQ(runs.runs(), 1);
   const auto failures = runs.failures();
   ASSERT_EQ(failures.size(), 1u);
   EXPECT_NE(failures.front().message.find("time limit of 0.05 s passed at tool travel"), std::string::npos) << failures.front().message;
   EXPECT_FALSE(failures.front().recovered);
+  // The run is logged for the experiment that asked, with its wall time (at least the limit).
+  const auto log = runs.run_log();
+  ASSERT_EQ(log.size(), 1u);
+  EXPECT_EQ(log[0].scene, scene_file.string());
+  EXPECT_EQ(log[0].experiment, "press");
+  EXPECT_FALSE(log[0].retry);
+  EXPECT_FALSE(log[0].ok);
+  EXPECT_GE(log[0].seconds, 0.05);
+  EXPECT_LT(log[0].seconds, 30.0);
+}
+
+// Per scene file: runs (retries included), failed points (not the recovered ones; a point whose
+// inputs the scene refused has no run), retries, total and median wall time of one run.
+TEST(SceneRuns, RunsBySceneFile) {
+  using Run = inverse::SceneRuns::Run;
+  const std::vector<Run> log{{"a.toml", "e1", 3.0, false, false}, {"b.toml", "e2", 1.5, false, true}, {"a.toml", "e1", 1.0, true, true},
+                             {"a.toml", "e2", 2.0, false, false}, {"a.toml", "e2", 6.0, true, false}};
+  const std::vector<inverse::SceneRuns::Failure> failures{
+      {"a.toml", "swift.K=150", "retried ...", true}, {"a.toml", "swift.K=160", "failed twice", false}, {"c.toml", "contact.friction=5", "refused", false}};
+  const auto files = inverse::scene_file_runs(log, failures);
+  ASSERT_EQ(files.size(), 3u);
+  EXPECT_EQ(files[0].scene, "a.toml");
+  EXPECT_EQ(files[0].runs, 4);
+  EXPECT_EQ(files[0].failures, 1);
+  EXPECT_EQ(files[0].retried, 2);
+  EXPECT_EQ(files[0].seconds, 12.0);
+  EXPECT_EQ(files[0].median_seconds, 2.5);  // of 1, 2, 3, 6
+  EXPECT_EQ(files[1].scene, "b.toml");
+  EXPECT_EQ(files[1].runs, 1);
+  EXPECT_EQ(files[1].failures, 0);
+  EXPECT_EQ(files[1].median_seconds, 1.5);
+  EXPECT_EQ(files[2].scene, "c.toml");
+  EXPECT_EQ(files[2].runs, 0);
+  EXPECT_EQ(files[2].failures, 1);
+  EXPECT_EQ(files[2].seconds, 0.0);
+  EXPECT_TRUE(std::isnan(files[2].median_seconds));
 }
 
 // Twin experiment: the drag force Fx of the tiny line test made at mu = 0.1 (no noise) gives back

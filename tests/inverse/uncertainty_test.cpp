@@ -4,6 +4,8 @@
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace spifit::inverse;
 
 // Published t quantiles (two-sided 95 %): 12.706 (1 dof), 2.228 (10), 1.984 (100).
@@ -56,4 +58,25 @@ TEST(Uncertainty, RankDeficient) {
   EXPECT_FALSE(u.identifiable[1]);
   EXPECT_TRUE(u.identifiable[2]);
   EXPECT_EQ(u.warnings.size(), 2u);
+}
+
+// Fisher information per block of rows: block 0 = row 0, block 1 = rows 1-2. Column a: 1 of
+// 1 + 4 + 0 = 5 in block 0; column b: none in block 0; column c: no row responds (NaN).
+TEST(Uncertainty, InformationSharesPerBlockOfRows) {
+  Eigen::MatrixXd J(3, 3);
+  J << 1.0, 0.0, 0.0,
+       2.0, 1.0, 0.0,
+       0.0, -3.0, 0.0;
+  const Eigen::MatrixXd s = information_shares(J, {1, 2});
+  ASSERT_EQ(s.rows(), 2);
+  ASSERT_EQ(s.cols(), 3);
+  EXPECT_DOUBLE_EQ(s(0, 0), 0.2);
+  EXPECT_DOUBLE_EQ(s(1, 0), 0.8);
+  EXPECT_EQ(s(0, 1), 0.0);
+  EXPECT_EQ(s(1, 1), 1.0);
+  EXPECT_TRUE(std::isnan(s(0, 2)));
+  EXPECT_TRUE(std::isnan(s(1, 2)));
+  // Scaling a column (another unit of the parameter) leaves its shares alone.
+  J.col(0) *= 1e3;
+  EXPECT_DOUBLE_EQ(information_shares(J, {1, 2})(0, 0), 0.2);
 }

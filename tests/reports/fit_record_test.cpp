@@ -129,6 +129,59 @@ TEST(FitRecord, MultiStartOptionalAndNullValuesRoundTrip) {
   EXPECT_EQ(back.fixed[1].value, 0.25);
 }
 
+// The forward runs (per experiment, per scene file) and the information shares: written when
+// known, read back, absent from an older fit.json.
+TEST(FitRecord, RunsAndInformationSharesRoundTripAndAreOptional) {
+  FitRecord r;
+  r.name = "fe";
+  for (const char* n : {"swift.K", "contact.friction"}) {
+    FitRecord::Parameter p;
+    p.name = n;
+    r.parameters.push_back(p);
+    r.correlation.names.push_back(n);
+  }
+  FitRecord::Experiment fe, old;
+  fe.name = "press";
+  fe.kind = "force_curve";
+  fe.evaluations = 33;
+  fe.scene_runs = 10;
+  fe.run_seconds = 14.5;
+  fe.information_share = {0.25, FitRecord::kNaN};
+  old.name = "tensile_00";
+  old.kind = "curve";
+  r.experiments = {fe, old};
+  r.scene_runs = 10;
+  r.runs_by_scene = {{"line.toml", 12, 1, 2, 20.0, 1.75}};
+
+  const std::string text = file_text(r);
+  const json j = json::parse(text);
+  const auto& e = j["experiments"][0];
+  EXPECT_EQ(e["evaluations"], 33);
+  EXPECT_EQ(e["scene_runs"], 10);
+  EXPECT_EQ(e["run_seconds"], 14.5);
+  EXPECT_EQ(e["information_share"]["swift.K"], 0.25);
+  EXPECT_TRUE(e["information_share"]["contact.friction"].is_null());
+  for (const char* k : {"evaluations", "scene_runs", "run_seconds", "information_share"}) EXPECT_EQ(j["experiments"][1].count(k), 0u) << k;
+  EXPECT_EQ(j["runs_by_scene"], json::parse(R"([{"scene": "line.toml", "runs": 12, "failures": 1, "retried": 2, "seconds": 20.0, "median_seconds": 1.75}])"));
+
+  const FitRecord back = inverse::fit_record_from_json(j, "fe.json");
+  EXPECT_EQ(file_text(back), text);
+  ASSERT_EQ(back.experiments[0].information_share.size(), 2u);
+  EXPECT_EQ(back.experiments[0].information_share[0], 0.25);
+  EXPECT_TRUE(std::isnan(back.experiments[0].information_share[1]));
+  EXPECT_EQ(*back.experiments[0].evaluations, 33);
+  EXPECT_FALSE(back.experiments[1].evaluations.has_value());
+  EXPECT_FALSE(back.experiments[1].scene_runs.has_value());
+  EXPECT_TRUE(back.experiments[1].information_share.empty());
+  ASSERT_EQ(back.runs_by_scene.size(), 1u);
+  EXPECT_EQ(back.runs_by_scene[0].retried, 2);
+  EXPECT_EQ(back.runs_by_scene[0].median_seconds, 1.75);
+
+  // Without FE scenes there are no scene runs to list.
+  r.scene_runs.reset();
+  EXPECT_EQ(inverse::to_json(r).count("runs_by_scene"), 0u);
+}
+
 void expect_error(const json& j, const std::string& key, const std::string& message) {
   try {
     inverse::fit_record_from_json(j, "DIR/fit.json");
@@ -157,6 +210,18 @@ TEST_F(FitRecordTest, BrokenFitJsonNamesTheFileAndTheKey) {
   j = good;
   j["iterations"] = 2.5;
   expect_error(j, "iterations", "whole number");
+  j = good;
+  j["experiments"][0]["evaluations"] = 2.5;
+  expect_error(j, "experiments[0].evaluations", "whole number");
+  j = good;
+  j["experiments"][0]["information_share"] = 0.5;
+  expect_error(j, "experiments[0].information_share", "expected an object");
+  j = good;
+  j["runs_by_scene"] = "line.toml";
+  expect_error(j, "runs_by_scene", "expected an array");
+  j = good;
+  j["runs_by_scene"] = json::array({{{"scene", "line.toml"}, {"runs", "many"}}});
+  expect_error(j, "runs_by_scene[0].runs", "expected a number");
   j = good;
   j.erase("experiments");
   expect_error(j, "experiments", "not a fit.json");

@@ -1,6 +1,7 @@
 // The fit report: a real fit (fit_classic) is run once, written like `spifit fit --out DIR`
 // does, and rendered; the report must show what fit.json says, the HTML must be well formed,
 // plots must exist when gnuplot is there, and a broken gnuplot or fit.json is handled.
+#include "tests/support/markdown_rows.hpp"
 #include "tests/support/temp_files.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
@@ -9,6 +10,7 @@
 #include "inverse/fit_output.hpp"
 #include "reports/fit_report.hpp"
 #include "reports/plot.hpp"
+#include "reports/report_format.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -29,35 +31,12 @@ using namespace spifit;
 
 namespace {
 
+using spifit::test::md_row;
 using spifit::test::slurp;
 
 void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 bool have_gnuplot() { return !reports::find_executable("gnuplot").empty(); }
-
-// Cells of the Markdown table row that starts with "| NAME |".
-std::vector<std::string> md_row(const std::string& md, const std::string& name) {
-  std::istringstream in(md);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("| " + name + " |", 0) != 0) continue;
-    std::vector<std::string> cells;
-    std::string cell;
-    for (std::size_t i = 1; i < line.size(); ++i) {
-      if (line[i] == '\\' && i + 1 < line.size()) {
-        cell += line[++i];
-      } else if (line[i] == '|') {
-        const auto a = cell.find_first_not_of(' '), b = cell.find_last_not_of(' ');
-        cells.push_back(a == std::string::npos ? std::string() : cell.substr(a, b - a + 1));
-        cell.clear();
-      } else {
-        cell += line[i];
-      }
-    }
-    return cells;
-  }
-  return {};
-}
 
 double rel_diff(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
@@ -366,6 +345,84 @@ TEST_F(FitReportTest, MultiStartSectionAndSpreadNote) {
   EXPECT_NE(md.find("| 1 (best) | yes | 87 |"), std::string::npos) << md;
   EXPECT_NE(md.find("give swift.K from"), std::string::npos);
   EXPECT_TRUE(s.findings.empty()) << "notes are not warnings";
+}
+
+// The forward runs per experiment (evaluations; a material-point fit has no scene runs) and the
+// share of each parameter's Fisher information per experiment, as fit.json gives them.
+TEST_F(FitReportTest, ForwardRunsAndInformationSharesAsInFitJson) {
+  const fs::path d = copy_of_fit("runs");
+  reports::render_fit_report(d, {false});
+  const std::string md = slurp(d / "report.md");
+  const json j = json::parse(slurp(d / "fit.json"));
+  const std::string runs = test::md_section(md, "## Forward runs"), info = test::md_section(md, "### Which experiment informs which parameter");
+  ASSERT_FALSE(runs.empty()) << md;
+  ASSERT_FALSE(info.empty()) << md;
+  long evaluations = 0;
+  for (const auto& e : j["experiments"]) {
+    const std::string name = e["name"];
+    EXPECT_EQ(e.count("scene_runs"), 0u) << name << ": no FE scene";
+    const auto row = md_row(runs, name);
+    ASSERT_EQ(row.size(), 3u) << name << "\n" << runs;
+    EXPECT_EQ(row[2], std::to_string(e["evaluations"].get<long>())) << name;
+    evaluations += e["evaluations"].get<long>();
+    const auto shares = md_row(info, name);
+    ASSERT_EQ(shares.size(), 7u) << name << "\n" << info;
+    int k = 1;
+    for (const auto& q : j["correlation"]["names"]) {
+      const double share = e["information_share"][q.get<std::string>()].get<double>();
+      EXPECT_EQ(shares[static_cast<std::size_t>(k++)], reports::format_percent(share)) << name << " " << q;
+    }
+  }
+  // Every experiment is evaluated for each of the fit's residual evaluations, and once more at
+  // the start (its check): forward_runs counts the former per experiment.
+  EXPECT_EQ(evaluations, j["forward_runs"].get<long>() + static_cast<long>(j["experiments"].size()));
+  // A column of shares adds up to 1; an r-value does not depend on the hardening law.
+  for (const auto& q : j["correlation"]["names"]) {
+    double sum = 0.0;
+    for (const auto& e : j["experiments"]) sum += e["information_share"][q.get<std::string>()].get<double>();
+    EXPECT_NEAR(sum, 1.0, 1e-12) << q;
+  }
+  for (const auto& e : j["experiments"]) {
+    if (e["kind"] == "scalar") {
+      EXPECT_LT(e["information_share"]["swift.K"].get<double>(), 1e-12) << e["name"];
+    }
+  }
+}
+
+// A fit.json of an older spifit, without the runs and shares: the report says so, no tables.
+TEST_F(FitReportTest, OlderFitJsonWithoutRunsOrShares) {
+  const fs::path d = copy_of_fit("older");
+  json j = json::parse(slurp(d / "fit.json"));
+  for (auto& e : j["experiments"]) {
+    e.erase("evaluations");
+    e.erase("information_share");
+  }
+  write(d / "fit.json", j.dump(2));
+  reports::render_fit_report(d, {false});
+  const std::string md = slurp(d / "report.md");
+  EXPECT_EQ(test::md_section(md, "## Forward runs"),
+            "## Forward runs\n\nfit.json does not count the forward runs per experiment (written by an older spifit).\n");
+  EXPECT_EQ(md.find("Which experiment informs which parameter"), std::string::npos);
+}
+
+// An FE scene's scalar observable (kind fe_scalar, e.g. peak_fz in N) is reported like a
+// material point's scalar: a row of the scalar table and a bar, no curve plots.
+TEST_F(FitReportTest, FeScalarsAreScalars) {
+  const fs::path d = copy_of_fit("fe_scalar");
+  json j = json::parse(slurp(d / "fit.json"));
+  for (auto& e : j["experiments"]) {
+    if (e["name"] != "r90") continue;
+    e["kind"] = "fe_scalar";
+    e["y"] = "peak_fz";
+    e["y_unit"] = "N";
+  }
+  write(d / "fit.json", j.dump(2));
+  reports::render_fit_report(d, {false});
+  const std::string md = slurp(d / "report.md");
+  const auto row = md_row(test::md_section(md, "### Scalar experiments"), "r90");
+  ASSERT_EQ(row.size(), 7u) << md;
+  EXPECT_EQ(row[1], "peak_fz [N]");
+  EXPECT_EQ(test::md_section(md, "## Curves: data and fit").find("### r90"), std::string::npos);
 }
 
 // A real conflict (fit_n_conflict: r45 and the shear curve disagree on Hill's N; each

@@ -45,6 +45,9 @@ class Scene {
   virtual std::optional<toolpath::ToolPath> tool_centre_path() const { return std::nullopt; }
   // The path points where the run takes a section y = 0 (forming scenes' [output] sections).
   virtual std::vector<std::string> section_points() const { return {}; }
+  // The contours of a cone's path (all stages): contour numbers run from 1 to it. 0 for kinds
+  // without contours.
+  virtual int contours() const { return 0; }
 
   // Named inputs: the kind's own (its InputTable) and the card's parameters (material_inputs).
   // input: std::invalid_argument for a name that is neither. set_input: "" when set, else why

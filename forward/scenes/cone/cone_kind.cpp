@@ -17,6 +17,7 @@ class ConeSceneFile final : public TableScene<ConeScene> {
     return std::make_unique<ConeResult>(run_cone_scene(data_, files, control));
   }
   std::optional<toolpath::ToolPath> tool_centre_path() const override { return cone_scene_path(data_).path; }
+  int contours() const override { return cone_scene_contours(data_); }
 
  protected:
   std::string check_inputs() const override { return cone_scene_error(data_).text(); }

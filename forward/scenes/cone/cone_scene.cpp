@@ -135,8 +135,7 @@ void read_output_extras(const TomlTable& root, ConeScene& s) {
   if (const auto h = o->table("history_element")) read_history_element(*h, s);
   if (o->has("steady_state")) {
     const std::vector<double> r = o->number_list("steady_state");
-    int total = 0;
-    for (const auto& st : s.stages) total += st.contours;
+    const int total = cone_scene_contours(s);
     if (r.size() != 2 || r[0] != std::floor(r[0]) || r[1] != std::floor(r[1]) || !(r[0] >= 1 && r[0] <= r[1] && r[1] <= total))
       o->fail("steady_state", "must be [from, to]: whole contour numbers with 1 <= from <= to <= " + std::to_string(total) +
                                   " (the path's contours)");
@@ -229,6 +228,12 @@ mesh::Mesh cone_scene_mesh(const ConeScene& scene) {
   o.radius = scene.clamp_radius;
   o.angle_deg = scene.pie_angle;
   return mesh::disc_mesh(o);
+}
+
+int cone_scene_contours(const ConeScene& scene) {
+  int total = 0;
+  for (const auto& st : scene.stages) total += st.contours;
+  return total;
 }
 
 toolpath::ConePath cone_scene_path(const ConeScene& scene) {

@@ -101,6 +101,8 @@ InputViolation cone_scene_error(const ConeScene& scene);
 
 // The stages with the scene's thickness, tool radius, feed and pie angle.
 std::vector<toolpath::ConePathOptions> cone_scene_stages(const ConeScene& scene);
+// The contours of the scene's path, all stages (1-based contour numbers run up to it).
+int cone_scene_contours(const ConeScene& scene);
 // The tool path of the scene (tool CENTRE waypoints with their move kind and contour).
 toolpath::ConePath cone_scene_path(const ConeScene& scene);
 // The mesh of the scene: disc or pie of radius clamp_radius.

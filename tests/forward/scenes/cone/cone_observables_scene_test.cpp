@@ -5,6 +5,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/cone/cone_run.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
+#include "forward/scenes/scene_registry.hpp"
 #include "tests/support/temp_files.hpp"
 #include "tests/support/tiny_scenes.hpp"
 
@@ -154,6 +155,47 @@ TEST(ConeObservables, HistoryElementErrorsNameFileKeyAndValue) {
   } catch (const io::InputError& err) {
     EXPECT_EQ(err.key(), "output.history_element.angle") << err.what();
   }
+  fs::remove(file);
+}
+
+// The observable steady_ftheta_over_fz (cone_kind.cpp) over contours [2, 3] of a three-contour
+// small tiny cone, at mu = 0.1: the mean of the contours' central-third Ftheta over the mean of
+// their Fz, both taken from the run's contour log (contours.csv, numbers to 17 digits), to 1e-12.
+// Contour 1 (the tool's first pass, another state of the sheet) lies outside the range.
+TEST(ConeObservables, SteadyFthetaOverFzIsTheRatioOfTheContourLogsMeans) {
+  const fs::path file = test::write_tiny_cone(temp_path("cone.toml"), "[contact]\nfriction = 0.1\n", test::small_tiny_cone(3));
+  const auto scene = read_scene(file.string());
+  const fs::path dir = temp_path("out");
+  fs::remove_all(dir);
+  const auto out = io::OutputDirectory::prepare(dir.string(), true);
+  const auto result = scene->run(RunFiles(out), RunControl());
+  ASSERT_TRUE(result->ok()) << result->message;
+  const Observable* o = find_scene_kind("cone")->find_observable("steady_ftheta_over_fz");
+  ASSERT_NE(o, nullptr);
+  ObservableOptions range;
+  range.contours = std::make_pair(2, 3);
+  const double value = o->value(*result, range);
+
+  const Csv log = read_csv(dir / "contours.csv");
+  ASSERT_EQ(log.rows.size(), 3u);
+  const auto col = [&](const char* name) { return static_cast<std::size_t>(log.column(name)); };
+  double ftheta = 0.0, fz = 0.0;
+  for (std::size_t k = 1; k < 3; ++k) {  // contours 2 and 3
+    EXPECT_EQ(log.rows[k][col("contour")], static_cast<double>(k + 1));
+    EXPECT_GT(log.rows[k][col("samples")], 0.0);
+    ftheta += log.rows[k][col("Ftheta [N]")];
+    fz += log.rows[k][col("Fz [N]")];
+  }
+  const double expected = (ftheta / 2.0) / (fz / 2.0);
+  std::printf("steady Ftheta / Fz over contours 2-3: %.15g (contour log: %.15g)\n", value, expected);
+  EXPECT_LT(expected, 0.0);  // friction drags the tool back
+  EXPECT_NEAR(value, expected, 1e-12 * std::abs(expected));
+  // Contour 1 alone: its own ratio, another number.
+  range.contours = std::make_pair(1, 1);
+  const double first = log.rows[0][col("Ftheta [N]")] / log.rows[0][col("Fz [N]")];
+  EXPECT_NEAR(o->value(*result, range), first, 1e-12 * std::abs(first));
+  EXPECT_GT(std::abs(first - expected), 1e-6);
+  fs::remove_all(dir);
   fs::remove(file);
 }
 
