@@ -1,7 +1,7 @@
 // Cone sections as fit experiments (docs/file-formats.md "Fit file"): the section the small tiny
 // cone takes after its last contour, read back as data (directly and through the laser-scan
 // averaging of `spifit scan`), its residuals at the parameters that made it and away from them,
-// and the input errors of the experiment.
+// and the input errors of the experiment; the part centre's depth as a scalar experiment.
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/scene_registry.hpp"
@@ -155,6 +155,33 @@ TEST(ConeSectionFit, ASpifitScanSectionIsDataAsItIs) {
   std::printf("scan vs section at mu = 0.1: largest |dz| %.3g mm, largest residual %.3g, sum of squares %.3g; at mu = 0.3: %.3g, %.3g\n",
               worst, largest(r1), sum_of_squares(r1), largest(r3), sum_of_squares(r3));
   EXPECT_GT(sum_of_squares(r3), 10.0 * sum_of_squares(r1));
+}
+
+// centre_depth: the last row of stages.csv as an observable of the cone (what `observable =
+// "centre_depth"` of a fit compares), the depth of the axis point of the last section; zero
+// residual at the run's own value.
+TEST(ConeCentreDepth, IsTheLastStageRowAndAScalarOfAFit) {
+  const fs::path scene = tiny_cone();
+  const auto sc = scene::read_scene(scene.string());
+  const auto r = sc->run(scene::RunFiles(), {});
+  ASSERT_TRUE(r->ok()) << r->message;
+  const auto& cone = dynamic_cast<const scene::ConeResult&>(*r);
+  ASSERT_EQ(cone.stages.size(), 1u);
+  const double depth = cone.stages.column("centre_depth").back();
+  const scene::Observable* o = scene::find_scene_kind("cone")->find_observable("centre_depth");
+  ASSERT_NE(o, nullptr);
+  EXPECT_EQ(o->value(*r, {}), depth);
+  // The stage ends at the end of the path, a few increments after contour 2 (its lift-off): the
+  // axis node, the section's first point, has moved by less than 1e-6 mm since that section.
+  const scene::SectionPoint& axis = cone.section_profiles.back().points.front();
+  std::printf("centre depth after the stage: %.6g mm (axis point of the last section: r = %g, z = %.6g mm)\n", depth, axis.r, axis.z);
+  EXPECT_EQ(axis.r, 0.0);
+  EXPECT_NEAR(depth, -axis.z, 1e-6);
+  EXPECT_GT(depth, 0.0);
+  char value[64];
+  std::snprintf(value, sizeof value, "%.17g", depth);
+  const auto problem = inverse::read_fit_file(write_fit(scene, std::string("observable = \"centre_depth\"\nvalue = ") + value + "\nnoise = 0.001\n").string());
+  EXPECT_EQ(residuals_at(problem, scene, 0.1), std::vector<double>{0.0});
 }
 
 std::string read_error(const fs::path& f) {
