@@ -150,6 +150,17 @@ class CurveFeExperiment : public FeExperiment {
   std::vector<double> sqrt_w_;
 };
 
+// A curve experiment whose simulated curve a function gives.
+class FunctionCurveExperiment final : public CurveFeExperiment {
+ public:
+  FunctionCurveExperiment(const FeExperimentBase& b, const char* kind, FeCurve c, SimulatedCurve f)
+      : CurveFeExperiment(b, kind, {c.x, c.y, c.x_unit, c.y_unit, std::move(c.xs), std::move(c.ys), std::move(c.point_weights)}), f_(std::move(f)) {}
+
+ private:
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const override { return f_(r, p); }
+  SimulatedCurve f_;
+};
+
 class ForceCurveExperiment final : public CurveFeExperiment {
  public:
   explicit ForceCurveExperiment(const ForceCurveSpec& s)
@@ -234,6 +245,10 @@ bool is_contour_mean(const std::string& y) {
   for (const char* n : {"fr", "ftheta", "fz", "fx", "fy", "ftheta_over_fz", "fr_over_fz"})
     if (y == n) return true;
   return false;
+}
+
+std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated) {
+  return std::make_unique<FunctionCurveExperiment>(base, kind, std::move(curve), std::move(simulated));
 }
 
 std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec) { return std::make_unique<SectionExperiment>(spec); }

@@ -10,6 +10,7 @@
 #include "inverse/experiment.hpp"
 #include "inverse/scene_runs.hpp"
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,6 +43,17 @@ struct ForceCurveSpec : FeExperimentBase {
   std::string y_unit = "N";
 };
 std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec);
+
+// A measured curve (xs, ys in the units x_unit, y_unit) against the curve `simulated` gives from a
+// run at a parameter point (empty: the run does not give it), interpolated at xs; for experiments
+// defined in files of their own (cone sections, cone_section_experiment.hpp).
+struct FeCurve {
+  std::string x, y, x_unit, y_unit;
+  std::vector<double> xs, ys, point_weights;
+};
+struct ForceCurve;
+using SimulatedCurve = std::function<ForceCurve(const scene::SceneResult&, const ParameterPoint&)>;
+std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated);
 
 // A section y = 0 of a forming scene at a named path point (its [output] sections): the
 // mid-surface height z or the thickness against x (deformed) or x0 (initial), mm.

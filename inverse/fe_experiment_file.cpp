@@ -1,6 +1,7 @@
 #include "inverse/fe_experiment_file.hpp"
 
 #include "forward/scenes/scene_registry.hpp"
+#include "inverse/cone_section_experiment.hpp"
 #include "inverse/measurement.hpp"
 
 #include <algorithm>
@@ -135,19 +136,22 @@ std::unique_ptr<Experiment> contour_means(const io::TomlTable& e, const std::str
 
 const std::vector<std::string>& fe_experiment_keys() {
   static const std::vector<std::string> keys{"name",   "scene",         "data",       "x",     "y",      "noise",    "weight",
-                                             "weight_column", "observable", "value", "window", "contours", "source", "section", "contour_means", "noise_relative"};
+                                             "weight_column", "observable", "value", "window", "contours", "source", "section", "contour_means", "noise_relative", "noise_column"};
   return keys;
 }
 
 std::unique_ptr<Experiment> read_fe_experiment(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
   if (!base.scene->tool_centre_path()) e.fail("scene", "scene kind " + base.scene->kind() + " has no tool to measure");
   if (e.has("observable")) {
-    for (const char* k : {"data", "x", "y", "weight_column", "noise_relative"})
+    for (const char* k : {"data", "x", "y", "weight_column", "noise_relative", "noise_column"})
       if (e.has(k)) e.fail(k, "a scalar experiment (observable = ...) takes no curve keys");
     return scalar(e, std::move(base));
   }
   for (const char* k : {"value", "window", "contours"})
     if (e.has(k)) e.fail(k, "a curve (data = ...) takes no scalar keys; a scalar needs observable = ...");
+  const bool cone_section = e.has("section") && is_cone_family_scene(*base.scene);
+  if (e.has("noise_column") && !cone_section) e.fail("noise_column", "only for the sections of cone scenes (section = ...)");
+  if (cone_section) return read_cone_section_experiment(e, path, std::move(base));
   if (e.has("section")) return section(e, path, std::move(base));
   if (e.has("contour_means")) return contour_means(e, path, std::move(base));
   ForceCurveSpec c;

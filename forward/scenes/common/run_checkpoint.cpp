@@ -15,7 +15,7 @@ namespace {
 constexpr char kKind[] = "fe-run-checkpoint";
 // Bump when the layout below, the model's or an observer's state, or the meaning of the stored
 // load factor changes.
-constexpr std::uint32_t kLayout = 1;
+constexpr std::uint32_t kLayout = 2;  // 2: the cone's section points
 
 void save_log(io::BinaryWriter& w, const RunLog& log) {
   w.section("run_log");

@@ -57,6 +57,8 @@ std::vector<Observable> cone_observables() {
        }},
       scalar("max_surface_penetration", "mm", "deepest point of the tool-side surface over the run",
              [](const ConeResult& r) { return r.force.max_surface_penetration(); }),
+      scalar("centre_depth", "mm", "depth of the part centre (axis node, mid-surface) at the end of the last stage (stages.csv)",
+             [](const ConeResult& r) { return r.stages.empty() ? kNaN : r.stages.column("centre_depth").back(); }),
       scalar("contours_completed", "", "contours the run completed", [](const ConeResult& r) { return double(r.run.marks_reached); }, true),
   };
   for (Observable& f : fe_run_observables()) list.push_back(std::move(f));

@@ -47,6 +47,46 @@ void load_series(io::BinaryReader& r, io::Series* s) {
   }
 }
 
+// A section point's fields in a fixed order (checkpoints).
+constexpr std::size_t kPointFields = 13;
+std::vector<double> point_fields(const SectionPoint& p) {
+  return {p.r0, p.r, p.theta_deg, p.z, p.thickness, p.r_top, p.z_top, p.r_bottom, p.z_bottom, p.depth, p.wall_angle_deg, p.u_theta, p.dtheta_deg};
+}
+SectionPoint point_from(const double* f) {
+  SectionPoint p;
+  for (double* x : {&p.r0, &p.r, &p.theta_deg, &p.z, &p.thickness, &p.r_top, &p.z_top, &p.r_bottom, &p.z_bottom, &p.depth, &p.wall_angle_deg,
+                    &p.u_theta, &p.dtheta_deg})
+    *x = *f++;
+  return p;
+}
+
+void save_profiles(io::BinaryWriter& w, const std::vector<ConeSection>& profiles) {
+  w.i64(static_cast<std::int64_t>(profiles.size()));
+  for (const auto& s : profiles) {
+    w.i64(s.stage);
+    w.i64(s.contour);
+    std::vector<double> f;
+    for (const auto& p : s.points)
+      for (double x : point_fields(p)) f.push_back(x);
+    w.f64s(f);
+  }
+}
+
+void load_profiles(io::BinaryReader& r, std::vector<ConeSection>* profiles) {
+  profiles->clear();
+  const std::int64_t n = r.i64();
+  if (n < 0 || n > 1'000'000) throw io::ArchiveError("invalid section count " + std::to_string(n));
+  for (std::int64_t i = 0; i < n; ++i) {
+    ConeSection s;
+    s.stage = static_cast<int>(r.i64());
+    s.contour = static_cast<int>(r.i64());
+    const std::vector<double> f = r.f64s();
+    if (f.size() % kPointFields != 0) throw io::ArchiveError("section points of another width");
+    for (std::size_t k = 0; k < f.size(); k += kPointFields) s.points.push_back(point_from(&f[k]));
+    profiles->push_back(std::move(s));
+  }
+}
+
 }  // namespace
 
 std::vector<double> stage_end_distances(const toolpath::ConePath& path) {
@@ -120,6 +160,7 @@ void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
   files_.write(name, io::format_text("# spifit cone scene %s: radial elongation of the section's element edges after stage %d, contour %d\n",
                                      scene_.name.c_str(), span.stage, span.contour) +
                          elongation_csv(edges));
+  profiles_.push_back({span.stage, span.contour, points});
   const double z = centre_z();
   section_rows_.add_row({static_cast<double>(span.stage), static_cast<double>(span.contour), wall, static_cast<double>(s.plateau_nodes),
                            s.plateau_thickness, s.sine_law_thickness, s.plateau_thickness / s.sine_law_thickness, s.min_thickness,
@@ -175,12 +216,14 @@ void ConeObservableLog::save(io::BinaryWriter& w) const {
   save_series(w, section_rows_);
   save_series(w, stage_rows_);
   save_series(w, history_rows_);
+  save_profiles(w, profiles_);
 }
 
 void ConeObservableLog::restore(io::BinaryReader& r) {
   load_series(r, &section_rows_);
   load_series(r, &stage_rows_);
   load_series(r, &history_rows_);
+  load_profiles(r, &profiles_);
 }
 
 }  // namespace spifit::scene

@@ -36,6 +36,8 @@ class ConeObservableLog : public RunObserver {
   const io::Series& sections() const { return section_rows_; }
   const io::Series& stages() const { return stage_rows_; }
   const io::Series& history() const { return history_rows_; }
+  // The section after each completed contour, in path order (what sections/ holds).
+  const std::vector<ConeSection>& profiles() const { return profiles_; }
   // For summary.json: the history element, the last section summary and the stages.
   nlohmann::json summary() const;
   int history_element() const { return history_element_; }  // -1 without [output] history_element
@@ -64,6 +66,7 @@ class ConeObservableLog : public RunObserver {
   int history_element_ = -1;
   element::ThicknessRule rule_;
   io::Series section_rows_, stage_rows_, history_rows_;
+  std::vector<ConeSection> profiles_;
   std::size_t stages_written_ = 0;
 };
 

@@ -6,6 +6,7 @@
 #include "forward/io/series.hpp"
 #include "forward/scenes/common/fe_scene_result.hpp"
 #include "forward/scenes/cone/cone_observables.hpp"
+#include "forward/scenes/cone/cone_sections.hpp"
 
 #include <optional>
 #include <string>
@@ -24,6 +25,7 @@ class ConeResult final : public FeSceneResult {
   std::vector<ContourMean> contours;  // completed contours
   std::optional<SteadyState> steady_state;
   io::Series sections, stages, history;  // sections.csv, stages.csv, history.csv
+  std::vector<ConeSection> section_profiles;  // sections/section_s*_c*.csv: after each completed contour, path order
   nlohmann::json observables;            // section angle, last section, stages, history element
 
   Eigen::Vector3d final_polar_force() const;

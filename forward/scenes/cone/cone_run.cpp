@@ -187,6 +187,7 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   r.sections = observables.sections();
   r.stages = observables.stages();
   r.history = observables.history();
+  r.section_profiles = observables.profiles();
   r.observables = observables.summary();
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;

@@ -40,6 +40,13 @@ struct SectionPoint {
   double dtheta_deg = 0.0;               // current polar angle - theta0, in (-180, 180]; 0 on the axis
 };
 
+// The section a run takes after a completed contour: the contour's stage and number within the
+// stage (ContourSpan), its points from the axis outwards.
+struct ConeSection {
+  int stage = 1, contour = 0;
+  std::vector<SectionPoint> points;
+};
+
 // The section points of `nodes` (sorted from the axis outwards) on the line at theta0_deg;
 // t0 = initial thickness.
 std::vector<SectionPoint> radial_section(const std::vector<SectionNode>& nodes, double theta0_deg, double t0);

@@ -53,6 +53,20 @@ void expect_same_outputs(const fs::path& ref, const ConeResult& ref_report, cons
                                 "travel_reached", "contours_completed", "peak_force", "peak_polar_force", "final_force", "final_polar_force",
                                 "max_penetration", "max_surface_penetration", "model", "path", "warnings", "observables", "stabilised"});
   EXPECT_EQ(b["contour_wall_seconds"].size(), a["contour_wall_seconds"].size());
+  // The section points a fit compares with (ConeResult::section_profiles) come back with the checkpoint.
+  ASSERT_EQ(report.section_profiles.size(), ref_report.section_profiles.size());
+  for (std::size_t i = 0; i < report.section_profiles.size(); ++i) {
+    const ConeSection &x = ref_report.section_profiles[i], &y = report.section_profiles[i];
+    EXPECT_EQ(y.stage, x.stage);
+    EXPECT_EQ(y.contour, x.contour);
+    ASSERT_EQ(y.points.size(), x.points.size());
+    for (std::size_t k = 0; k < x.points.size(); ++k) {
+      EXPECT_EQ(y.points[k].r, x.points[k].r) << "section " << i << ", point " << k;
+      EXPECT_EQ(y.points[k].z, x.points[k].z) << "section " << i << ", point " << k;
+      EXPECT_EQ(y.points[k].thickness, x.points[k].thickness) << "section " << i << ", point " << k;
+      EXPECT_EQ(y.points[k].dtheta_deg, x.points[k].dtheta_deg) << "section " << i << ", point " << k;
+    }
+  }
 }
 
 // Increments of the reference run up to the end of its first contour (force.csv rows).

@@ -1,0 +1,133 @@
+#include "inverse/cone_section_experiment.hpp"
+
+#include "forward/scenes/common/table_scene.hpp"
+#include "forward/scenes/cone/cone_observables.hpp"
+#include "forward/scenes/cone/cone_scene.hpp"
+#include "forward/scenes/scene_registry.hpp"
+#include "inverse/measurement.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+
+namespace spifit::inverse {
+namespace {
+
+using io::format_number;
+using io::InputError;
+
+const scene::ConeScene* cone_data(const scene::Scene& s) {
+  const auto* t = dynamic_cast<const scene::TableScene<scene::ConeScene>*>(&s);
+  return t ? &t->data() : nullptr;
+}
+
+double point_value(const scene::SectionPoint& p, const std::string& c) {
+  if (c == "r") return p.r;
+  if (c == "r0") return p.r0;
+  if (c == "z") return p.z;
+  return p.thickness;
+}
+
+// "last" or "contour K" with 1 <= K <= contours: K; else fails on key section.
+int section_contour(const io::TomlTable& e, const std::string& scene_name, int contours) {
+  const std::string v = e.string("section");
+  const std::string takes = "scene " + scene_name + " takes one after each of its " + std::to_string(contours) +
+                            " contours (\"last\" or \"contour K\", 1 <= K <= " + std::to_string(contours) + ")";
+  if (v == "last") return contours;
+  if (v.rfind("contour ", 0) != 0) e.fail("section", "not a section of a cone: " + takes);
+  const std::string k = v.substr(8);
+  char* end = nullptr;
+  const long n = std::strtol(k.c_str(), &end, 10);
+  if (k.empty() || *end != '\0' || n < 1 || n > contours) e.fail("section", "no such section: " + takes);
+  return static_cast<int>(n);
+}
+
+// Point weights from per-point standard deviations (noise then 1 mm): w / std^2.
+void read_noise_column(const io::TomlTable& e, const MeasurementTable& t, const std::string& data_path, ConeSectionSpec* c) {
+  for (const char* k : {"noise", "noise_relative"})
+    if (e.has(k)) e.fail(k, "noise_column gives each point's standard deviation; take one of them");
+  const std::string col = e.string("noise_column");
+  const std::vector<double> sd = t.column(col);
+  if (t.units.count(col) && !t.units.at(col).empty() && t.units.at(col) != "mm")
+    e.fail("noise_column", "column " + col + " is in " + t.units.at(col) + "; sections are compared in mm");
+  if (c->point_weights.empty()) c->point_weights.assign(sd.size(), 1.0);
+  for (std::size_t i = 0; i < sd.size(); ++i) {
+    if (!(sd[i] > 0))
+      throw InputError(data_path, "column " + col, format_number(sd[i]), "standard deviations must be > 0 (row " + std::to_string(i + 1) + ")");
+    c->point_weights[i] /= sd[i] * sd[i];
+  }
+  c->noise = 1.0;
+  c->noise_relative = 0.0;
+}
+
+// The measured (x, y): x strictly increasing inside [0, clamp radius]; y in mm; point weights.
+void read_data(const io::TomlTable& e, const std::string& path, double clamp_radius, ConeSectionSpec* c) {
+  const std::string data_path = resolve_path(path, e.string("data"));
+  const MeasurementTable t = read_measurement_csv(data_path);
+  c->xs = t.column(c->x);
+  c->ys = t.column(c->y);
+  if (!t.units.at(c->y).empty() && t.units.at(c->y) != "mm") e.fail("data", "column " + c->y + " is in " + t.units.at(c->y) + "; sections are compared in mm");
+  if (c->xs.empty()) throw InputError(data_path, "column " + c->x, "", "no data rows");
+  for (std::size_t i = 0; i < c->xs.size(); ++i) {
+    const double x = c->xs[i];
+    if (i > 0 && !(x > c->xs[i - 1]))
+      throw InputError(data_path, "column " + c->x, format_number(x), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
+    if (!(x >= 0.0 && x <= clamp_radius + 1e-9))
+      throw InputError(data_path, "column " + c->x, format_number(x),
+                       "outside the simulated section [0, " + format_number(clamp_radius) + "] mm (from the axis to the clamp)");
+  }
+  if (e.has("weight_column")) {
+    c->point_weights = t.column(e.string("weight_column"));
+    for (double w : c->point_weights)
+      if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
+  }
+  if (e.has("noise_column")) read_noise_column(e, t, data_path, c);
+}
+
+}  // namespace
+
+bool is_cone_section_abscissa(const std::string& x) { return x == "r" || x == "r0"; }
+bool is_cone_section_response(const std::string& y) { return y == "z" || y == "thickness"; }
+
+bool is_cone_family_scene(const scene::Scene& s) {
+  const scene::SceneKind* k = scene::find_scene_kind(s.kind());
+  return k && k->family == "cone" && cone_data(s);
+}
+
+ForceCurve cone_section_curve(const scene::ConeResult& r, int contour, const std::string& x, const std::string& y) {
+  ForceCurve c;
+  if (contour < 1 || static_cast<std::size_t>(contour) > r.section_profiles.size()) return c;
+  std::vector<scene::SectionPoint> points = r.section_profiles[static_cast<std::size_t>(contour - 1)].points;
+  std::stable_sort(points.begin(), points.end(), [&](const auto& a, const auto& b) { return point_value(a, x) < point_value(b, x); });
+  for (const auto& p : points) {
+    if (!c.x.empty() && !(point_value(p, x) > c.x.back())) return {};  // two nodes at one r: a fold
+    c.x.push_back(point_value(p, x));
+    c.y.push_back(point_value(p, y));
+  }
+  return c;
+}
+
+std::unique_ptr<Experiment> make_cone_section_experiment(ConeSectionSpec s) {
+  const int contour = s.contour;
+  const std::string x = s.x, y = s.y;
+  FeCurve curve{s.x, s.y, "mm", "mm", std::move(s.xs), std::move(s.ys), std::move(s.point_weights)};
+  return make_fe_curve_experiment(s, "cone_section", std::move(curve), [contour, x, y](const scene::SceneResult& r, const ParameterPoint&) {
+    const auto* cone = dynamic_cast<const scene::ConeResult*>(&r);
+    return cone ? cone_section_curve(*cone, contour, x, y) : ForceCurve{};
+  });
+}
+
+std::unique_ptr<Experiment> read_cone_section_experiment(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
+  ConeSectionSpec c;
+  static_cast<FeExperimentBase&>(c) = std::move(base);
+  const scene::ConeScene& cone = *cone_data(*c.scene);
+  const int contours = static_cast<int>(scene::ConeTrack(scene::cone_scene_path(cone)).contours().size());
+  c.contour = section_contour(e, c.scene->name(), contours);
+  c.x = e.string("x", "r");
+  c.y = e.string("y", "z");
+  if (!is_cone_section_abscissa(c.x)) e.fail("x", "not an abscissa of a cone section (known: r, r0)");
+  if (!is_cone_section_response(c.y)) e.fail("y", "not a column of a cone section (known: z, thickness)");
+  read_data(e, path, cone.clamp_radius, &c);
+  return make_cone_section_experiment(std::move(c));
+}
+
+}  // namespace spifit::inverse
