@@ -141,8 +141,14 @@ class ScalarTableExperiment final : public Experiment {
     sqrt_w_ = c.sqrt_weights;
   }
   int num_residuals() const override { return static_cast<int>(s_.ys.size()); }
-  bool residuals(const ParameterPoint& p, double* r) const override { return eval(p.material, r, nullptr); }
-  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override { return eval(m, r, nullptr); }
+  bool residuals(const ParameterPoint& p, double* r) const override {
+    count_evaluation();
+    return eval(p.material, r, nullptr);
+  }
+  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override {
+    count_evaluation();
+    return eval(m, r, nullptr);
+  }
   ExperimentCurve axes() const override { return {s_.x, s_.observable, s_.x_unit, s_.y_unit, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{s_.x, s_.observable, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};

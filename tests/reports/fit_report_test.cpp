@@ -86,6 +86,17 @@ class FitReportTest : public ::testing::Test {
     std::error_code ec;
     fs::remove_all(root_, ec);
   }
+  // The output of another bundled fit, run here into its own directory; per_experiment as given.
+  static fs::path own_fit(const std::string& name, const std::string& fit_file, bool per_experiment) {
+    const fs::path d = root_ / name;
+    fs::remove_all(d);
+    auto problem = inverse::read_fit_file(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/" + fit_file);
+    problem.per_experiment = per_experiment;
+    const auto result = inverse::run_fit(problem, {"", 2});
+    EXPECT_TRUE(result.usable) << result.termination;
+    inverse::write_fit_outputs(problem, result, io::OutputDirectory::prepare(d.string(), false));
+    return d;
+  }
   // A copy of the fit output to modify.
   static fs::path copy_of_fit(const std::string& name) {
     const fs::path d = root_ / name;
@@ -348,9 +359,10 @@ TEST_F(FitReportTest, MultiStartSectionAndSpreadNote) {
 }
 
 // The forward runs per experiment (evaluations; a material-point fit has no scene runs) and the
-// share of each parameter's Fisher information per experiment, as fit.json gives them.
+// share of each parameter's Fisher information per experiment, as fit.json gives them (fit_classic
+// without the per-experiment sub-fits, whose evaluations forward_runs would count too).
 TEST_F(FitReportTest, ForwardRunsAndInformationSharesAsInFitJson) {
-  const fs::path d = copy_of_fit("runs");
+  const fs::path d = own_fit("runs", "fit_classic.toml", false);
   reports::render_fit_report(d, {false});
   const std::string md = slurp(d / "report.md");
   const json j = json::parse(slurp(d / "fit.json"));
@@ -383,7 +395,7 @@ TEST_F(FitReportTest, ForwardRunsAndInformationSharesAsInFitJson) {
     EXPECT_NEAR(sum, 1.0, 1e-12) << q;
   }
   for (const auto& e : j["experiments"]) {
-    if (e["kind"] == "scalar") {
+    if (e["kind"] == "scalar" || e["kind"] == "scalar_table") {
       EXPECT_LT(e["information_share"]["swift.K"].get<double>(), 1e-12) << e["name"];
     }
   }
@@ -408,10 +420,10 @@ TEST_F(FitReportTest, OlderFitJsonWithoutRunsOrShares) {
 // An FE scene's scalar observable (kind fe_scalar, e.g. peak_fz in N) is reported like a
 // material point's scalar: a row of the scalar table and a bar, no curve plots.
 TEST_F(FitReportTest, FeScalarsAreScalars) {
-  const fs::path d = copy_of_fit("fe_scalar");
+  const fs::path d = own_fit("fe_scalar", "fit_n_conflict.toml", false);  // the scalar r45 and a shear curve
   json j = json::parse(slurp(d / "fit.json"));
   for (auto& e : j["experiments"]) {
-    if (e["name"] != "r90") continue;
+    if (e["name"] != "r45") continue;
     e["kind"] = "fe_scalar";
     e["y"] = "peak_fz";
     e["y_unit"] = "N";
@@ -419,10 +431,10 @@ TEST_F(FitReportTest, FeScalarsAreScalars) {
   write(d / "fit.json", j.dump(2));
   reports::render_fit_report(d, {false});
   const std::string md = slurp(d / "report.md");
-  const auto row = md_row(test::md_section(md, "### Scalar experiments"), "r90");
+  const auto row = md_row(test::md_section(md, "### Scalar experiments"), "r45");
   ASSERT_EQ(row.size(), 7u) << md;
   EXPECT_EQ(row[1], "peak_fz [N]");
-  EXPECT_EQ(test::md_section(md, "## Curves: data and fit").find("### r90"), std::string::npos);
+  EXPECT_EQ(test::md_section(md, "## Curves: data and fit").find("### r45"), std::string::npos);
 }
 
 // A real conflict (fit_n_conflict: r45 and the shear curve disagree on Hill's N; each
