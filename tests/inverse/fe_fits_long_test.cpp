@@ -53,13 +53,14 @@ TEST(FeFitsLong, AfIndentRecoversC7) { (void)expect_card_recovered("fit_af_inden
 TEST(FeFitsLong, ZieglerIndentRecoversC8) { (void)expect_card_recovered("fit_ziegler_indent.toml", "aa3003o_c8_ziegler_shell.toml"); }
 
 // Swift K and n from the section at C of the line test's first stage (C.3 + C.4, 0.02 mm noise):
-// both inside their intervals, and the shape sees them as one flow stress (correlation beyond
-// -0.8; the +10 % changes of K and n move the section along directions with cosine -0.93).
+// both inside their intervals, and the shape sees them as one flow stress: +10 % of K and of n
+// move the section along directions with cosine -0.93, so a larger K is made up for by a larger
+// n and their estimates correlate positively (0.94 measured; asserted above 0.8).
 TEST(FeFitsLong, SectionRecoversSwift) {
   const auto r = expect_card_recovered("fit_section_line.toml", "aa3003o_c3c4.toml");
   ASSERT_EQ(r.uncertainty.correlation.rows(), 2);
   std::printf("  correlation K-n %.3f\n", r.uncertainty.correlation(0, 1));
-  EXPECT_LT(r.uncertainty.correlation(0, 1), -0.8);
+  EXPECT_GT(r.uncertainty.correlation(0, 1), 0.8);
 }
 
 // A friction fit: mu inside its 95 % interval and within 2e-3 of the generating value.
