@@ -10,7 +10,32 @@ namespace spifit::inverse {
 
 namespace {
 
-class CurveExperiment final : public Experiment {
+// A material-point experiment: its residuals, with doubles or Jets, come from Derived::eval(card,
+// residuals, simulated values or null), each call counted; curves and tables keep the weights of
+// their conditioning.
+template <typename Derived>
+class MaterialPointExperiment : public Experiment {
+ public:
+  bool residuals(const ParameterPoint& p, double* r) const override {
+    count_evaluation();
+    return static_cast<const Derived&>(*this).eval(p.material, r, nullptr);
+  }
+  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override {
+    count_evaluation();
+    return static_cast<const Derived&>(*this).eval(m, r, nullptr);
+  }
+
+ protected:
+  void condition(const std::vector<double>& ys, double noise, double noise_relative, double weight, const std::vector<double>& point_weights) {
+    const CurveConditioning c = curve_conditioning(ys, noise, noise_relative, weight, point_weights);
+    scale_ = c.scale;
+    noise_given_ = c.noise_given;
+    sqrt_w_ = c.sqrt_weights;
+  }
+  std::vector<double> sqrt_w_;
+};
+
+class CurveExperiment final : public MaterialPointExperiment<CurveExperiment> {
  public:
   explicit CurveExperiment(CurveExperimentSpec s) : s_(std::move(s)) {
     s_.scene.setup.want_r_value = false;  // a curve needs neither side run
@@ -18,20 +43,9 @@ class CurveExperiment final : public Experiment {
     name_ = s_.name;
     kind_ = "curve";
     weight_ = s_.weight;
-    const CurveConditioning c = curve_conditioning(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
-    scale_ = c.scale;
-    noise_given_ = c.noise_given;
-    sqrt_w_ = c.sqrt_weights;
+    condition(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
   }
   int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
-  bool residuals(const ParameterPoint& p, double* r) const override {
-    count_evaluation();
-    return eval(p.material, r, nullptr);
-  }
-  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override {
-    count_evaluation();
-    return eval(m, r, nullptr);
-  }
   ExperimentCurve axes() const override { return {s_.x, s_.y, s_.x_unit, s_.y_unit, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{s_.x, s_.y, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
@@ -42,6 +56,7 @@ class CurveExperiment final : public Experiment {
   }
 
  private:
+  friend class MaterialPointExperiment<CurveExperiment>;
   template <typename T>
   bool eval(const material::MaterialParams<T>& m, T* r, std::vector<double>* simulated) const {
     const auto res = scene::run_material_point(m, s_.scene.setup);
@@ -64,7 +79,6 @@ class CurveExperiment final : public Experiment {
   }
 
   CurveExperimentSpec s_;
-  std::vector<double> sqrt_w_;
 };
 
 template <typename T>
@@ -83,7 +97,7 @@ std::optional<T> scalar_observable(const scene::MaterialPointResult<T>& r, const
   return std::nullopt;
 }
 
-class ScalarExperiment final : public Experiment {
+class ScalarExperiment final : public MaterialPointExperiment<ScalarExperiment> {
  public:
   explicit ScalarExperiment(ScalarExperimentSpec s) : s_(std::move(s)) {
     s_.scene.setup.want_r_value = s_.observable == "r_value";
@@ -95,14 +109,6 @@ class ScalarExperiment final : public Experiment {
     noise_given_ = s_.noise > 0;
   }
   int num_residuals() const override { return 1; }
-  bool residuals(const ParameterPoint& p, double* r) const override {
-    count_evaluation();
-    return eval(p.material, r, nullptr);
-  }
-  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override {
-    count_evaluation();
-    return eval(m, r, nullptr);
-  }
   ExperimentCurve axes() const override { return {"", s_.observable, "", "", {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{"", s_.observable, "", "", {0.0}, {s_.value}, {}};
@@ -112,6 +118,7 @@ class ScalarExperiment final : public Experiment {
   }
 
  private:
+  friend class MaterialPointExperiment<ScalarExperiment>;
   template <typename T>
   bool eval(const material::MaterialParams<T>& m, T* r, double* simulated) const {
     const auto res = scene::run_material_point(m, s_.scene.setup);
@@ -125,7 +132,7 @@ class ScalarExperiment final : public Experiment {
   ScalarExperimentSpec s_;
 };
 
-class ScalarTableExperiment final : public Experiment {
+class ScalarTableExperiment final : public MaterialPointExperiment<ScalarTableExperiment> {
  public:
   explicit ScalarTableExperiment(ScalarTableExperimentSpec s) : s_(std::move(s)) {
     for (auto& setup : s_.setups) {
@@ -135,20 +142,9 @@ class ScalarTableExperiment final : public Experiment {
     name_ = s_.name;
     kind_ = "scalar_table";
     weight_ = s_.weight;
-    const CurveConditioning c = curve_conditioning(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
-    scale_ = c.scale;
-    noise_given_ = c.noise_given;
-    sqrt_w_ = c.sqrt_weights;
+    condition(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
   }
   int num_residuals() const override { return static_cast<int>(s_.ys.size()); }
-  bool residuals(const ParameterPoint& p, double* r) const override {
-    count_evaluation();
-    return eval(p.material, r, nullptr);
-  }
-  bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const override {
-    count_evaluation();
-    return eval(m, r, nullptr);
-  }
   ExperimentCurve axes() const override { return {s_.x, s_.observable, s_.x_unit, s_.y_unit, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
     ExperimentCurve c{s_.x, s_.observable, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
@@ -158,6 +154,7 @@ class ScalarTableExperiment final : public Experiment {
   }
 
  private:
+  friend class MaterialPointExperiment<ScalarTableExperiment>;
   template <typename T>
   bool eval(const material::MaterialParams<T>& m, T* r, std::vector<double>* simulated) const {
     for (std::size_t i = 0; i < s_.setups.size(); ++i) {
@@ -171,7 +168,6 @@ class ScalarTableExperiment final : public Experiment {
     return true;
   }
   ScalarTableExperimentSpec s_;
-  std::vector<double> sqrt_w_;
 };
 
 }  // namespace

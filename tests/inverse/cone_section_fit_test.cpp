@@ -8,6 +8,7 @@
 #include "inverse/cone_section_experiment.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/scan_section.hpp"
+#include "tests/support/input_errors.hpp"
 #include "tests/support/temp_files.hpp"
 #include "tests/support/tiny_scenes.hpp"
 
@@ -185,12 +186,7 @@ TEST(ConeCentreDepth, IsTheLastStageRowAndAScalarOfAFit) {
 }
 
 std::string read_error(const fs::path& f) {
-  try {
-    inverse::read_fit_file(f.string());
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::input_error_of([&] { inverse::read_fit_file(f.string()); });
 }
 
 // Each error names the file, the key and the value (a data file's errors: the data file and the

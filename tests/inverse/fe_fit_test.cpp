@@ -8,6 +8,7 @@
 #include "inverse/numeric_cost.hpp"
 #include "inverse/run_fit.hpp"
 #include "inverse/synthetic.hpp"
+#include "tests/support/input_errors.hpp"
 #include "tests/support/temp_files.hpp"
 #include "tests/support/tiny_scenes.hpp"
 
@@ -92,12 +93,7 @@ fs::path write_fit(const std::string& text) {
 }
 
 std::string read_error(const fs::path& f) {
-  try {
-    inverse::read_fit_file(f.string());
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return test::input_error_of([&] { inverse::read_fit_file(f.string()); });
 }
 
 TEST(FeFitFile, InputErrorsNameFileKeyAndValue) {

@@ -6,6 +6,7 @@
 #include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
 #include "inverse/sweep.hpp"
+#include "tests/support/input_errors.hpp"
 
 #include <gtest/gtest.h>
 
@@ -84,12 +85,7 @@ std::vector<ForceRow> read_force_csv(const fs::path& f, double feed) {
 
 // The message of the InputError thrown by read_sweep_file (empty when none is thrown).
 std::string read_error(const fs::path& f) {
-  try {
-    inverse::read_sweep_file(f.string());
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error_of([&] { inverse::read_sweep_file(f.string()); }, "");
 }
 
 }  // namespace

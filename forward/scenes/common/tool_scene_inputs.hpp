@@ -50,7 +50,7 @@ void add_solver_inputs(io::InputTable<Scene>& t) {
             return true;
           }});
   t.text({"solver.tangent", {}, "", {}, {"auto", "exact", "symmetrised"},
-          "a sliding-friction tangent: its symmetric part with CHOLMOD (auto: while friction <= 0.2) or exact with UMFPACK", false},
+          "a non-symmetric tangent (friction, kinematic hardening): its symmetric part with CHOLMOD (auto: while friction <= 0.2) or exact with UMFPACK", false},
          {[](const Scene& s) -> std::string { return to_string(s.tangent); },
           [](Scene& s, const std::string& v) { return friction_tangent_from_string(v, &s.tangent); }});
   t.boolean({"solver.extrapolate", {}, "", {}, {}, "start each increment from the previous increment's displacement, scaled", false},
