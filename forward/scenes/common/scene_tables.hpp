@@ -33,10 +33,10 @@ struct InputViolation {
   std::string text() const;  // "key = value: message"; "" for none
 };
 
-// [solver] tangent: how a tangent made non-symmetric by sliding friction is factorised. auto:
-// its symmetric part with CHOLMOD while the friction coefficient is at most
-// kSymmetrisedTangentFriction, else exact (NewtonOptions::symmetric_tangent; the measurements
-// behind the rule are in docs/contact.md, "Friction tangent").
+// [solver] tangent: how a tangent made non-symmetric (by sliding friction or kinematic
+// hardening) is factorised. auto: its symmetric part with CHOLMOD while the friction coefficient
+// is at most kSymmetrisedTangentFriction, else exact (NewtonOptions::symmetric_tangent; the
+// measurements behind the rule are in docs/contact.md, "Friction tangent").
 enum class FrictionTangent { automatic, exact, symmetrised };
 inline constexpr double kSymmetrisedTangentFriction = 0.2;
 std::string to_string(FrictionTangent t);
