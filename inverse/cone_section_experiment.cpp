@@ -4,6 +4,7 @@
 #include "forward/scenes/cone/cone_observables.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
 #include "forward/scenes/scene_registry.hpp"
+#include "inverse/fe_experiment_file.hpp"
 #include "inverse/measurement.hpp"
 
 #include <algorithm>
@@ -61,26 +62,12 @@ void read_noise_column(const io::TomlTable& e, const MeasurementTable& t, const 
 
 // The measured (x, y): x strictly increasing inside [0, clamp radius]; y in mm; point weights.
 void read_data(const io::TomlTable& e, const std::string& path, double clamp_radius, ConeSectionSpec* c) {
-  const std::string data_path = resolve_path(path, e.string("data"));
-  const MeasurementTable t = read_measurement_csv(data_path);
-  c->xs = t.column(c->x);
-  c->ys = t.column(c->y);
-  if (!t.units.at(c->y).empty() && t.units.at(c->y) != "mm") e.fail("data", "column " + c->y + " is in " + t.units.at(c->y) + "; sections are compared in mm");
-  if (c->xs.empty()) throw InputError(data_path, "column " + c->x, "", "no data rows");
-  for (std::size_t i = 0; i < c->xs.size(); ++i) {
-    const double x = c->xs[i];
-    if (i > 0 && !(x > c->xs[i - 1]))
-      throw InputError(data_path, "column " + c->x, format_number(x), "abscissa must increase strictly (row " + std::to_string(i + 1) + ")");
-    if (!(x >= 0.0 && x <= clamp_radius + 1e-9))
-      throw InputError(data_path, "column " + c->x, format_number(x),
-                       "outside the simulated section [0, " + format_number(clamp_radius) + "] mm (from the axis to the clamp)");
-  }
-  if (e.has("weight_column")) {
-    c->point_weights = t.column(e.string("weight_column"));
-    for (double w : c->point_weights)
-      if (!(w >= 0)) throw InputError(data_path, "column " + e.string("weight_column"), format_number(w), "point weights must be >= 0");
-  }
-  if (e.has("noise_column")) read_noise_column(e, t, data_path, c);
+  CurveData d = read_curve_data(e, path, c->x, c->y, 0.0, clamp_radius, "mm (from the axis to the clamp)");
+  if (!d.y_unit.empty() && d.y_unit != "mm") e.fail("data", "column " + c->y + " is in " + d.y_unit + "; sections are compared in mm");
+  c->xs = std::move(d.xs);
+  c->ys = std::move(d.ys);
+  c->point_weights = std::move(d.weights);
+  if (e.has("noise_column")) read_noise_column(e, d.table, d.data_path, c);
 }
 
 }  // namespace
@@ -120,8 +107,7 @@ std::unique_ptr<Experiment> read_cone_section_experiment(const io::TomlTable& e,
   ConeSectionSpec c;
   static_cast<FeExperimentBase&>(c) = std::move(base);
   const scene::ConeScene& cone = *cone_data(*c.scene);
-  const int contours = static_cast<int>(scene::ConeTrack(scene::cone_scene_path(cone)).contours().size());
-  c.contour = section_contour(e, c.scene->name(), contours);
+  c.contour = section_contour(e, c.scene->name(), c.scene->contours());
   c.x = e.string("x", "r");
   c.y = e.string("y", "z");
   if (!is_cone_section_abscissa(c.x)) e.fail("x", "not an abscissa of a cone section (known: r, r0)");

@@ -209,7 +209,7 @@ TEST(ConeSectionFitFile, InputErrorsNameFileKeyAndValue) {
       {scene, "section = \"last\"\nx = \"theta\"\n" + d, "FIT", "experiment[0].x = \"theta\": not an abscissa of a cone section (known: r, r0)"},
       {scene, "section = \"last\"\ny = \"depth\"\n" + d, "FIT", "experiment[0].y = \"depth\": not a column of a cone section (known: z, thickness)"},
       {scene, "section = \"last\"\ndata = \"" + wide.string() + "\"\n", wide.string(),
-       "column r = 14: outside the simulated section [0, 13.5] mm (from the axis to the clamp)"},
+       "column r = 14: outside the simulated range [0, 13.5] mm (from the axis to the clamp)"},
       {scene, "section = \"last\"\nnoise_column = \"std\"\nnoise = 0.01\n" + d, "FIT",
        "experiment[0].noise = 0.01: noise_column gives each point's standard deviation; take one of them"},
       {scene, "section = \"last\"\nnoise_column = \"std\"\ndata = \"" + flat.string() + "\"\n", flat.string(),
