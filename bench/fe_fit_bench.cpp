@@ -6,6 +6,7 @@
 // - fit_fe: the bundled FE fits end to end, three times each (median, min): wall time,
 //   iterations, scene runs and the largest relative deviation of the fitted values from the
 //   generating card or friction.
+#include "bench/fit_runs.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/run_fit.hpp"
 
@@ -74,17 +75,9 @@ void fit_fe(benchmark::State& state, const std::string& fit, const std::string& 
   const auto generating = material::load_material_card(src("materials/" + card));
   inverse::FitRunOptions o;
   o.threads = 2;
-  inverse::FitResult r;
-  for (auto _ : state) {
-    r = inverse::run_fit(fp, o);
-    benchmark::DoNotOptimize(r.values.data());
-  }
-  double dev = 0.0;
-  for (int k = 0; k < fp.parameters->num_free(); ++k) {
-    const auto& s = fp.parameters->specs()[fp.parameters->free_indices()[k]];
-    const double t = s.scene_input ? truth : inverse::parameter_value(generating, s.name);
-    dev = std::max(dev, std::abs(r.values[k] / t - 1.0));
-  }
+  const inverse::FitResult r = bench::run_fit_each_iteration(state, fp, o);
+  const double dev = bench::largest_relative_deviation(
+      fp, r, [&](const inverse::ParameterSpec& s) { return s.scene_input ? truth : inverse::parameter_value(generating, s.name); });
   state.counters["iterations"] = r.iterations;
   state.counters["scene_runs"] = static_cast<double>(r.scene_runs);
   state.counters["failed_runs"] = static_cast<double>(r.failed_runs.size());

@@ -4,6 +4,7 @@
 // the generating card C.2 (data are synthetic); without and with the per-experiment conflict
 // check that fit files of material points run by default (each experiment fitted alone after).
 #include "inverse/run_fit.hpp"
+#include "bench/fit_runs.hpp"
 #include "inverse/fit_file.hpp"
 
 #include <benchmark/benchmark.h>
@@ -16,16 +17,8 @@ static void fit_classic(benchmark::State& state) {
   const auto truth = material::load_material_card(std::string(SPIFIT_SOURCE_DIR) + "/materials/aa3003o_c2.toml");
   inverse::FitRunOptions o;
   o.threads = static_cast<int>(state.range(0));
-  inverse::FitResult r;
-  for (auto _ : state) {
-    r = inverse::run_fit(fp, o);
-    benchmark::DoNotOptimize(r.values.data());
-  }
-  double dev = 0.0;
-  for (int k = 0; k < fp.parameters->num_free(); ++k) {
-    const auto& name = fp.parameters->specs()[fp.parameters->free_indices()[k]].name;
-    dev = std::max(dev, std::abs(r.values[k] / inverse::parameter_value(truth, name) - 1.0));
-  }
+  const inverse::FitResult r = bench::run_fit_each_iteration(state, fp, o);
+  const double dev = bench::largest_relative_deviation(fp, r, [&](const inverse::ParameterSpec& s) { return inverse::parameter_value(truth, s.name); });
   state.counters["iterations"] = r.iterations;
   state.counters["forward_runs"] = static_cast<double>(r.forward_runs);
   state.counters["max_rel_dev_from_C2"] = dev;
