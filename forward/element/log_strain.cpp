@@ -43,6 +43,7 @@ struct ChainInputs {
 void chain(const ChainInputs& in, double pm, double pd, double pmm, double pmd, double pdd, Eigen::Vector3d* grad,
            Eigen::Matrix3d* hess) {
   *grad = pm * in.grad_m + pd * in.grad_d;
+  if (!hess) return;
   const Eigen::Matrix3d cross = in.grad_m * in.grad_d.transpose();
   *hess = pmm * in.grad_m * in.grad_m.transpose() + pmd * (cross + cross.transpose()) +
           pdd * in.grad_d * in.grad_d.transpose() + pd * in.hess_d;
@@ -50,7 +51,7 @@ void chain(const ChainInputs& in, double pm, double pd, double pmm, double pmd, 
 
 }  // namespace
 
-LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green) {
+LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green, bool second) {
   // Closed-form chain rule through the invariants m = tr C / 2 and D = det C (log_strain.hpp):
   // eps = ((a + b C11) / 2, (a + b C22) / 2, b C12) with a = ln(D) / 2 - f(y), b = f(y) / m,
   // y = 1 - D / m^2. The second derivatives are about ten times cheaper than nested Jets.
@@ -71,8 +72,8 @@ LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green) {
   in.hess_d << 0.0, 4.0, 0.0, 4.0, 0.0, 0.0, 0.0, 0.0, -2.0;
   Eigen::Vector3d ga, gb;
   Eigen::Matrix3d ha, hb;
-  chain(in, -fm, 0.5 / det - fd, -fmm, -fmd, -0.5 / (det * det) - fdd, &ga, &ha);
-  chain(in, fm / m - f.f / m2, fd / m, fmm / m - 2.0 * fm / m2 + 2.0 * f.f / m3, fmd / m - fd / m2, fdd / m, &gb, &hb);
+  chain(in, -fm, 0.5 / det - fd, -fmm, -fmd, -0.5 / (det * det) - fdd, &ga, second ? &ha : nullptr);
+  chain(in, fm / m - f.f / m2, fd / m, fmm / m - 2.0 * fm / m2 + 2.0 * f.f / m3, fmd / m - fd / m2, fdd / m, &gb, second ? &hb : nullptr);
 
   LogStrain out;
   out.value << 0.5 * (a + b * c11), 0.5 * (a + b * c22), b * c12;
@@ -83,8 +84,9 @@ LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green) {
   for (int i = 0; i < 3; ++i) {
     const double s = scale[i];
     const Eigen::Vector3d ga_i = i < 2 ? ga : Eigen::Vector3d::Zero();
-    const Eigen::Matrix3d ha_i = i < 2 ? ha : Eigen::Matrix3d::Zero();
     out.first.row(i) = (s * (ga_i + cv[i] * gb + b * dc[i])).transpose();
+    if (!second) continue;
+    const Eigen::Matrix3d ha_i = i < 2 ? ha : Eigen::Matrix3d::Zero();
     const Eigen::Matrix3d cross = gb * dc[i].transpose();
     out.second[static_cast<std::size_t>(i)] = s * (ha_i + cv[i] * hb + cross + cross.transpose());
   }

@@ -58,10 +58,11 @@ Eigen::Matrix<T, 3, 1> log_strain_of_green(const Eigen::Matrix<T, 3, 1>& green) 
 struct LogStrain {
   Eigen::Vector3d value;                // eps
   Eigen::Matrix3d first;                // d eps_i / d E_j
-  std::array<Eigen::Matrix3d, 3> second;  // second[i](j, k) = d2 eps_i / dE_j dE_k
+  std::array<Eigen::Matrix3d, 3> second{Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero(), Eigen::Matrix3d::Zero()};  // second[i](j, k) = d2 eps_i / dE_j dE_k
 };
 
-// Value and first and second derivatives in closed form. Requires det C > 0 (checked by callers).
-LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green);
+// Value and first and second derivatives in closed form (second = false: `second` left zero, for
+// a residual without tangent). Requires det C > 0 (checked by callers).
+LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green, bool second = true);
 
 }  // namespace spifit::element

@@ -46,11 +46,14 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
       status.suggested_scale = 0.25;
       return status;
     }
-    const LogStrain ls = log_strain_with_derivatives(green);
+    const LogStrain ls = log_strain_with_derivatives(green, tangent != nullptr);
     eps_trial_[l] = ls.value;
     Eigen::Matrix3d ct;
     const Vec3 d_eps = ls.value - eps_[l];
-    const material::UpdateResult r = points_[l].update(d_eps, tangent ? &ct : nullptr);
+    // The consistent tangent even for a residual alone: commit() keeps it for the next
+    // increment's start (below), so a converged iterate assembled without the element tangent
+    // (NewtonSolver::increment) leaves the same state as one assembled with it.
+    const material::UpdateResult r = points_[l].update(d_eps, &ct);
     if (!r.ok()) {
       status.ok = false;
       status.layer = static_cast<int>(l);
@@ -58,12 +61,10 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
       status.suggested_scale = r.suggested_scale;
       return status;
     }
-    if (tangent) {
-      // Start of an increment (no strain change beyond round-off): the last converged
-      // consistent tangent instead of the elastic one.
-      if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_[l].cwiseAbs().maxCoeff())) ct = tangent_[l];
-      tangent_trial_[l] = ct;
-    }
+    // Start of an increment (no strain change beyond round-off): the last converged
+    // consistent tangent instead of the elastic one.
+    if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_[l].cwiseAbs().maxCoeff())) ct = tangent_[l];
+    tangent_trial_[l] = ct;
     const Vec3& t = points_[l].trial().stress;
     const Vec3 s = ls.first.transpose() * t;
     if (resultant) {
@@ -106,7 +107,7 @@ void ShellSection::commit() {
   if (h_new != h_) {
     h_ = h_new;
     for (std::size_t l = 0; l < points_.size(); ++l)
-      eps_[l] = eps_trial_[l] = log_strain_with_derivatives(e_trial_ + rule_->zeta[l] * 0.5 * h_ * kappa_trial_).value;
+      eps_[l] = eps_trial_[l] = log_strain_with_derivatives(e_trial_ + rule_->zeta[l] * 0.5 * h_ * kappa_trial_, false).value;
   }
 }
 

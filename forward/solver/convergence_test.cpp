@@ -41,6 +41,14 @@ Verdict ConvergenceTest::check(int iteration, double rel, double step, double in
   return Verdict::next_iteration;
 }
 
+bool ConvergenceTest::likely_final(double rel, double previous_rel, double step, double increment_norm) const {
+  if (!(previous_rel > 0.0) || options_.linear) return false;
+  const double rate = rel / previous_rel;
+  if (!(rate < 1.0) || rel * rate > options_.force_tolerance) return false;
+  const double displacement = options_.displacement_tolerance * increment_norm;
+  return step <= displacement || (options_.estimate_next_correction && step * rate <= displacement);
+}
+
 std::string ConvergenceTest::failure_reason(Verdict v, int iteration, double rel) const {
   char buf[160];
   switch (v) {

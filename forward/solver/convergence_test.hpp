@@ -44,6 +44,14 @@ class ConvergenceTest {
   // (converged, estimated, force_only), then the divergence rule.
   Verdict check(int iteration, double rel, double step, double increment_norm, const NextCorrection& next) const;
 
+  // Whether the iterate that a correction of norm `step` leads to will likely be accepted: its
+  // residual extrapolated at the last rate (rel x rel / previous_rel; previous_rel <= 0: none
+  // yet) passes the force test, and the correction (or, with estimate_next_correction, the next
+  // one extrapolated at the same rate) the displacement test against increment_norm, a lower
+  // bound of the increment's norm there. Conservative for quadratic convergence; the solver
+  // then assembles that iterate's residual without the tangent (NewtonSolver::increment).
+  bool likely_final(double rel, double previous_rel, double step, double increment_norm) const;
+
   // Why the increment failed: diverged, diverging, or (next_iteration) no convergence within
   // max_iterations.
   std::string failure_reason(Verdict v, int iteration, double rel) const;

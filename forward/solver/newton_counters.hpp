@@ -18,6 +18,9 @@ struct NewtonCounters {
   // Wall seconds by phase, over the solver's life (profile, not results): parallel element
   // evaluation, serial assembly in element order, factorisation and solve.
   double element_seconds = 0.0, scatter_seconds = 0.0, linear_seconds = 0.0;
+  // Assemblies of the residual with and without the tangent, and how often an iterate predicted
+  // to end its increment did not (its tangent then assembled after all: NewtonSolver::increment).
+  int tangent_assemblies = 0, residual_assemblies = 0, tangent_reassemblies = 0;
 
   int factorisations() const { return cholmod_factorisations + umfpack_factorisations; }
 };

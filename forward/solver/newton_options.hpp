@@ -66,6 +66,10 @@ struct NewtonOptions {
   // to the tolerances; the iterations lose their quadratic rate in the friction terms. Where
   // CHOLMOD finds the symmetric part not positive definite, UMFPACK factorises the exact K.
   bool symmetric_tangent = false;
+  // An iterate likely to end its increment (ConvergenceTest::likely_final) is assembled without
+  // the tangent, which follows only if it does not end it. The iterates are the same either
+  // way; false assembles every tangent (the comparison in the tests).
+  bool skip_final_tangent = true;
   int element_chunk = 2048;    // elements evaluated in parallel before scattering
   // Linear analysis: one increment, one solve from the reference state, no equilibrium
   // iterations (patch tests and the linear benchmarks).

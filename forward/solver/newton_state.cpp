@@ -3,6 +3,7 @@
 #include "forward/io/binary_archive.hpp"
 
 #include <cmath>
+#include <initializer_list>
 #include <string>
 
 namespace spifit::solver {
@@ -22,9 +23,22 @@ void save_newton_state(io::BinaryWriter& w, const NewtonState& s) {
   w.f64(s.damping);
   for (int n : {s.stabilised_left, c.stabilised_increments}) w.i64(n);
   for (double v : {c.viscous_work, c.max_viscous_force}) w.f64(v);
+  w.section("assemblies");
+  for (int n : {c.tangent_assemblies, c.residual_assemblies, c.tangent_reassemblies}) w.i64(n);
 }
 
-NewtonState load_newton_state(io::BinaryReader& r, bool with_stabilisation) {
+namespace {
+// Counters are ints stored as i64: a value outside [0, 2e9] is a damaged archive.
+void read_counters(io::BinaryReader& r, std::initializer_list<int*> counters, const char* what) {
+  for (int* n : counters) {
+    const std::int64_t v = r.i64();
+    if (v < 0 || v > 2'000'000'000) throw io::ArchiveError(std::string("invalid ") + what + " counter " + std::to_string(v));
+    *n = static_cast<int>(v);
+  }
+}
+}  // namespace
+
+NewtonState load_newton_state(io::BinaryReader& r) {
   r.section("newton_state");
   NewtonState s;
   s.lambda = r.f64();
@@ -33,27 +47,20 @@ NewtonState load_newton_state(io::BinaryReader& r, bool with_stabilisation) {
   s.last_increment = r.vector();
   s.last_increment_size = r.f64();
   NewtonCounters& c = s.counters;
-  for (int* n : {&c.increments, &c.iterations, &c.cutbacks, &c.cholmod_factorisations, &c.umfpack_factorisations, &c.symbolic_analyses}) {
-    const std::int64_t v = r.i64();
-    if (v < 0 || v > 2'000'000'000) throw io::ArchiveError("invalid Newton counter " + std::to_string(v));
-    *n = static_cast<int>(v);
-  }
+  read_counters(r, {&c.increments, &c.iterations, &c.cutbacks, &c.cholmod_factorisations, &c.umfpack_factorisations, &c.symbolic_analyses},
+                "Newton");
   c.element_seconds = r.f64();
   c.scatter_seconds = r.f64();
   c.linear_seconds = r.f64();
-  if (with_stabilisation) {
-    r.section("stabilisation");
-    s.damping = r.f64();
-    for (int* n : {&s.stabilised_left, &c.stabilised_increments}) {
-      const std::int64_t v = r.i64();
-      if (v < 0 || v > 2'000'000'000) throw io::ArchiveError("invalid stabilisation counter " + std::to_string(v));
-      *n = static_cast<int>(v);
-    }
-    c.viscous_work = r.f64();
-    c.max_viscous_force = r.f64();
-    if (!(s.damping >= 0.0 && std::isfinite(s.damping) && c.viscous_work >= 0.0 && c.max_viscous_force >= 0.0))
-      throw io::ArchiveError("invalid stabilisation state");
-  }
+  r.section("stabilisation");
+  s.damping = r.f64();
+  read_counters(r, {&s.stabilised_left, &c.stabilised_increments}, "stabilisation");
+  c.viscous_work = r.f64();
+  c.max_viscous_force = r.f64();
+  if (!(s.damping >= 0.0 && std::isfinite(s.damping) && c.viscous_work >= 0.0 && c.max_viscous_force >= 0.0))
+    throw io::ArchiveError("invalid stabilisation state");
+  r.section("assemblies");
+  read_counters(r, {&c.tangent_assemblies, &c.residual_assemblies, &c.tangent_reassemblies}, "assembly");
   if (!(std::isfinite(s.lambda) && s.increment > 0.0 && s.ceiling > 0.0)) throw io::ArchiveError("invalid Newton stepping state");
   return s;
 }

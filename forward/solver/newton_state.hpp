@@ -29,9 +29,8 @@ struct NewtonState {
   NewtonCounters counters;       // totals so far (NewtonSummary::counters)
 };
 
-// Bit-exact (forward/io/binary_archive.hpp); load throws io::ArchiveError. Archives written
-// before the stabilisation existed (with_stabilisation = false) hold none: it is off.
+// Bit-exact (forward/io/binary_archive.hpp); load throws io::ArchiveError.
 void save_newton_state(io::BinaryWriter& w, const NewtonState& s);
-NewtonState load_newton_state(io::BinaryReader& r, bool with_stabilisation = true);
+NewtonState load_newton_state(io::BinaryReader& r);
 
 }  // namespace spifit::solver

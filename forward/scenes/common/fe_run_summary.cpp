@@ -12,6 +12,7 @@ void add_fe_run_summary(nlohmann::json& j, const FeRunOutcome& run, const ToolFo
   j["cutbacks"] = c.cutbacks;
   j["factorisations"] = c.factorisations();
   j["factorisations_by_solver"] = {{"cholmod", c.cholmod_factorisations}, {"umfpack", c.umfpack_factorisations}};
+  j["assemblies"] = {{"with_tangent", c.tangent_assemblies}, {"residual_only", c.residual_assemblies}, {"tangent_after_all", c.tangent_reassemblies}};
   j["profile_seconds"] = {{"elements", c.element_seconds}, {"assembly", c.scatter_seconds}, {"linear_solver", c.linear_seconds}};
   // Increments accepted with viscous forces (NewtonOptions::stabilisation): their dissipated
   // work against the tool's work, and the largest out-of-balance one was accepted with.

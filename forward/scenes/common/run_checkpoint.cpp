@@ -15,7 +15,7 @@ namespace {
 constexpr char kKind[] = "fe-run-checkpoint";
 // Bump when the layout below, the model's or an observer's state, or the meaning of the stored
 // load factor changes.
-constexpr std::uint32_t kLayout = 2;  // 2: the cone's section points
+constexpr std::uint32_t kLayout = 3;  // 2: the cone's section points; 3: the Newton assembly counters
 
 void save_log(io::BinaryWriter& w, const RunLog& log) {
   w.section("run_log");

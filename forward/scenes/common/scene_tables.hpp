@@ -56,9 +56,27 @@ solver::NewtonOptions tool_newton_options(const Scene& s, double length) {
   o.force_tolerance = s.force_tolerance;
   o.displacement_tolerance = s.displacement_tolerance;
   o.divergence_after = s.divergence_after;
+  o.estimate_next_correction = s.estimate_next_correction;
+  o.stabilisation = s.stabilisation;
   if (s.linear_solver) o.linear_solver = *s.linear_solver;
   o.symmetric_tangent = symmetrised_tangent(s.tangent, s.contact.friction);
   return o;
+}
+
+// The [solver] fields of a tool scene as summary.json shows them.
+template <typename Scene>
+nlohmann::json tool_solver_json(const Scene& s) {
+  return {{"travel_per_increment", s.travel_per_increment},
+          {"max_iterations", s.max_iterations},
+          {"line_search", s.line_search},
+          {"extrapolate", s.extrapolate},
+          {"force_tolerance", s.force_tolerance},
+          {"displacement_tolerance", s.displacement_tolerance},
+          {"estimate_next_correction", s.estimate_next_correction},
+          {"divergence_after", s.divergence_after},
+          {"stabilisation", s.stabilisation},
+          {"tangent", to_string(s.tangent)},
+          {"symmetrised_tangent", symmetrised_tangent(s.tangent, s.contact.friction)}};
 }
 
 // The output options of a tool scene (any type with the [output] fields of tool_scene_inputs.hpp).

@@ -65,6 +65,10 @@ void add_solver_inputs(io::InputTable<Scene>& t) {
   t.integer({"solver.divergence_after", {}, "", Range::closed(0, 1000), {},
              "iterations before a growing residual cuts the increment back (0: never)", false},
             [](Scene& s) -> int& { return s.divergence_after; });
+  t.boolean({"solver.estimate_next_correction", {}, "", {}, {}, "accept an increment on the estimated next correction", false},
+            [](Scene& s) -> bool& { return s.estimate_next_correction; });
+  t.real({"solver.stabilisation", {}, "", Range::closed(0.0, 1.0), {}, "damping of an increment failing at the minimum increment (0: off)", false},
+         [](Scene& s) -> double& { return s.stabilisation; });
 }
 
 // [tool] radius, feed, spin on the fields `radius`, feed and spin.

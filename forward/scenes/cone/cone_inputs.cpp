@@ -74,10 +74,6 @@ void add_sheet(Table& t) {
 void add_solver_and_output(Table& t) {
   t.integer({"solver.move_increments", {}, "", Range::closed(0, 1000), {}, "increments per move between pie contours (0: by travel)", false},
             [](ConeScene& s) -> int& { return s.move_increments; });
-  t.boolean({"solver.estimate_next_correction", {}, "", {}, {}, "accept an increment on the estimated next correction", false},
-            [](ConeScene& s) -> bool& { return s.estimate_next_correction; });
-  t.real({"solver.stabilisation", {}, "", Range::closed(0.0, 1.0), {}, "damping of an increment failing at the minimum increment (0: off)", false},
-         [](ConeScene& s) -> double& { return s.stabilisation; });
   add_output_inputs(t, "completed contours");
   t.custom({"output.history_element", {}, "", {}, {}, "{ r = mm, theta = deg }: the element nearest to this point writes history.csv", false},
            InputType::table);

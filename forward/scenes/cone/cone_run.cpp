@@ -95,11 +95,8 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const mode
                {"contours", track.contours().size()}};
   j["tool"] = {{"radius", s.tool_radius}, {"feed", s.feed}, {"spin_rpm", s.spin}};
   j["contact"] = contact_json(s.contact);
-  j["solver"] = {{"travel_per_increment", s.travel_per_increment}, {"move_increments", s.move_increments},
-                 {"line_search", s.line_search},                   {"extrapolate", s.extrapolate},
-                 {"estimate_next_correction", s.estimate_next_correction}, {"divergence_after", s.divergence_after},
-                 {"stabilisation", s.stabilisation},               {"tangent", to_string(s.tangent)},
-                 {"symmetrised_tangent", symmetrised_tangent(s.tangent, s.contact.friction)}};
+  j["solver"] = tool_solver_json(s);
+  j["solver"]["move_increments"] = s.move_increments;
   j["warnings"] = warnings;
   return j;
 }
@@ -127,8 +124,6 @@ FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
   f.time_of_travel = [length, duration](double travel) { return travel / length * duration; };
   f.constraints = [&scene](model::ShellModel& m) { return cone_constraints(scene, &m); };
   f.newton = tool_newton_options(scene, map.map.effective_length());
-  f.newton.estimate_next_correction = scene.estimate_next_correction;
-  f.newton.stabilisation = scene.stabilisation;
   f.newton.breakpoints = map.breakpoints;
   for (std::size_t k = 0; k < track.contours().size(); ++k) {
     const ContourSpan& c = track.contours()[k];

@@ -92,8 +92,7 @@ nlohmann::json forming_inputs(const FormingScene& s, const model::ShellModel& mo
                 {"thickness", s.thickness}, {"length", s.length}, {"thickness_points", s.thickness_points}};
   j["tool"] = {{"radius", s.radius}, {"travel", length}, {"feed", s.feed}, {"spin_rpm", s.spin}, {"gcode", s.gcode}};
   j["contact"] = contact_json(s.contact);
-  j["solver"] = {{"travel_per_increment", s.travel_per_increment}, {"tangent", to_string(s.tangent)},
-                 {"symmetrised_tangent", symmetrised_tangent(s.tangent, s.contact.friction)}};
+  j["solver"] = tool_solver_json(s);
   j["warnings"] = model.warnings();
   return j;
 }

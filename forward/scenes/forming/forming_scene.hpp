@@ -47,6 +47,8 @@ struct FormingScene {
   // saved 13 % of the iterations against 1e-7 (docs/contact.md).
   double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
   int divergence_after = solver::NewtonOptions{}.divergence_after;  // the solver's 3
+  bool estimate_next_correction = false;  // NewtonOptions; the measured trade: docs/contact.md, "Newton tolerances"
+  double stabilisation = 0.0;             // NewtonOptions: damping of an increment failing at the minimum increment
   std::optional<solver::LinearSolverKind> linear_solver;
   FrictionTangent tangent = FrictionTangent::automatic;  // [solver] tangent (scene_tables.hpp)
   // Output.
