@@ -111,16 +111,23 @@ void strain_operator(const Point& pg, const Point& ps, const std::array<Tying, 4
 // Tangent of one Gauss point added to kp: material part B^T D B with D = diag(d6, ks, ks), and
 // the geometric part (the second derivatives of e, kappa and gamma are scalars x identity)
 // from the section forces s6 and the shear forces Q.
+// symmetric: d6 is symmetric (no kinematic hardening), so B^T D B is, and only its node blocks
+// (I, J) with I <= J are added (the caller mirrors them: mirror_upper_blocks).
 template <class Point, class Tying>
 void add_point_tangent(const Point& pg, const Point& ps, const std::array<Tying, 4>& tying, const Vec6& s6,
                        const Mat6& d6, const Eigen::Vector2d& Q, double ks, const double (&c)[4],
-                       const Eigen::Matrix<double, 8, 24>& B, Mat24& kp) {
+                       const Eigen::Matrix<double, 8, 24>& B, bool symmetric, Mat24& kp) {
   // Coefficient-wise (lazy) products; at 24 x 8 x 24 Eigen's blocked GEMM spent more time
   // packing than multiplying.
   Eigen::Matrix<double, 8, 24> DB;
   DB.topRows<6>().noalias() = (pg.weight * d6).lazyProduct(B.topRows<6>());
   DB.bottomRows<2>() = (pg.weight * ks) * B.bottomRows<2>();
-  kp.noalias() += B.transpose().lazyProduct(DB);
+  if (symmetric) {
+    for (int I = 0; I < 4; ++I)
+      for (int J = I; J < 4; ++J) kp.block<6, 6>(6 * I, 6 * J).noalias() += B.middleCols<6>(6 * I).transpose().lazyProduct(DB.middleCols<6>(6 * J));
+  } else {
+    kp.noalias() += B.transpose().lazyProduct(DB);
+  }
   const Eigen::Vector2d qn = pg.K.transpose() * Q;  // Q . gamma = qn . gamma_nat
   for (int I = 0; I < 4; ++I) {
     for (int Jn = 0; Jn < 4; ++Jn) {
@@ -137,6 +144,12 @@ void add_point_tangent(const Point& pg, const Point& ps, const std::array<Tying,
       }
     }
   }
+}
+
+// The node blocks (J, I), J > I, of a symmetric 24 x 24 matrix from its blocks (I, J).
+void mirror_upper_blocks(Mat24& k) {
+  for (int I = 0; I < 4; ++I)
+    for (int J = I + 1; J < 4; ++J) k.block<6, 6>(6 * J, 6 * I) = k.block<6, 6>(6 * I, 6 * J).transpose();
 }
 
 // Drilling regularisation: tangent only (it never enters the residual). drilling_factor x the
@@ -157,7 +170,7 @@ void add_drilling_stiffness(const NodeVectors& d, double drilling_factor, double
 
 }  // namespace
 
-void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku) {
+void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku, bool symmetric) {
   // dd_I = dpsi_I x d_I = -skew(d_I) dpsi_I.
   *ru = rp;
   for (int I = 0; I < 4; ++I) ru->segment<3>(6 * I + 3) = d[static_cast<std::size_t>(I)].cross(rp.segment<3>(6 * I + 3));
@@ -168,7 +181,7 @@ void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Ve
   for (int I = 0; I < 4; ++I) R[static_cast<std::size_t>(I)] = -skew(d[static_cast<std::size_t>(I)]);
   for (int I = 0; I < 4; ++I) {
     const Eigen::Matrix3d& RI = R[static_cast<std::size_t>(I)];
-    for (int J = 0; J < 4; ++J) {
+    for (int J = symmetric ? I : 0; J < 4; ++J) {
       const Eigen::Matrix3d& RJ = R[static_cast<std::size_t>(J)];
       const int ti = 6 * I, ri = 6 * I + 3, tj = 6 * J, rj = 6 * J + 3;
       ku->block<3, 3>(ti, tj) = kp->block<3, 3>(ti, tj);
@@ -177,6 +190,7 @@ void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Ve
       ku->block<3, 3>(ri, rj).noalias() = RI.transpose() * (kp->block<3, 3>(ri, rj) * RJ);
     }
   }
+  if (symmetric) mirror_upper_blocks(*ku);
   for (int I = 0; I < 4; ++I) {
     // Rotational geometric term, projected on the plane normal to the director (the drilling
     // rotation does not move d): P (d r^T - (d.r) I) P = -(d.r) P with P = I - d d^T.
@@ -192,6 +206,7 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   if (!(thickness > 0.0)) throw std::invalid_argument("shell thickness must be > 0");
   const auto& p = law.params();
   shear_modulus_ = p.E / (2.0 * (1.0 + p.nu));
+  symmetric_material_ = p.kinematic == material::KinematicLaw::none;
   const double g = 1.0 / std::sqrt(3.0);
   const double gxi[4] = {-g, g, g, -g}, geta[4] = {-g, -g, g, g};
   // Element frame: e1 along the xi direction at the centre, projected on the tangent plane.
@@ -323,12 +338,15 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
     Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
     strain_operator(pg, ps, tying_, k, c, shear.a_t, shear.d_t, B);
     rp.noalias() += pg.weight * (B.topRows<6>().transpose() * s6 + B.bottomRows<2>().transpose() * Q);
-    if (tangent) add_point_tangent(pg, ps, tying_, s6, d6, Q, ks, c, B, kp);
+    if (tangent) add_point_tangent(pg, ps, tying_, s6, d6, Q, ks, c, B, symmetric_material_, kp);
   }
 
+  // With a symmetric material tangent the node blocks below the diagonal are mirrored from
+  // those above (in kp's material part here, in ku's director transformation below).
   Vec24 ru;
   Mat24 ku;
-  director_to_dofs(d, rp, tangent ? &kp : nullptr, &ru, tangent ? &ku : nullptr);
+  if (tangent && symmetric_material_) mirror_upper_blocks(kp);
+  director_to_dofs(d, rp, tangent ? &kp : nullptr, &ru, tangent ? &ku : nullptr, symmetric_material_);
   if (!ru.allFinite()) {
     status.ok = false;
     status.reason = "non-finite element forces";

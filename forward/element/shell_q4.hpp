@@ -50,7 +50,9 @@ using Mat24 = Eigen::Matrix<double, 24, 24>;
 // From derivatives with respect to p = (x_I, d_I) (positions and directors, 6 per node) to
 // the DOFs u = (translation, rotation increment): residual and exact tangent on the rotations
 // normal to the directors (no drilling stiffness). Shared by the shell and its contact.
-void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku);
+// symmetric: kp is symmetric, and ku's node blocks below the diagonal are mirrored from those
+// above instead of computed.
+void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku, bool symmetric = false);
 
 // Energies of an element's committed state [N mm], integrated over its reference area.
 struct ElementEnergy {
@@ -115,6 +117,10 @@ class ShellQ4 {
   ShellOptions options_;
   double h0_;
   double shear_modulus_;
+  // The layers' tangent is symmetric (associated flow with isotropic hardening; kinematic
+  // hardening makes it non-symmetric): the element's tangent is assembled from its upper node
+  // blocks.
+  bool symmetric_material_ = true;
   std::array<PointGeometry, 4> points_;
   PointGeometry centre_;  // the element centre (in-plane shear)
   std::array<TyingPoint, 4> tying_;  // B (0,-1), D (0,1) for gamma_xi; A (-1,0), C (1,0) for gamma_eta

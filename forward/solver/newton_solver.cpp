@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <omp.h>
+
 namespace spifit::solver {
 namespace {
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -100,7 +102,18 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
         if (dgl.squaredNorm() > 0.0) r.noalias() += ke[ui] * dgl;
       }
       for (std::size_t a = 0; a < ed.size(); ++a) full(ed[a]) += r(static_cast<Eigen::Index>(a));
-      if (with_tangent) assembler_->add(first + i, re[ui], &ke[ui], nullptr, nullptr, k_.get());
+    }
+    if (with_tangent) {
+      // Each thread adds its own rows of K, every element in element order: the same sums
+      // as a serial scatter, bit for bit, for any number of threads.
+      const int rows = k_->pattern().rows;
+#pragma omp parallel
+      {
+        const int t = omp_get_thread_num(), threads = omp_get_num_threads();
+        const int row_begin = static_cast<int>(static_cast<long>(rows) * t / threads);
+        const int row_end = static_cast<int>(static_cast<long>(rows) * (t + 1) / threads);
+        for (int i = 0; i < count; ++i) assembler_->add_tangent_rows(first + i, ke[static_cast<std::size_t>(i)], row_begin, row_end, k_.get());
+      }
     }
     counters_.scatter_seconds += seconds_since(t0);
   }

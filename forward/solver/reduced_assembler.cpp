@@ -80,4 +80,32 @@ void ReducedAssembler::add(int e, const Eigen::VectorXd& re, const Eigen::Matrix
   }
 }
 
+void ReducedAssembler::add_tangent_rows(int e, const Eigen::MatrixXd& ke, int row_begin, int row_end, SparseMatrix* k_bar) const {
+  const auto ue = static_cast<std::size_t>(e);
+  const std::vector<int>& red = reduced_dofs_[ue];
+  const auto m = red.size();
+  const std::vector<long>& pos = map_.positions[ue];
+  auto& v = k_bar->values();
+  const auto owned = [&](std::size_t local) { return red[local] >= row_begin && red[local] < row_end; };
+  if (has_ties_[ue]) {
+    bool any = false;
+    for (std::size_t i = 0; i < m && !any; ++i) any = owned(i);
+    if (!any) return;
+    const Eigen::MatrixXd& s = expansion_[ue];
+    const Eigen::MatrixXd kk = s.transpose() * ke * s;
+    for (std::size_t i = 0; i < m; ++i)
+      if (owned(i))
+        for (std::size_t j = 0; j < m; ++j) v[static_cast<std::size_t>(pos[i * m + j])] += kk(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+    return;
+  }
+  const std::vector<int>& dir = direct_[ue];
+  const std::size_t k = dir.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    if (dir[i] < 0 || !owned(static_cast<std::size_t>(dir[i]))) continue;
+    const std::size_t row = static_cast<std::size_t>(dir[i]) * m;
+    for (std::size_t j = 0; j < k; ++j)
+      if (dir[j] >= 0) v[static_cast<std::size_t>(pos[row + static_cast<std::size_t>(dir[j])])] += ke(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j));
+  }
+}
+
 }  // namespace spifit::solver

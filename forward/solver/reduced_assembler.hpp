@@ -23,6 +23,10 @@ class ReducedAssembler {
   // the correction, local; may be empty) to r_bar, and ke to K_bar (if k_bar is non-null).
   void add(int e, const Eigen::VectorXd& re, const Eigen::MatrixXd* ke, const Eigen::VectorXd* dg_local,
            Eigen::VectorXd* r_bar, SparseMatrix* k_bar) const;
+  // Adds the rows [row_begin, row_end) of element e's ke to K_bar. Threads that own disjoint
+  // row ranges and each add the elements in the same order build the same K as add(), bit for
+  // bit, in parallel.
+  void add_tangent_rows(int e, const Eigen::MatrixXd& ke, int row_begin, int row_end, SparseMatrix* k_bar) const;
 
  private:
   const DofConstraints* constraints_;

@@ -126,9 +126,9 @@ TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
   EXPECT_NE(spin.find("rev/min"), std::string::npos) << spin;
 }
 
-// [solver] divergence_after reaches the forming scene (the solver's 3 when absent) and an
-// out-of-range value names the key.
-TEST(FormingScene, ReaderTakesDivergenceAfter) {
+// [solver] divergence_after and estimate_next_correction reach the forming scene (the
+// solver's 3 and off when absent) and an out-of-range value names the key.
+TEST(FormingScene, ReaderTakesTheSolverKeysTheConeHas) {
   std::ifstream in(src("experiments/aa3003o/scenes/indent.toml"));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const std::string rel = "\"../../../materials/";
@@ -143,6 +143,12 @@ TEST(FormingScene, ReaderTakesDivergenceAfter) {
   };
   EXPECT_EQ(read_forming_scene(with("")).divergence_after, 3);
   EXPECT_EQ(read_forming_scene(with("divergence_after = 7\n")).divergence_after, 7);
+  EXPECT_FALSE(read_forming_scene(with("")).estimate_next_correction);
+  const FormingScene estimating = read_forming_scene(with("estimate_next_correction = true\nstabilisation = 1e-4\n"));
+  EXPECT_TRUE(estimating.estimate_next_correction);
+  EXPECT_EQ(estimating.stabilisation, 1e-4);
+  EXPECT_TRUE(tool_newton_options(estimating, 1.0).estimate_next_correction);
+  EXPECT_EQ(tool_newton_options(estimating, 1.0).stabilisation, 1e-4);
   try {
     read_forming_scene(with("divergence_after = 2000\n"));
     ADD_FAILURE() << "no error for divergence_after = 2000";
