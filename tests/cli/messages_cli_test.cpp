@@ -25,6 +25,31 @@ bool printable(const std::string& s) {
   return true;
 }
 
+TEST(MessagesCli, AnUnknownSubcommandIsNamed) {
+  auto r = run_spifit("foo");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(r.err, "spifit: unknown subcommand foo (subcommands: lankford, material, run, fit, sweep, report, scan, inputs, synth) (see --help)\n");
+  r = run_spifit("-q --threads 2 foo --out x");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown subcommand foo"), std::string::npos) << r.err;
+  r = run_spifit("material foo");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown material subcommand foo (subcommands: show, export)"), std::string::npos) << r.err;
+  r = run_spifit("");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("A subcommand is required"), std::string::npos) << r.err;
+}
+
+TEST(MessagesCli, ThreadsIsAWholeNumberUpTo512) {
+  for (const std::string bad : {"-1", "abc", "1000", "513", "1.5", "99999999999999999999"}) {
+    const auto r = run_spifit("--threads " + bad + " inputs");
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("--threads: must be a whole number from 0 (OpenMP's default) to 512, got '" + bad + "'"), std::string::npos) << r.err;
+    EXPECT_LT(r.err.size(), 160u) << r.err;
+  }
+  for (const std::string good : {"0", "1", "512"}) EXPECT_EQ(run_spifit("-q --threads " + good + " inputs").code, 0) << good;
+}
+
 // A binary file given as a cloud: its bytes quoted, the message short.
 TEST(MessagesCli, ABinaryCloudIsQuotedAndCut) {
   std::string bytes = "\x89PNG\r\n\x1a\n";
