@@ -136,7 +136,7 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
   cmd->callback([o, &g, &exit_code, command_line, cmd] {
     const std::string kind = scene::scene_kind_of_file(o->scene);
     const scene::SceneKind* k = scene::find_scene_kind(kind);
-    if (!k) throw io::InputError(o->scene, "scene.kind", kind, "unknown scene kind (known: " + scene::scene_kind_names() + ")");
+    if (!k) (void)scene::read_scene(o->scene);  // names the unknown kind and the known ones
     if (std::filesystem::exists(o->out) && !o->force) throw io::InputError("", "--out", o->out, "file exists; pass --force to overwrite");
     o->syn.command = command_line;
     const bool fe = k->family != "material_point";
@@ -151,14 +151,21 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
       if (!fe) {
         if (!o->set.empty()) throw io::InputError("", "--set", o->set.front(), "only for FE scenes (a material-point scene's inputs are its file's)");
         // With --material the scene's own card (or the default one) is not needed.
-        auto scene = scene::read_material_point_scene(o->scene, o->material.empty() ? scene::AbsentMaterial::default_card : scene::AbsentMaterial::no_card);
+        scene::MaterialPointScene scene;
+        try {
+          scene = scene::read_material_point_scene(o->scene, o->material.empty() ? scene::AbsentMaterial::default_card : scene::AbsentMaterial::no_card);
+        } catch (const io::InputError& e) {
+          throw scene::with_kind_hint(e, o->scene, kind);  // [contact] in a file of kind tensile: is the kind right?
+        }
         if (!o->material.empty()) scene.card = material::load_material_card(o->material);
         card_name = scene.card.name;
         return inverse::synthetic_measurement_csv(scene, o->syn);
       }
       auto scene = scene::read_scene(o->scene);
       if (!scene->tool_centre_path() || !scene->card())
-        throw io::InputError(o->scene, "scene.kind", kind, "synth writes a material-point curve or the tool force of an FE scene with a tool and a card");
+        throw io::InputError(o->scene, "scene.kind", kind,
+                             std::string("a scene of this kind has no ") + (scene->tool_centre_path() ? "material card" : "tool") +
+                                 ": synth writes a material-point curve or the tool force (or a section) of an FE scene with a tool and a card");
       if (!o->material.empty()) *scene->card() = material::load_material_card(o->material);
       for (const std::string& a : o->set) set_scene_input(*scene, a);
       card_name = scene->card()->name;

@@ -16,6 +16,19 @@ namespace {
 
 using spifit::test::run_spifit;
 
+std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
+
+// The §7.1 indent scene with `from` replaced by `to` (the card by its absolute path).
+fs::path indent_with(const std::string& name, const std::string& from, const std::string& to) {
+  std::string text = spifit::test::slurp(src("experiments/aa3003o/scenes/indent.toml"));
+  const auto card = text.find("../../../materials/");
+  text.replace(card, std::string("../../../materials/").size(), src("materials/"));
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return spifit::test::write_temp_file(name, text);
+}
+
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }
 
 // No byte a terminal must not get raw: control characters and bytes of no UTF-8 character.
@@ -23,6 +36,42 @@ bool printable(const std::string& s) {
   for (unsigned char c : s)
     if ((c < 0x20 && c != '\n') || c == 0x7f || c >= 0x80) return false;
   return true;
+}
+
+TEST(MessagesCli, AKindTypoIsAnUnknownKindNotAnUnknownTable) {
+  const fs::path scene = indent_with("indnet.toml", "kind = \"indent\"", "kind = \"indnet\"");
+  for (const std::string cmd : {"run", "synth"}) {
+    const auto r = run_spifit(cmd + " " + scene.string() + " --out " + spifit::test::temp_path("indnet_out").string());
+    EXPECT_EQ(r.code, 2) << cmd;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(scene.string() + ": scene.kind = \"indnet\": unknown scene kind (known: tensile,"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("indent, indent_line, line, cone)"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("contact"), std::string::npos) << r.err;
+  }
+  fs::remove(scene);
+}
+
+// A kind of another family (tensile in a forming file): the reader of that kind refused [contact]
+// as an unknown key, as if the table were the typo.
+TEST(MessagesCli, AKindOfAnotherFamilyNamesTheKindsOfTheTable) {
+  const fs::path scene = indent_with("tensile_contact.toml", "kind = \"indent\"", "kind = \"tensile\"");
+  for (const std::string cmd : {"run", "synth"}) {
+    const auto r = run_spifit(cmd + " " + scene.string() + " --out " + spifit::test::temp_path("tc_out").string());
+    EXPECT_EQ(r.code, 2) << cmd;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+    EXPECT_NE(r.err.find(": [contact] is not a table of scene kind tensile (its tables: scene, solver); it is one of the kinds indent, "
+                         "indent_line, line, cone: is scene.kind = \"tensile\" right?"),
+              std::string::npos)
+        << r.err;
+  }
+  fs::remove(scene);
+}
+
+// synth on an FE scene it cannot write a curve of says why (no tool), not only the kind.
+TEST(MessagesCli, SynthSaysWhatTheSceneLacks) {
+  const auto r = run_spifit("synth " + src("experiments/benchmarks/scordelis_lo.toml") + " --out " + spifit::test::temp_path("sl.csv").string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("scordelis_lo.toml: scene.kind = shell_benchmark: a scene of this kind has no tool: synth writes"), std::string::npos) << r.err;
 }
 
 TEST(MessagesCli, AnUnknownSubcommandIsNamed) {
