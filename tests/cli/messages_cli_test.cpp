@@ -99,6 +99,22 @@ TEST(MessagesCli, ThreadsIsAWholeNumberUpTo512) {
   for (const std::string good : {"0", "1", "512"}) EXPECT_EQ(run_spifit("-q --threads " + good + " inputs").code, 0) << good;
 }
 
+// t/l > 3 was found by the shell model once the run had started: exit 1, no file, no key.
+TEST(MessagesCli, ASheetTooThickForItsElementsNamesTheKeys) {
+  const fs::path scene = indent_with("thick.toml", "thickness = 0.3", "thickness = 3.5");
+  const fs::path out = spifit::test::temp_path("thick_out");
+  fs::remove_all(out);
+  const auto r = run_spifit("run " + scene.string() + " --out " + out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_EQ(lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(scene.string() + ": sheet.thickness = 3.5: over the shortest element edge, 1 mm (sheet.length = 10 / sheet.elements = 10), "
+                                        "t/l = 3.5 exceeds the shell's limit 3"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(out)) << "input errors come before the output directory";
+  fs::remove(scene);
+}
+
 // A binary file given as a cloud: its bytes quoted, the message short.
 TEST(MessagesCli, ABinaryCloudIsQuotedAndCut) {
   std::string bytes = "\x89PNG\r\n\x1a\n";
