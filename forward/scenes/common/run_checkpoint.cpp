@@ -101,6 +101,7 @@ std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs
   w.section("end");
   const std::string bytes = w.finish();
   io::write_file_atomic(run_checkpoint_path(out), bytes);  // .state.bin.tmp in DIR/checkpoint/, then renamed
+  out.record();  // checkpoint/ in the manifest
   return bytes.size();
 }
 
