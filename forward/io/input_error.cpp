@@ -36,6 +36,7 @@ std::size_t printable_length(const std::string& text, std::size_t i) {
   if (n == 0 || i + n > text.size()) return 0;
   for (std::size_t k = 1; k < n; ++k)
     if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return 0;
+  if (b == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) return 0;  // U+0080..U+009F: C1 controls (U+009B is a terminal's CSI)
   return n;
 }
 
