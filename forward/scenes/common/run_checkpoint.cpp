@@ -81,11 +81,10 @@ void check_inputs(io::BinaryReader& r, const RunInputs& inputs, const std::files
     f.path = r.string();
     f.text = r.string();
   }
-  // Another scene first, by name: the directory of another run. The same contents under
-  // another path (a copy of the scene) resume.
+  // A run of another kind: the directory of another scene, both named (a scene of the same kind
+  // is compared by contents below, which names both too).
   const RunInput* theirs = scene_input(stored);
-  const RunInput* mine = scene_input(inputs.files);
-  if (theirs && mine && (kind != inputs.kind || theirs->text != mine->text))
+  if (kind != inputs.kind && theirs)
     if (const std::string why = other_scene(kind, theirs->path, inputs); !why.empty())
       refuse(file, "the checkpoint is " + why + ": resume with that scene, or run this one in another output directory");
   if (kind != inputs.kind) refuse(file, "written by a " + kind + " run, not a " + inputs.kind + " run");
