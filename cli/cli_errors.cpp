@@ -1,5 +1,7 @@
 #include "cli/cli_errors.hpp"
 
+#include <iostream>
+
 namespace spifit::cli {
 namespace {
 
@@ -14,9 +16,16 @@ namespace {
 
 }  // namespace
 
-io::OutputDirectory prepare_output(const std::string& out, bool force, const std::vector<std::string>& inputs) {
+io::OutputDirectory prepare_output(const std::string& out, bool force, const std::vector<std::string>& inputs, bool quiet) {
   try {
-    return io::OutputDirectory::prepare(out, force, inputs);
+    auto dir = io::OutputDirectory::prepare(out, force, inputs);
+    if (!quiet && !dir.kept().empty()) {
+      std::string names;
+      for (const auto& n : dir.kept()) names += (names.empty() ? "" : ", ") + n;
+      std::cerr << "spifit: warning: --out = " << out << ": kept " << io::one_line(names) << " (not written by spifit: --force removes only what "
+                << io::OutputDirectory::kManifest << " lists)\n";
+    }
+    return dir;
   } catch (const io::OutputDirectoryError& e) {
     on_out(e);
   }

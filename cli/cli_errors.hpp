@@ -11,8 +11,9 @@
 
 namespace spifit::cli {
 
-// io::OutputDirectory::prepare / existing with their errors on --out.
-io::OutputDirectory prepare_output(const std::string& out, bool force, const std::vector<std::string>& inputs);
+// io::OutputDirectory::prepare / existing with their errors on --out. prepare_output warns on
+// stderr (unless quiet) of the entries --force kept because spifit did not write them.
+io::OutputDirectory prepare_output(const std::string& out, bool force, const std::vector<std::string>& inputs, bool quiet);
 io::OutputDirectory existing_output(const std::string& out);
 
 // Runs f; an io::InputError without a file whose key is a field in `options` is rethrown with

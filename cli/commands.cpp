@@ -111,7 +111,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const scene::SceneKind* kind = scene::find_scene_kind(scene->kind());
     if (o->resume && !kind->resumable)
       throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + scene->kind() + " (it writes no checkpoints)");
-    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, scene->input_files());
+    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, scene->input_files(), g.quiet);
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
     if (g.verbose) control.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "  %s\n", e.text.c_str()); };

@@ -22,6 +22,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <thread>
 
 namespace spifit::cli {
@@ -43,13 +44,14 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file);
-    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, problem.input_files);
+    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, problem.input_files, g.quiet);
     if (problem.scene_runs) {
       // The FE evaluations, kept as they finish (DIR/runs/evaluations.jsonl) for --resume.
       auto cache = std::make_shared<inverse::EvaluationCache>(dir.path() / "runs" / "evaluations.jsonl",
                                                              inverse::files_signature(problem.input_files), o->resume);
       if (o->resume && !g.quiet) std::cout << "resuming: " << cache->loaded() << " FE evaluations read back\n";
       problem.scene_runs->keep_evaluations(std::move(cache));
+      dir.record();  // runs/ in the manifest
     } else if (o->resume) {
       throw io::InputError(o->file, "experiment", "", "--resume continues fits with FE experiments (the others take seconds)");
     }
@@ -73,6 +75,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     dir.write_file("exports/notes.json", export_notes.dump(2) + "\n");
     // Report for people: report.md, report.html, plots/*.svg (gnuplot; without it, no plots).
     const auto report = reports::render_fit_report(dir.path(), {});
+    dir.record();  // report.md, report.html, plots/ in the manifest
     for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
     nlohmann::json summary{{"status", result.usable ? "ok" : "failed"},
                            {"kind", "fit"},
@@ -136,7 +139,7 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
   cmd->callback([o, &g, &exit_code, command_line, cmd] {
     const std::string kind = scene::scene_kind_of_file(o->scene);
     const scene::SceneKind* k = scene::find_scene_kind(kind);
-    if (!k) throw io::InputError(o->scene, "scene.kind", kind, "unknown scene kind (known: " + scene::scene_kind_names() + ")");
+    if (!k) (void)scene::read_scene(o->scene);  // names the unknown kind and the known ones
     if (std::filesystem::exists(o->out) && !o->force) throw io::InputError("", "--out", o->out, "file exists; pass --force to overwrite");
     o->syn.command = command_line;
     const bool fe = k->family != "material_point";
@@ -151,14 +154,21 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
       if (!fe) {
         if (!o->set.empty()) throw io::InputError("", "--set", o->set.front(), "only for FE scenes (a material-point scene's inputs are its file's)");
         // With --material the scene's own card (or the default one) is not needed.
-        auto scene = scene::read_material_point_scene(o->scene, o->material.empty() ? scene::AbsentMaterial::default_card : scene::AbsentMaterial::no_card);
+        scene::MaterialPointScene scene;
+        try {
+          scene = scene::read_material_point_scene(o->scene, o->material.empty() ? scene::AbsentMaterial::default_card : scene::AbsentMaterial::no_card);
+        } catch (const io::InputError& e) {
+          throw scene::with_kind_hint(e, o->scene, kind);  // [contact] in a file of kind tensile: is the kind right?
+        }
         if (!o->material.empty()) scene.card = material::load_material_card(o->material);
         card_name = scene.card.name;
         return inverse::synthetic_measurement_csv(scene, o->syn);
       }
       auto scene = scene::read_scene(o->scene);
       if (!scene->tool_centre_path() || !scene->card())
-        throw io::InputError(o->scene, "scene.kind", kind, "synth writes a material-point curve or the tool force of an FE scene with a tool and a card");
+        throw io::InputError(o->scene, "scene.kind", kind,
+                             std::string("a scene of this kind has no ") + (scene->tool_centre_path() ? "material card" : "tool") +
+                                 ": synth writes a material-point curve or the tool force (or a section) of an FE scene with a tool and a card");
       if (!o->material.empty()) *scene->card() = material::load_material_card(o->material);
       for (const std::string& a : o->set) set_scene_input(*scene, a);
       card_name = scene->card()->name;
@@ -193,7 +203,11 @@ void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->callback([o, &g, &exit_code] {
     reports::ReportOptions ro;
     ro.plots = !o->no_plots;
+    // Opened before rendering: what is there and not in its manifest stays out of it.
+    std::optional<io::OutputDirectory> dir;
+    if (std::filesystem::is_directory(o->dir)) dir = io::OutputDirectory::existing(o->dir);
     const auto r = reports::render_fit_report(o->dir, ro);
+    if (dir) dir->record();  // plots/ when the fit had none
     for (const auto& w : r.warnings) std::cerr << "spifit: warning: " << w << "\n";
     if (!g.quiet) std::cout << "wrote " << r.markdown.string() << ", " << r.html.string() << " and " << r.plots.size() << " plots\n";
     exit_code = 0;
@@ -226,7 +240,7 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
   cmd->callback([o, &g, &exit_code] {
     const auto spec = inverse::read_sweep_file(o->file);
-    const auto dir = prepare_output(o->out, o->force, inverse::sweep_input_files(spec));
+    const auto dir = prepare_output(o->out, o->force, inverse::sweep_input_files(spec), g.quiet);
     dir.write_file("summary.json", nlohmann::json{{"status", "running"}, {"kind", "sweep"}}.dump(2) + "\n");
     inverse::SweepRunOptions ro;
     ro.threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -236,6 +250,7 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     dir.write_file("sweep.csv", inverse::sweep_csv(spec, r));
     if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));
     for (const auto& w : reports::render_sweep_plots(dir.path(), sweep_table(spec, r))) std::cerr << "spifit: warning: " << w << "\n";
+    dir.record();  // plots/ in the manifest
     int failed = 0;
     for (const auto& p : r.points) failed += p.ok ? 0 : 1;
     dir.write_file("summary.json", nlohmann::json{{"status", "ok"}, {"kind", "sweep"}, {"sweep", spec.name}, {"points", r.points.size()},

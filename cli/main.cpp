@@ -7,13 +7,48 @@
 #include <iostream>
 #include <omp.h>
 
+namespace {
+
+// "unknown subcommand foo (subcommands: ...)" when the command that needs a subcommand (spifit,
+// spifit material) was given a word that is none of its subcommands; "" otherwise. CLI11 says
+// only "A subcommand is required" then.
+std::string unknown_subcommand(const CLI::App& app) {
+  const CLI::App* a = &app;
+  while (!a->get_subcommands().empty()) a = a->get_subcommands().front();
+  if (a->get_require_subcommand_min() == 0) return "";
+  for (const std::string& word : app.remaining(true)) {
+    if (word.empty() || word[0] == '-') continue;
+    std::string names;
+    for (const CLI::App* s : a->get_subcommands([](const CLI::App*) { return true; })) names += (names.empty() ? "" : ", ") + s->get_name();
+    const std::string command = a == &app ? "" : a->get_name() + " ";
+    return "unknown " + command + "subcommand " + word + " (subcommands: " + names + ")";
+  }
+  return "";
+}
+
+// --threads: a whole number from 0 to kMaxThreads. CLI::NonNegativeNumber printed its range up
+// to the largest double (300 digits) and let 1000 through. 512 is the hardware threads of the
+// largest two-socket servers (2 x 128 cores x 2 SMT): no machine is refused its own thread count,
+// while more threads than the hardware has only slow the OpenMP loops down (results do not depend
+// on the count, docs/cli.md).
+constexpr int kMaxThreads = 512;
+const CLI::Validator kThreads(
+    [](std::string& text) -> std::string {
+      const std::string why = "must be a whole number from 0 (OpenMP's default) to " + std::to_string(kMaxThreads) + ", got '" + text + "'";
+      if (text.empty() || text.size() > 5 || text.find_first_not_of("0123456789") != std::string::npos) return why;
+      return std::stoi(text) <= kMaxThreads ? "" : why;
+    },
+    "0.." + std::to_string(kMaxThreads));
+
+}  // namespace
+
 int main(int argc, char** argv) {
   spifit::runtime::ensure_passive_omp_wait(argv);
   CLI::App app{"spifit " SPIFIT_VERSION " - material parameter identification for Single Point Incremental Forming"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("spifit ") + SPIFIT_VERSION);
   spifit::cli::GlobalOptions g;
-  app.add_option("--threads", g.threads, "OpenMP threads (0: default)")->check(CLI::NonNegativeNumber);
+  app.add_option("--threads", g.threads, "OpenMP threads (0: default)")->check(kThreads);
   app.add_flag("-q,--quiet", g.quiet, "print nothing but errors");
   app.add_flag("-v,--verbose", g.verbose, "print more detail");
   int exit_code = 0;
@@ -40,7 +75,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "spifit: " << spifit::io::one_line(e.what()) << " (see --help)\n";
+    const std::string unknown = unknown_subcommand(app);
+    std::cerr << "spifit: " << spifit::io::one_line(unknown.empty() ? e.what() : unknown) << " (see --help)\n";
     return 2;
   } catch (const spifit::io::InputError& e) {
     std::cerr << "spifit: " << e.what() << "\n";

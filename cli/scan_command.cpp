@@ -97,7 +97,7 @@ void add_scan_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     } catch (const std::invalid_argument& e) {
       throw io::InputError(o->cloud, "--min-points", std::to_string(opts.min_points), e.what());
     }
-    const auto dir = prepare_output(o->out, o->force, {o->cloud});
+    const auto dir = prepare_output(o->out, o->force, {o->cloud}, g.quiet);
     const bool by_angle = opts.binning == inverse::ScanBinning::angle;
     char head[600];
     std::snprintf(head, sizeof head,
@@ -112,6 +112,7 @@ void add_scan_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     dir.write_file("section.csv", head + inverse::scan_section_csv(s, opts));
     std::vector<std::string> warnings;
     if (!o->no_plot) warnings = section_plot(dir.path(), s, o->cloud);
+    dir.record();  // plots/ in the manifest
     for (const auto& w : warnings)
       if (!g.quiet) std::cerr << "spifit: warning: " << w << "\n";
     nlohmann::json summary{{"status", "ok"},

@@ -2,6 +2,7 @@
 
 #include "forward/scenes/material_point/curve_columns.hpp"
 #include "forward/scenes/material_point/material_point_inputs.hpp"
+#include "forward/scenes/scene_registry.hpp"
 #include "inverse/measurement.hpp"
 
 #include <algorithm>
@@ -160,7 +161,12 @@ void allow_material_point_keys(const io::TomlTable& e) {
 }
 
 scene::MaterialPointScene read_experiment_scene(const io::TomlTable& e, const std::string& scene_path) {
-  auto sc = scene::read_material_point_scene(scene_path, scene::AbsentMaterial::no_card);
+  scene::MaterialPointScene sc;
+  try {
+    sc = scene::read_material_point_scene(scene_path, scene::AbsentMaterial::no_card);
+  } catch (const io::InputError& err) {
+    throw scene::with_kind_hint(err, scene_path, scene::scene_kind_of_file(scene_path));
+  }
   if (!e.has("angle")) return sc;
   if (e.value_text("angle").rfind('[', 0) == 0)
     e.fail("angle", "one angle per experiment; for several, a table of scalars (data = FILE with a column angle, x = \"angle\")");

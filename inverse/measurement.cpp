@@ -3,6 +3,7 @@
 #include "forward/io/input_error.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -21,6 +22,16 @@ std::vector<std::string> split(const std::string& line) {
   while (std::getline(ss, cell, ',')) out.push_back(trim(cell));
   if (!line.empty() && line.back() == ',') out.push_back("");
   return out;
+}
+// The first byte of a line that is no text (a control character other than a tab, or a byte of
+// no valid UTF-8 character: a binary file), or npos.
+std::size_t first_non_text(const std::string& line) {
+  for (std::size_t i = 0; i < line.size();) {
+    const std::size_t n = line[i] == '\t' ? 1 : io::printable_length(line, i);
+    if (n == 0) return i;
+    i += n;
+  }
+  return std::string::npos;
 }
 }  // namespace
 
@@ -46,6 +57,13 @@ MeasurementTable read_measurement_csv(const std::string& path) {
     ++lineno;
     if (lineno == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line = line.substr(3);  // UTF-8 byte-order mark
     std::string s = trim(line);
+    if (const std::size_t bad = first_non_text(s); bad != std::string::npos) {
+      char byte[8];
+      std::snprintf(byte, sizeof byte, "\\x%02X", static_cast<unsigned>(static_cast<unsigned char>(s[bad])));
+      throw InputError(path, "line " + std::to_string(lineno), s,
+                       std::string("not text (byte ") + byte + " at position " + std::to_string(bad + 1) +
+                           "): a measurement file is CSV text, a header naming the columns and rows of numbers");
+    }
     // Spreadsheet exports end every row with a comma: drop one empty last cell.
     if (!s.empty() && s.back() == ',' && s[0] != '#') s.pop_back();
     if (s.empty()) continue;

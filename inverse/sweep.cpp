@@ -53,6 +53,7 @@ SweepPoint run_point(const SweepSpec& s, const std::vector<const scene::Observab
     std::unique_ptr<scene::SceneResult> r;
     if (dir) {
       const auto out = io::OutputDirectory::prepare((dir->path() / sub).string(), false);
+      dir->record();  // points/ in the sweep directory's manifest
       r = sc->run(scene::RunFiles(out), {});
     } else {
       r = sc->run(scene::RunFiles(), {});

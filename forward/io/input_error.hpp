@@ -19,8 +19,13 @@ class InputError : public std::runtime_error {
   std::string file_, key_, value_, message_;
 };
 
-// Collapses a (possibly multi-line) text to one line of at most max_chars characters.
+// Collapses a (possibly multi-line) text to one line of at most max_chars bytes ("..." at the
+// end when cut). Bytes a terminal must not get raw (control characters other than blanks, bytes
+// that are not valid UTF-8, e.g. of a binary file) are written as \xNN; valid UTF-8 is kept.
 std::string one_line(const std::string& text, std::size_t max_chars = 200);
+// The length in bytes of the valid UTF-8 character at text[i] (1 for printable ASCII); 0 for a
+// control character or a byte that starts no valid UTF-8 character.
+std::size_t printable_length(const std::string& text, std::size_t i);
 // The text without leading and trailing blanks (spaces, tabs, CR, LF).
 std::string trim(const std::string& text);
 // Shortest round-trip text for a number, as written in an error message.

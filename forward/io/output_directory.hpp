@@ -1,11 +1,19 @@
 #pragma once
-// An output directory that never silently overwrites earlier results: an existing,
-// non-empty directory is refused unless replace is set; then it is cleared only if it is
-// an earlier spifit output (it holds summary.json) and holds none of this run's inputs. Files are written atomically (temporary + rename), so a
-// killed run never leaves a half-written file under its final name.
+// An output directory that never silently overwrites earlier results, nor removes what spifit
+// did not write. spifit lists the top-level entries it creates in DIR/.spifit-manifest (a file or
+// a whole subdirectory per line). An existing, non-empty directory is refused unless replace is
+// set; then it must hold none of this run's inputs, and
+//   - with a manifest: only the entries listed in it are removed (a user's own files beside them
+//     are kept and reported by kept());
+//   - without one (an earlier spifit's output: it holds summary.json): only entries with the
+//     names of spifit's outputs (summary.json, force.csv, vtu/, ...) are removed, the rest kept;
+//   - neither: refused, it is not a spifit output.
+// Files are written atomically (temporary + rename), so a killed run never leaves a half-written
+// file under its final name. Format: docs/file-formats.md, "Output directories".
 #include "forward/io/input_error.hpp"
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -26,20 +34,32 @@ class OutputDirectoryError : public InputError {
 
 class OutputDirectory {
  public:
+  static constexpr const char* kManifest = ".spifit-manifest";
+
   // Throws OutputDirectoryError when the directory exists and replace is false, or it cannot be
   // replaced. inputs: files this run reads (scene, card), which must not lie inside the directory.
   static OutputDirectory prepare(const std::string& path, bool replace, const std::vector<std::string>& inputs = {});
   // An existing output directory whose run is to be continued (a resume); nothing is cleared.
-  // Throws OutputDirectoryError when it does not exist or is not a directory.
+  // Its manifest, if any, goes on listing what the run adds. Throws OutputDirectoryError when it
+  // does not exist or is not a directory.
   static OutputDirectory existing(const std::string& path);
 
   const std::filesystem::path& path() const { return path_; }
+  // Atomic write of DIR/name (subdirectories created), listed in the manifest.
   void write_file(const std::string& name, const std::string& contents) const;
   void remove_file(const std::string& name) const;
+  // Lists in the manifest the top-level entries that appeared since the directory was prepared
+  // or opened (for files written by other means than write_file: vtu/, checkpoint/, plots/).
+  void record() const;
+  // Entries prepare() found but did not remove (not written by spifit), for a warning.
+  const std::vector<std::string>& kept() const { return kept_; }
 
  private:
-  explicit OutputDirectory(std::filesystem::path p) : path_(std::move(p)) {}
+  struct Manifest;
+  OutputDirectory(std::filesystem::path p, std::shared_ptr<Manifest> m, std::vector<std::string> kept);
   std::filesystem::path path_;
+  std::shared_ptr<Manifest> manifest_;  // null: no manifest is kept (a directory of an older spifit, resumed)
+  std::vector<std::string> kept_;
 };
 
 }  // namespace spifit::io

@@ -25,7 +25,12 @@ std::string scene_kind_names();
 // missing kind.
 std::string scene_kind_of_file(const std::string& path);
 // Reads a scene file of any kind; io::InputError naming the file and key (an unknown kind lists
-// the known ones).
+// the known ones; a table the kind does not take, as [contact] in a file of kind tensile, names
+// the kinds that take it: with_kind_hint).
 std::unique_ptr<Scene> read_scene(const std::string& path);
+// When the reader of kind refused a whole table of the scene file at path as an unknown key, the
+// kind, not the table, may be the typo: e with the kinds that take that table and the question
+// whether scene.kind is right. Any other error as it is.
+io::InputError with_kind_hint(const io::InputError& e, const std::string& path, const std::string& kind);
 
 }  // namespace spifit::scene

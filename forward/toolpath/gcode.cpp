@@ -65,8 +65,9 @@ std::string strip_comments(const std::string& raw, const std::string& file, int 
 }
 
 // A G-code number: optional sign, digits with at most one '.', at least one digit (no
-// exponent: 'E' would be a word letter).
-std::optional<double> parse_number(const std::string& s) {
+// exponent: 'E' would be a word letter). None with *why set when it is not one.
+std::optional<double> parse_number(const std::string& s, std::string* why) {
+  *why = "malformed number";
   const std::size_t sign = (!s.empty() && (s[0] == '+' || s[0] == '-')) ? 1 : 0;
   int digits = 0, dots = 0;
   for (std::size_t k = sign; k < s.size(); ++k) {
@@ -78,7 +79,8 @@ std::optional<double> parse_number(const std::string& s) {
   const std::size_t i = s[0] == '+' ? 1 : 0;  // from_chars takes '-' but not '+'
   double v = 0.0;
   const auto r = std::from_chars(s.data() + i, s.data() + s.size(), v);
-  if (r.ec != std::errc() || r.ptr != s.data() + s.size()) return std::nullopt;
+  if (r.ec == std::errc::result_out_of_range || (r.ec == std::errc() && !std::isfinite(v))) *why = "number out of range";
+  if (r.ec != std::errc() || r.ptr != s.data() + s.size() || !std::isfinite(v)) return std::nullopt;
   return v;
 }
 
@@ -108,10 +110,21 @@ std::vector<Word> split_words(const Line& line) {
                             c[i] == '+' || c[i] == '-'))
       number += c[i++];
     const std::string text = std::string(1, letter) + number;
+    // An exponent (X1e12) would otherwise end the number and start an unsupported word 'E'.
+    const auto digit = [&](std::size_t k) { return k < c.size() && std::isdigit(static_cast<unsigned char>(c[k])); };
+    if (!number.empty() && i < c.size() && (c[i] == 'e' || c[i] == 'E')) {
+      std::size_t e = i + 1;
+      if (e < c.size() && (c[e] == '+' || c[e] == '-')) ++e;
+      if (digit(e)) {
+        while (digit(e)) ++e;
+        line.fail(text + c.substr(i, e - i), "malformed number: G-code numbers have no exponent (write the digits, e.g. X1500 for 1.5e3)");
+      }
+    }
     if (kKnown.find(letter) == std::string::npos)
       line.fail(text, std::string("unsupported word '") + letter + "'");
-    const auto v = parse_number(number);
-    if (!v) line.fail(text, "malformed number");
+    std::string why;
+    const auto v = parse_number(number, &why);
+    if (!v) line.fail(text, why);
     words.push_back(Word{letter, *v, text});
   }
   return words;

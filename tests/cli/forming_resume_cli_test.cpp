@@ -56,4 +56,42 @@ TEST(FormingResumeCli, AKilledLineRunResumesToTheUninterruptedResult) {
   fs::remove(scene);
 }
 
+// README: `spifit run SCENE --out DIR --resume` into the directory of another scene names both
+// scenes (exit 2), with a checkpoint there or without one.
+TEST(FormingResumeCli, ResumeIntoTheDirectoryOfAnotherSceneNamesBoth) {
+  const fs::path line = spifit::test::write_tiny_line(temp_path("line.toml"), "checkpoint_increments = 5\n");
+  const fs::path out = spifit::test::fresh_temp_path("line_out");
+  auto r = spifit::test::run_spifit("-q run " + line.string() + " --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_TRUE(fs::exists(out / "checkpoint" / "state.bin"));
+  const std::string indent = std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent.toml";
+  r = spifit::test::run_spifit("run " + indent + " --out " + out.string() + " --resume");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("state.bin: cannot resume: the checkpoint is of scene " + line.string() + " (kind line), not of scene " + indent +
+                       " (kind indent): resume with that scene, or run this one in another output directory\n"),
+            std::string::npos)
+      << r.err;
+  // Another scene of the same kind: compared by contents (a copy with the same contents resumes).
+  std::string text = spifit::test::slurp(line);
+  const fs::path other = spifit::test::write_temp_file("other_line.toml", text.replace(text.find("z = -5.0"), 8, "z = -4.0"));
+  r = spifit::test::run_spifit("run " + other.string() + " --out " + out.string() + " --resume");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("written with another scene: the contents of " + other.string() + " differ from those of " + line.string()), std::string::npos)
+      << r.err;
+
+  // A directory without a checkpoint, of a tensile run.
+  const std::string tensile = std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/tensile_00.toml";
+  fs::remove_all(out);
+  ASSERT_EQ(spifit::test::run_spifit("-q run " + tensile + " --out " + out.string()).code, 0);
+  r = spifit::test::run_spifit("run " + line.string() + " --out " + out.string() + " --resume");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("state.bin: cannot resume: no checkpoint, and the run in " + out.string() + " is of scene " + tensile +
+                       " (kind tensile), not of scene " + line.string() + " (kind line): run this one in another output directory\n"),
+            std::string::npos)
+      << r.err;
+  fs::remove_all(out);
+  fs::remove(line);
+  fs::remove(other);
+}
+
 }  // namespace

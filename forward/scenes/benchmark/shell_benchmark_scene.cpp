@@ -166,6 +166,7 @@ ShellBenchmarkResult run_shell_benchmark_scene(const ShellBenchmarkScene& scene,
   std::unique_ptr<mesh::PvdCollection> pvd;
   if (scene.vtu && files.enabled()) {
     std::filesystem::create_directories(files.directory()->path() / "vtu");
+    files.directory()->record();  // vtu/ in the manifest
     pvd = std::make_unique<mesh::PvdCollection>(files.directory()->path() / "vtu", "shell");
     pvd->write_step(0.0, *b.mesh, model::vtu_frame(*b.model));  // the initial state
   }

@@ -7,7 +7,10 @@
 #include "forward/model/model_archive.hpp"
 #include "forward/model/shell_model.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <system_error>
+#include <utility>
 
 namespace spifit::scene {
 namespace {
@@ -46,22 +49,66 @@ RunLog load_log(io::BinaryReader& r) {
   throw io::InputError(file.string(), "", "", "cannot resume: " + why);
 }
 
+const RunInput* scene_input(const std::vector<RunInput>& files) {
+  for (const auto& f : files)
+    if (f.role == "scene") return &f;
+  return nullptr;
+}
+
+bool same_file(const std::string& a, const std::string& b) {
+  std::error_code ec;
+  return std::filesystem::weakly_canonical(a, ec) == std::filesystem::weakly_canonical(b, ec);
+}
+
+// "of scene A (kind K), not of scene B (kind L)" when the scene that started the run (kind, path)
+// is another file than the resumed run's (a --resume into the directory of another scene); ""
+// otherwise (also when either is unknown).
+std::string other_scene(const std::string& kind, const std::string& path, const RunInputs& inputs) {
+  const RunInput* mine = scene_input(inputs.files);
+  if (!mine || path.empty() || (kind == inputs.kind && same_file(path, mine->path))) return "";
+  return "of scene " + path + " (kind " + kind + "), not of scene " + mine->path + " (kind " + inputs.kind + ")";
+}
+
 // The stored inputs against the resumed run's: the same kind and the same contents file by file.
 void check_inputs(io::BinaryReader& r, const RunInputs& inputs, const std::filesystem::path& file) {
   r.section("inputs");
   (void)r.string();  // the version of spifit that wrote it (informative: another build with the same layout is accepted)
   const std::string kind = r.string();
-  if (kind != inputs.kind) refuse(file, "written by a " + kind + " run, not a " + inputs.kind + " run");
   const int n = load_count(r, "input file count");
+  std::vector<RunInput> stored(static_cast<std::size_t>(n));
+  for (auto& f : stored) {
+    f.role = r.string();
+    f.path = r.string();
+    f.text = r.string();
+  }
+  // A run of another kind: the directory of another scene, both named (a scene of the same kind
+  // is compared by contents below, which names both too).
+  const RunInput* theirs = scene_input(stored);
+  if (kind != inputs.kind && theirs)
+    if (const std::string why = other_scene(kind, theirs->path, inputs); !why.empty())
+      refuse(file, "the checkpoint is " + why + ": resume with that scene, or run this one in another output directory");
+  if (kind != inputs.kind) refuse(file, "written by a " + kind + " run, not a " + inputs.kind + " run");
   if (n != static_cast<int>(inputs.files.size()))
     refuse(file, "written for a run with " + std::to_string(n) + " input files, this one has " + std::to_string(inputs.files.size()));
-  for (const auto& in : inputs.files) {
-    const std::string role = r.string(), path = r.string(), text = r.string();
+  for (std::size_t i = 0; i < stored.size(); ++i) {
+    const RunInput& in = inputs.files[i];
+    const std::string& role = stored[i].role;
+    const std::string& path = stored[i].path;
     if (role != in.role) refuse(file, "written with a " + role + " where this run has a " + in.role);
-    if (text != in.text)
+    if (stored[i].text != in.text)
       refuse(file, "written with another " + in.role + ": the contents of " + in.path + " differ from those of " + path +
                        " when the run started (a copy is in the checkpoint); resume with that " + in.role +
                        ", or start the run afresh in a new output directory");
+  }
+}
+
+// The kind and scene file of the run whose summary.json is in dir; empty when there is none.
+std::pair<std::string, std::string> summary_scene(const std::filesystem::path& dir) {
+  try {
+    const auto j = nlohmann::json::parse(io::read_text_file((dir / "summary.json").string()));
+    return {j.value("kind", ""), j.value("scene_file", "")};
+  } catch (const std::exception&) {
+    return {};
   }
 }
 
@@ -101,6 +148,7 @@ std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs
   w.section("end");
   const std::string bytes = w.finish();
   io::write_file_atomic(run_checkpoint_path(out), bytes);  // .state.bin.tmp in DIR/checkpoint/, then renamed
+  out.record();  // checkpoint/ in the manifest
   return bytes.size();
 }
 
@@ -108,8 +156,12 @@ void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs
                          RunLog* log, const Observers& observers) {
   const std::filesystem::path file = run_checkpoint_path(out);
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(file, ec))
+  if (!std::filesystem::is_regular_file(file, ec)) {
+    const auto [kind, scene] = summary_scene(out.path());
+    if (const std::string why = other_scene(kind, scene, inputs); !why.empty())
+      refuse(file, "no checkpoint, and the run in " + out.path().string() + " is " + why + ": run this one in another output directory");
     refuse(file, "no checkpoint in " + out.path().string() + " (written after every [output] checkpoint_every marks and checkpoint_increments increments)");
+  }
   try {
     io::BinaryReader r(io::read_binary_file(file), kKind, kLayout);
     check_inputs(r, inputs, file);

@@ -14,6 +14,7 @@ void VtuLog::open() {
   if (pvd_ || !files_.enabled()) return;
   const std::filesystem::path dir = files_.directory()->path() / "vtu";
   std::filesystem::create_directories(dir);
+  files_.directory()->record();  // vtu/ in the manifest
   pvd_ = std::make_unique<mesh::PvdCollection>(dir, stem_);
 }
 

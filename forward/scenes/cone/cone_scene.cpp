@@ -171,7 +171,8 @@ InputViolation mesh_violation(const ConeScene& s) {
       shortest = std::min(shortest, (m.nodes[static_cast<std::size_t>(q[(i + 1) % 4])] - m.nodes[static_cast<std::size_t>(q[i])]).norm());
   if (s.thickness / shortest > 3.0)
     return {"sheet.elements_per_45deg", std::to_string(s.mesh.elements_per_45deg),
-            "the shortest element edge " + io::format_number(shortest) + " mm is below a third of the thickness"};
+            "the shortest element edge " + io::format_number(shortest) + " mm is below a third of the thickness (sheet.thickness = " +
+                io::format_number(s.thickness) + "; the shell's limit t/l <= 3): fewer elements or a thinner sheet"};
   return {};
 }
 

@@ -1,6 +1,5 @@
 #include "forward/scenes/forming/forming_run.hpp"
 
-#include "forward/mesh/square_sheet.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
@@ -12,15 +11,6 @@
 
 namespace spifit::scene {
 namespace {
-
-mesh::Mesh sheet_mesh(const FormingScene& s) {
-  mesh::SquareSheetOptions so;
-  so.length_x = so.length_y = s.length;
-  so.nx = so.ny = s.elements;
-  so.half = s.half;
-  so.grading_x = so.grading_y = s.grading;
-  return mesh::square_sheet(so);
-}
 
 // Edges clamped (translations and rotations); a half model's symmetry plane y = 0 holds u_y and
 // the rotations about x and z. Drilling rotations out of the system (nodal rotation frames).
@@ -43,7 +33,7 @@ FeRunSetup forming_setup(const FormingScene& s) {
   f.kind = s.kind;
   f.name = s.name;
   f.input_files = {{"scene", s.file}, {"material card", s.card.file}, {"G-code", s.gcode}};
-  f.mesh = sheet_mesh(s);
+  f.mesh = forming_sheet_mesh(s);
   f.thickness = s.thickness;
   f.material = s.card.params;
   f.model.shell.thickness_points = s.thickness_points;

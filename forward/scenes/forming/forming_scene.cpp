@@ -2,6 +2,9 @@
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/toml_reader.hpp"
+#include "forward/mesh/mesh_quality.hpp"
+#include "forward/mesh/square_sheet.hpp"
+#include "forward/model/shell_model.hpp"
 #include "forward/scenes/common/scene_inputs.hpp"
 #include "forward/scenes/forming/forming_inputs.hpp"
 #include "forward/scenes/forming/forming_path.hpp"
@@ -89,13 +92,43 @@ std::vector<Eigen::Vector3d> tip_points(const FormingScene& s) {
   return tips;
 }
 
+// The thickness over the shortest element edge against the shell's limit; the error names the
+// keys that set the mesh and what to change.
+InputViolation thickness_violation(const FormingScene& s) {
+  mesh::Mesh m;
+  try {
+    m = forming_sheet_mesh(s);
+  } catch (const std::invalid_argument& e) {
+    return {"sheet", "", std::string("cannot mesh the sheet: ") + e.what()};
+  }
+  const double limit = model::ShellModelOptions{}.max_thickness_over_length;
+  const mesh::MeshQuality q = mesh::mesh_quality(m, s.thickness);
+  if (!(q.max_thickness_over_length > limit)) return {};
+  using io::format_number;
+  return {"sheet.thickness", format_number(s.thickness),
+          "over the shortest element edge, " + format_number(q.min_edge) + " mm (sheet.length = " + format_number(s.length) +
+              " / sheet.elements = " + std::to_string(s.elements) + (s.grading != 1.0 ? ", sheet.grading = " + format_number(s.grading) : "") +
+              "), t/l = " + format_number(std::round(q.max_thickness_over_length * 1000.0) / 1000.0) + " exceeds the shell's limit " +
+              format_number(limit) + ": fewer elements or a thinner sheet"};
+}
+
 }  // namespace
+
+mesh::Mesh forming_sheet_mesh(const FormingScene& s) {
+  mesh::SquareSheetOptions so;
+  so.length_x = so.length_y = s.length;
+  so.nx = so.ny = s.elements;
+  so.half = s.half;
+  so.grading_x = so.grading_y = s.grading;
+  return mesh::square_sheet(so);
+}
 
 bool is_forming_kind(const std::string& kind) { return kind == "indent" || kind == "indent_line" || kind == "line"; }
 
 InputViolation forming_scene_error(const FormingScene& s) {
   if (s.half && s.elements % 2 != 0)
     return {"sheet.elements", std::to_string(s.elements), "a half model needs an even number of elements across"};
+  if (const InputViolation v = thickness_violation(s)) return v;
   // The tool must start outside the sheet and reach it.
   const double half_length = 0.5 * s.length;
   auto over_sheet = [&](const Eigen::Vector3d& tip) { return std::abs(tip.x()) < half_length && std::abs(tip.y()) < half_length; };

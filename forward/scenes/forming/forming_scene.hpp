@@ -6,6 +6,7 @@
 // thesis's (schema: docs/file-formats.md). The run is forming_run.hpp.
 #include "forward/contact/shell_contact.hpp"
 #include "forward/material/material_card.hpp"
+#include "forward/mesh/mesh.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -70,6 +71,11 @@ bool is_forming_kind(const std::string& kind);
 // half model's even element count; a tool path ("path": [[path]] or the kind's default, or
 // "tool.gcode") that starts outside the sheet and goes below its top surface over it. None: an
 // empty violation.
+// Also the sheet's thickness over its shortest element edge against the shell's limit
+// (model::ShellModelOptions: t/l <= 3), on "sheet.thickness" with the mesh keys in the message.
 InputViolation forming_scene_error(const FormingScene& scene);
+// The sheet's mesh (sheet.length, elements, half, grading); std::invalid_argument on
+// meaningless values.
+mesh::Mesh forming_sheet_mesh(const FormingScene& scene);
 
 }  // namespace spifit::scene

@@ -325,6 +325,22 @@ TEST(Gcode, MalformedInput) {
   EXPECT_NE(none.message().find("no moves"), std::string::npos);
 }
 
+// X1e12 was reported as an unsupported word 'E' (the number ended at the 'e'); a number too
+// long for a double as merely malformed.
+TEST(Gcode, ExponentsAndHugeNumbersNameTheWord) {
+  const InputError e = parse_error("G01 F600\nG01 X1e12 Y0\n");
+  EXPECT_EQ(e.key(), "line 2");
+  EXPECT_EQ(e.value(), "X1e12");
+  EXPECT_EQ(std::string(e.what()).rfind("prog.nc: line 2 = X1e12: malformed number: G-code numbers have no exponent", 0), 0u) << e.what();
+  EXPECT_EQ(parse_error("G01 F600\nG01 Z-2.5E-3\n").value(), "Z-2.5E-3");
+  EXPECT_EQ(parse_error("G01 F600\nG01 X1e+5\n").value(), "X1e+5");
+  const InputError huge = parse_error("G01 F600\nG01 X1" + std::string(400, '0') + "\n");
+  EXPECT_EQ(huge.key(), "line 2");
+  EXPECT_EQ(huge.message(), "number out of range");
+  // A separate E word is still an unsupported word.
+  EXPECT_EQ(parse_error("G01 F600\nG01 X1 E5\n").value(), "E5");
+}
+
 TEST(Gcode, RejectsMeaninglessOptions) {
   GcodeOptions o;
   o.arc_tolerance = 0.0;
