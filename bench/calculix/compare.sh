@@ -12,8 +12,8 @@ root="$(cd "$here/../.." && pwd)"
 usage() {
   cat <<EOF
 Usage: bench/calculix/compare.sh [options]
-  --smoke                 coarse meshes and 2 mm of travel (under a minute): spifit 40 (half, 800
-                          shells), CalculiX 16 x 16 (256 S4), depths 0.5, 1, 1.5, 2
+  --smoke                 coarse meshes and 2 mm of travel (about 20 s): spifit 60 (half model,
+                          1 800 shells), CalculiX 24 x 24 graded (576 S4), depths 0.5, 1, 1.5, 2
   --spifit-elements N     spifit [sheet] elements across the full side (default 100)
   --spifit-full           full spifit model (default: half model, y >= 0: N x N/2 shells;
                           the default 100 gives 5 000 shells)
@@ -22,7 +22,10 @@ Usage: bench/calculix/compare.sh [options]
   --ccx-grading G         CalculiX mesh grading, edge / centre element size (default 8:
                           1.33 mm at the centre, 10.6 mm at the edge for 40 elements)
   --contact TYPE          CalculiX contact: surface (SURFACE TO SURFACE, default) or node
-                          (NODE TO SURFACE; see README: fails to converge on fine centres)
+                          (NODE TO SURFACE: a penalty spring at each slave node)
+  --ccx-slave S           CalculiX slave surface: faces (the sheet's SPOS faces, default; contact on
+                          the top face, tool sphere R) or nodes (mid-surface nodes, sphere R + t/2;
+                          needs --contact node)
   --depth D               tool travel from first touch [mm] (default 5)
   --depths LIST           depths of the table, comma-separated (default 0.5,1,2,3,4,5)
   --penalty K             contact penalty [N/mm^3], both codes (default 1000)
@@ -41,6 +44,7 @@ sp_grading=1
 cx_elements=40
 cx_grading=8
 contact=surface
+slave=faces
 depth=5
 depths=""
 penalty=1000
@@ -56,6 +60,7 @@ while [ $# -gt 0 ]; do
     --ccx-elements) cx_elements="$2"; shift ;;
     --ccx-grading) cx_grading="$2"; shift ;;
     --contact) contact="$2"; shift ;;
+    --ccx-slave) slave="$2"; shift ;;
     --depth) depth="$2"; shift ;;
     --depths) depths="$2"; shift ;;
     --penalty) penalty="$2"; shift ;;
@@ -69,8 +74,8 @@ while [ $# -gt 0 ]; do
   shift
 done
 if [ "$smoke" = 1 ]; then
-  sp_elements=40
-  cx_elements=16
+  sp_elements=60
+  cx_elements=24
   depth=2
   [ -n "$depths" ] || depths="0.5,1,1.5,2"
 fi
@@ -100,7 +105,7 @@ awk -v el="$sp_elements" -v half="$sp_half" -v gr="$sp_grading" -v d="$depth" -v
 
 # --- CalculiX deck
 python3 "$here/make_deck.py" --elements "$cx_elements" --grading "$cx_grading" --depth "$depth" \
-  --penalty "$penalty" --contact-type "$contact_type" -o "$out/ccx/job.inp" 2> "$out/ccx/make_deck.log"
+  --penalty "$penalty" --contact-type "$contact_type" --slave "$slave" -o "$out/ccx/job.inp" 2> "$out/ccx/make_deck.log"
 cat "$out/ccx/make_deck.log"
 
 now() { date +%s.%N; }
@@ -127,7 +132,7 @@ sp_count=$(python3 -c "import json; print(json.load(open('$out/spifit/summary.js
 sp_desc="$sp_elements x $sp_elements"
 [ "$sp_half" = true ] && sp_desc="$sp_elements x $((sp_elements / 2)), half model"
 [ "$sp_grading" != 1 ] && sp_desc="$sp_desc, grading $sp_grading"
-cx_desc="$cx_elements x $cx_elements, full model, $contact_type"
+cx_desc="$cx_elements x $cx_elements, full model, $contact_type, slave $slave"
 [ "$cx_grading" != 1 ] && cx_desc="$cx_desc, grading $cx_grading"
 
 echo

@@ -15,11 +15,15 @@ sphere of radius R along -z, frictionless penalty contact, von Mises + Swift pla
   = the spifit penalty in N/mm^3); slave = the sheet faces around the centre, master = the
   sphere's outer faces.
 
-Contact offset: spifit's tool touches the tool-side surface (mid-surface + t/2). ccx's
-node-to-surface contact on an S4 slave surface acts at the shell's mid-surface nodes (checked
-with --check-offset, see README.md), so by default the sphere is given the radius R + t/2 with
-the same centre: a sphere of radius R touching the top surface is a sphere of radius R + t/2
-touching the mid-surface (exact for a shell of constant thickness). --offset none uses R.
+Contact offset: spifit's tool touches the tool-side surface, the mid-surface + t/2. Measured
+with ccx 2.20 (README.md, "Contact offset"; --gap and --centre-print reproduce the check):
+- slave = the sheet's SPOS faces (default): contact acts on the expanded shell's top face, the
+  mid-surface + t/2, with NODE TO SURFACE and SURFACE TO SURFACE alike: no offset needed;
+- slave = the sheet's nodes (--slave nodes): contact acts at the mid-surface nodes.
+--offset auto (default) therefore meshes the sphere with radius R (faces) or R + t/2 (nodes)
+around spifit's tool centre: a sphere of radius R touching the mid-surface + t/2 is a sphere of
+radius R + t/2 touching the mid-surface (offset surfaces of a sphere are spheres; exact while
+the thickness is t). --offset none meshes radius R in both cases.
 
 The depth is the tool travel from first touch (tip on the top surface at depth 0), as in
 spifit's path z. Standard library only (Python >= 3.8; the card is read with tomllib on
@@ -141,8 +145,11 @@ def write_deck(a, out):
     L, t, R, N = a.length, a.thickness, a.radius, a.elements
     if N < 2 or N % 2:
         sys.exit("make_deck.py: --elements must be even (a node at the centre)")
-    Rs = R + (t / 2 if a.offset == "half-thickness" else 0.0)
-    zc = t / 2 + R  # tool centre with the tip on the top surface (spifit's depth 0)
+    if a.offset == "auto":
+        Rs = R if a.slave == "faces" else R + t / 2
+    else:
+        Rs = R
+    zc = t / 2 + R + a.gap  # tool centre: tip on the top surface (spifit's depth 0) + the gap
     w = []
     w.append("** Centre indent of the line-test sheet: written by bench/calculix/make_deck.py")
     w.append("** sheet %g x %g mm, t = %g mm, %d x %d S4 (mid-surface z = 0, grading %g), clamped edges"
@@ -171,6 +178,8 @@ def write_deck(a, out):
     nelem = N * N
     # clamped edges
     edge = [nid(i, j) for j in range(N + 1) for i in range(N + 1) if i in (0, N) or j in (0, N)]
+    w.append("*NSET, NSET=NCENTRE")
+    w.append("%d" % nid(N // 2, N // 2))
     w.append("*NSET, NSET=EDGE")
     for k in range(0, len(edge), 8):
         w.append(", ".join(str(v) for v in edge[k:k + 8]) + ",")
@@ -232,15 +241,19 @@ def write_deck(a, out):
     w.append("NREF, 1, 2")
     w.append("NROT, 1, 3")
     # --- step
-    inc0 = min(1.0, a.first_increment / a.depth)
-    incmax = min(1.0, a.max_increment / a.depth)
+    travel = a.depth + a.gap
+    inc0 = min(1.0, a.first_increment / travel)
+    incmax = min(1.0, a.max_increment / travel)
     w.append("*STEP, NLGEOM, INC=%d" % a.max_increments)
     w.append("*STATIC")
     w.append("%s, 1., %s, %s" % (fmt(inc0), fmt(min(inc0, 1e-6)), fmt(incmax)))
     w.append("*BOUNDARY")
-    w.append("NREF, 3, 3, %s" % fmt(-a.depth))
+    w.append("NREF, 3, 3, %s" % fmt(-travel))
     w.append("*NODE PRINT, NSET=NREF")
     w.append("U, RF")
+    if a.centre_print:
+        w.append("*NODE PRINT, NSET=NCENTRE")
+        w.append("U")
     if a.frd:
         w.append("*NODE FILE")
         w.append("U")
@@ -261,12 +274,17 @@ def main():
     p.add_argument("--thickness", type=float, default=1.2, help="sheet thickness [mm]")
     p.add_argument("--radius", type=float, default=5.0, help="tool radius [mm]")
     p.add_argument("--depth", type=float, default=5.0, help="tool travel from first touch [mm]")
+    p.add_argument("--gap", type=float, default=0.0,
+                   help="start the tool this far above the top surface (a check of where contact begins; "
+                        "the printed U3 then includes the gap)")
+    p.add_argument("--centre-print", action="store_true", help="also print U of the sheet's centre node")
     p.add_argument("--penalty", type=float, default=1000.0, help="contact penalty [N/mm^3]")
     p.add_argument("--contact-type", choices=["SURFACE TO SURFACE", "NODE TO SURFACE"], default="SURFACE TO SURFACE",
                    help="ccx contact formulation (face-to-face penalty, or node-to-face springs)")
     p.add_argument("--tension", type=float, default=1e-3, help="ccx tension at large clearance [MPa] (small)")
-    p.add_argument("--offset", choices=["half-thickness", "none"], default="half-thickness",
-                   help="contact sphere radius R + t/2 (ccx's contact acts on the mid-surface) or R")
+    p.add_argument("--offset", choices=["auto", "none"], default="auto",
+                   help="auto: sphere radius R for face slaves (ccx's contact acts on the top face), "
+                        "R + t/2 for node slaves (it acts at the mid-surface nodes); none: R")
     p.add_argument("--slave", choices=["faces", "nodes"], default="faces",
                    help="slave surface: the sheet's element faces (--slave-face) or its mid-surface nodes")
     p.add_argument("--slave-face", default="SPOS", help="face label of the sheet's slave faces")
@@ -279,6 +297,8 @@ def main():
     p.add_argument("--max-increments", type=int, default=1000, help="*STEP INC")
     p.add_argument("--frd", action="store_true", help="also write displacements to the .frd file")
     a = p.parse_args()
+    if a.slave == "nodes" and a.contact_type != "NODE TO SURFACE":
+        p.error("--slave nodes needs --contact-type 'NODE TO SURFACE' (ccx: a face-to-face slave must be faces)")
     if a.output == "-":
         ne, nt, ns = write_deck(a, sys.stdout)
     else:
