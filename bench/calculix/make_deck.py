@@ -11,9 +11,9 @@ sphere of radius R along -z, frictionless penalty contact, von Mises + Swift pla
 - Tool: the lower hemisphere of a sphere, one layer of C3D8 elements (a cube-sphere mesh, no
   pole), made a *RIGID BODY around a reference node at the centre; the reference node is moved
   by -depth in z and its reaction force is printed (*NODE PRINT RF) at every increment.
-- Contact: *CONTACT PAIR, TYPE=NODE TO SURFACE (penalty, linear pressure-overclosure, slope
-  = the spifit penalty in N/mm^3); slave = the sheet faces around the centre, master = the
-  sphere's outer faces.
+- Contact: *CONTACT PAIR, TYPE=SURFACE TO SURFACE (default) or NODE TO SURFACE (penalty,
+  linear pressure-overclosure, slope = the spifit penalty in N/mm^3); slave = the sheet's SPOS
+  faces (or nodes) around the centre, master = the sphere's outer faces.
 
 Contact offset: spifit's tool touches the tool-side surface, the mid-surface + t/2. Measured
 with ccx 2.20 (README.md, "Contact offset"; --gap and --centre-print reproduce the check):
