@@ -99,6 +99,7 @@ bool SparseMatrix::is_symmetric(double tol) const {
   for (int r = 0; r < p.rows; ++r) {
     for (long k = p.row_ptr[r]; k < p.row_ptr[r + 1]; ++k) {
       const long t = has_mirror ? p.mirror[static_cast<std::size_t>(k)] : p.find(static_cast<int>(p.cols[k]), r);
+      if (t >= 0 && t < k) continue;  // the pair was compared from its other entry
       const double other = t >= 0 ? values_[t] : 0.0;
       if (std::abs(values_[k] - other) > tol * scale) return false;
     }
