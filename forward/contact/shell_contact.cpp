@@ -185,6 +185,15 @@ std::string ShellContact::resolution_warning(double point_depth, double surface_
   return buf;
 }
 
+std::string ShellContact::penetration_warning(double depth, double thickness, double penalty) {
+  if (!(depth > kPenetrationWarningFraction * thickness)) return {};
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "the tool penetrated the sheet by up to %.3g mm (%.0f %% of its thickness %.3g mm) with [contact] "
+                "penalty = %.3g N/mm^3: shapes come out that much too shallow; raise the penalty", depth, 100.0 * depth / thickness,
+                thickness, penalty);
+  return buf;
+}
+
 ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options, int tools)
     : options_(options), mesh_(&mesh), tools_(tools) {
   if (tools < 1) throw std::invalid_argument("contact: the number of tools must be >= 1");

@@ -4,7 +4,8 @@
 
 namespace spifit::scene {
 
-void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, int contact_points) {
+void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, const contact::ContactOptions& contact,
+                         double thickness) {
   run = std::move(outcome);
   status = run.status;
   message = run.message;
@@ -12,8 +13,10 @@ void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const 
   force = force_log.history();
   energies = energy_log.table();
   final_energies = energy_log.last();
-  const std::string w = contact::ShellContact::resolution_warning(force.max_penetration(), force.max_surface_penetration(), contact_points);
-  if (!w.empty()) warnings.push_back(w);
+  for (const std::string& w :
+       {contact::ShellContact::resolution_warning(force.max_penetration(), force.max_surface_penetration(), contact.points),
+        contact::ShellContact::penetration_warning(force.max_penetration(), thickness, contact.penalty)})
+    if (!w.empty()) warnings.push_back(w);
 }
 
 }  // namespace spifit::scene

@@ -2,6 +2,7 @@
 // What the typed result of every FE forming scene holds (forming_result.hpp, cone_result.hpp):
 // the skeleton's outcome, the tool force history, the energy account after every increment and
 // at the end.
+#include "forward/contact/shell_contact.hpp"
 #include "forward/io/series.hpp"
 #include "forward/model/model_energies.hpp"
 #include "forward/scenes/common/energy_log.hpp"
@@ -19,9 +20,11 @@ class FeSceneResult : public SceneResult {
   io::Series energies;
   model::ModelEnergies final_energies;
 
-  // After the run: its outcome (status, message, wall time), the force and energy logs, and a
-  // warning when the tool sank deeper into the tool-side surface than its contact points felt.
-  void take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, int contact_points);
+  // After the run: its outcome (status, message, wall time), the force and energy logs, and
+  // warnings when the tool sank deeper into the tool-side surface than its contact points felt
+  // or deeper into the sheet than the penalty should let it (ShellContact's warnings).
+  void take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, const contact::ContactOptions& contact,
+            double thickness);
 };
 
 }  // namespace spifit::scene

@@ -173,7 +173,7 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   r.name = scene.name;
   r.elements = run.model().num_elements();
   r.contours_total = static_cast<int>(track.contours().size());
-  r.take(run.run(r.inputs), force, energy, scene.contact.points);
+  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness);
   for (const ForceSample& s : polar_samples(r.force))
     for (int i = 0; i < 3; ++i)
       if (std::abs(s.polar(i)) > std::abs(r.peak_polar(i))) r.peak_polar(i) = s.polar(i);

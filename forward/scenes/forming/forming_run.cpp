@@ -7,7 +7,11 @@
 #include "forward/scenes/forming/forming_path.hpp"
 #include "forward/scenes/forming/path_section_log.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <numbers>
+#include <string>
 
 namespace spifit::scene {
 namespace {
@@ -54,6 +58,28 @@ FeRunSetup forming_setup(const FormingScene& s) {
   f.output = tool_output_options(s);
   f.progress_every_increment = true;
   return f;
+}
+
+// A warning (empty: none) when a waypoint of the tool centre at or below the sheet's top
+// (tool tip at z <= 0) lies outside the square sheet (|x| or |y| beyond half its side, where the
+// edges are clamped): there the tool presses on the clamp, not the part.
+std::string path_edge_warning(const toolpath::ToolPath& path, const FormingScene& s) {
+  const double length = s.length, top = 0.5 * s.thickness + s.radius;  // centre z with the tip on the top surface
+  double worst = 0.0;
+  Eigen::Vector3d where = Eigen::Vector3d::Zero();
+  for (const toolpath::Waypoint& w : path.waypoints()) {
+    if (w.position.z() > top + 1e-9) continue;  // in the air
+    const double past = std::max(std::abs(w.position.x()), std::abs(w.position.y())) - 0.5 * length;
+    if (past > worst) {
+      worst = past;
+      where = w.position;
+    }
+  }
+  if (worst <= 0.0) return {};
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "the tool path runs %.3g mm past the clamped sheet edge (tool centre at x = %.4g, y = %.4g mm; "
+                "the sheet spans +-%.4g mm): forces there are the clamp's, not the part's", worst, where.x(), where.y(), 0.5 * length);
+  return buf;
 }
 
 ForceLogFormat force_format(const FormingScene& s) {
@@ -109,7 +135,8 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   r.feed = scene.feed;
   r.half = scene.half;
   r.warnings = run.model().warnings();
-  r.take(run.run(r.inputs), force, energy, scene.contact.points);
+  if (const std::string w = path_edge_warning(run.setup().tool_path, scene); !w.empty()) r.warnings.push_back(w);
+  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness);
   r.sections = sections.sections();
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;

@@ -126,6 +126,31 @@ TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
   EXPECT_NE(spin.find("rev/min"), std::string::npos) << spin;
 }
 
+// Plausibility warnings: a penalty so soft that the tool sinks into the sheet (K_p = 10 on the
+// 0.3 mm indent: about 0.8 mm), and a path that presses beyond the clamped edge. The bundled
+// indent has neither.
+TEST(FormingScene, WarnsOfDeepPenetrationAndOfAPathPastTheEdge) {
+  const FormingScene base = read_forming_scene(src("experiments/aa3003o/scenes/indent.toml"));
+  auto warnings_of = [](const FormingScene& s, const std::string& name) {
+    const FormingResult r = run_forming_scene(s);
+    EXPECT_TRUE(r.ok()) << name << ": " << r.message;
+    std::string all;
+    for (const std::string& w : r.warnings) all += w + "\n";
+    return all;
+  };
+  EXPECT_EQ(warnings_of(base, "bundled"), "");
+  FormingScene soft = base;
+  soft.contact.penalty = 10.0;
+  const std::string w = warnings_of(soft, "soft");
+  EXPECT_NE(w.find("penetrated the sheet"), std::string::npos) << w;
+  EXPECT_NE(w.find("raise the penalty"), std::string::npos) << w;
+  FormingScene past = base;  // A -> B (2 mm down), back up to the top and along it to x = 6 (the sheet spans +-5 mm)
+  past.path.push_back({"C", Eigen::Vector3d(0.0, 0.0, 0.0)});
+  past.path.push_back({"D", Eigen::Vector3d(6.0, 0.0, 0.0)});
+  const std::string e = warnings_of(past, "past");
+  EXPECT_NE(e.find("1 mm past the clamped sheet edge"), std::string::npos) << e;
+}
+
 // [solver] divergence_after and estimate_next_correction reach the forming scene (the
 // solver's 3 and off when absent) and an out-of-range value names the key.
 TEST(FormingScene, ReaderTakesTheSolverKeysTheConeHas) {
