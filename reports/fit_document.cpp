@@ -77,7 +77,13 @@ void add_summary(Document& d, const FitReportContent& c) {
   row("algorithm", rec.algorithm.empty() ? "n/a" : rec.algorithm);
   row("termination", rec.termination.empty() ? "n/a" : rec.termination);
   if (rec.seed && !is_ceres(rec.algorithm)) row("seed", fmt(*rec.seed, 12));
-  if (rec.usable) row("result usable", *rec.usable ? "yes" : "NO", *rec.usable ? CellStyle::good : CellStyle::bad);
+  // A usable result whose experiments conflict is amber: the card fits none of them well.
+  if (rec.usable && !*rec.usable) row("result usable", "NO", CellStyle::bad);
+  else if (rec.usable && !rec.conflicts.empty())
+    row("result usable", "yes, with " + std::to_string(rec.conflicts.size()) + (rec.conflicts.size() == 1 ? " conflict" : " conflicts") +
+                             " between experiments (see the warnings)",
+        CellStyle::warn);
+  else if (rec.usable) row("result usable", "yes", CellStyle::good);
   row("iterations", fmt(number(rec.iterations), 10));
   row("forward runs", fmt(number(rec.forward_runs), 12));
   row("wall time", std::isfinite(rec.wall_seconds) ? fmt(rec.wall_seconds, 3) + " s" : "n/a");

@@ -1,5 +1,6 @@
 // The fit report's verdicts on hand-made records (docs/reports.md "Rules for verdicts and
 // findings"): noise and range conditioning, the runs test, bounds, correlations, failures.
+#include "reports/fit_document.hpp"
 #include "reports/fit_verdict.hpp"
 
 #include <gtest/gtest.h>
@@ -106,3 +107,33 @@ TEST(FitVerdict, FitLevelFindings) {
 }
 
 }  // namespace
+
+namespace {
+
+// The summary table's "result usable" row of a hand-made record.
+spifit::reports::Cell usable_cell(const FitRecord& r) {
+  FitReportContent c;
+  c.record = r;
+  const Document d = fit_report_document(c);
+  for (const auto& b : d.blocks)
+    if (b.kind == Block::Kind::table)
+      for (const auto& row : b.table.rows)
+        if (row.size() == 2 && row[0].text == "result usable") return row[1];
+  ADD_FAILURE() << "no result usable row";
+  return {};
+}
+
+}  // namespace
+
+// A conflict between experiments makes a usable result amber, not green; a failed one is red.
+TEST(FitReportSummary, AConflictMakesAUsableResultAmber) {
+  FitRecord r;
+  r.usable = true;
+  EXPECT_EQ(usable_cell(r).style, CellStyle::good);
+  EXPECT_EQ(usable_cell(r).text, "yes");
+  r.conflicts = {"a and b disagree on hill.N"};
+  EXPECT_EQ(usable_cell(r).style, CellStyle::warn);
+  EXPECT_EQ(usable_cell(r).text, "yes, with 1 conflict between experiments (see the warnings)");
+  r.usable = false;
+  EXPECT_EQ(usable_cell(r).style, CellStyle::bad);
+}
