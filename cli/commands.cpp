@@ -7,6 +7,7 @@
 #include "forward/scenes/input_reference.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "reports/card_export.hpp"
+#include "reports/run_report.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -116,6 +117,16 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
     if (g.verbose) control.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "  %s\n", e.text.c_str()); };
     const auto result = scene->run(scene::RunFiles(dir), control);
+    // FE runs: report.md and report.html with plots, of a failed run too (what it did so far).
+    if (reports::is_fe_run_directory(dir.path())) {
+      try {
+        const auto report = reports::render_run_report(dir.path());
+        dir.record();  // report.md, report.html, plots/ in the manifest
+        for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
+      } catch (const std::exception& e) {
+        std::cerr << "spifit: warning: no run report: " << e.what() << "\n";
+      }
+    }
     if (!result->ok()) {
       std::cerr << "spifit: " << scene->name() << " failed: " << result->message << "\n";
       exit_code = 1;

@@ -14,6 +14,7 @@
 #include "inverse/synthetic.hpp"
 #include "reports/card_export.hpp"
 #include "reports/fit_report.hpp"
+#include "reports/run_report.hpp"
 #include "reports/sweep_plots.hpp"
 
 #include <cstdio>
@@ -197,8 +198,8 @@ namespace spifit::cli {
 void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string dir; bool no_plots = false; };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("report", "Re-render report.md, report.html and plots of a fit output directory");
-  cmd->add_option("DIR", o->dir, "output directory of spifit fit")->required();
+  auto* cmd = app.add_subcommand("report", "Re-render report.md, report.html and plots of a fit output directory or of an FE run's (also a partial one)");
+  cmd->add_option("DIR", o->dir, "output directory of spifit fit or of spifit run (indent, indent_line, line, cone)")->required();
   cmd->add_flag("--no-plots", o->no_plots, "skip the gnuplot plots");
   cmd->callback([o, &g, &exit_code] {
     reports::ReportOptions ro;
@@ -206,6 +207,14 @@ void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     // Opened before rendering: what is there and not in its manifest stays out of it.
     std::optional<io::OutputDirectory> dir;
     if (std::filesystem::is_directory(o->dir)) dir = io::OutputDirectory::existing(o->dir);
+    if (!std::filesystem::exists(std::filesystem::path(o->dir) / "fit.json") && reports::is_fe_run_directory(o->dir)) {
+      const auto r = reports::render_run_report(o->dir, ro);
+      if (dir) dir->record();
+      for (const auto& w : r.warnings) std::cerr << "spifit: warning: " << w << "\n";
+      if (!g.quiet) std::cout << "wrote " << r.markdown.string() << ", " << r.html.string() << " and " << r.plots.size() << " plots\n";
+      exit_code = 0;
+      return;
+    }
     const auto r = reports::render_fit_report(o->dir, ro);
     if (dir) dir->record();  // plots/ when the fit had none
     for (const auto& w : r.warnings) std::cerr << "spifit: warning: " << w << "\n";

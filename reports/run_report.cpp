@@ -1,0 +1,312 @@
+// Assembles the report of an FE run: reads summary.json and the CSV files the run wrote,
+// renders the plots, builds the document and writes it as Markdown and HTML.
+#include "reports/run_report.hpp"
+
+#include "forward/io/atomic_file.hpp"
+#include "forward/io/input_error.hpp"
+#include "forward/io/text_file.hpp"
+#include "reports/html_writer.hpp"
+#include "reports/markdown_writer.hpp"
+#include "reports/output_table.hpp"
+#include "reports/plot_session.hpp"
+#include "reports/report_document.hpp"
+#include "reports/report_format.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+namespace spifit::reports {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+constexpr const char* kFeKinds[] = {"indent", "indent_line", "line", "cone"};
+
+std::optional<json> read_summary(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_regular_file(dir / "summary.json", ec)) return std::nullopt;
+  try {
+    return json::parse(io::read_text_file((dir / "summary.json").string()));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+bool is_fe_kind(const json& s) {
+  const std::string kind = s.value("kind", "");
+  return std::any_of(std::begin(kFeKinds), std::end(kFeKinds), [&](const char* k) { return kind == k; });
+}
+
+double number_at(const json& j, const char* key, double fallback = NAN) {
+  return j.contains(key) && j[key].is_number() ? j[key].get<double>() : fallback;
+}
+
+std::string force_text(const json& j) {
+  if (!j.is_array() || j.size() != 3) return "n/a";
+  return "(" + format_fixed(j[0].get<double>(), 1) + ", " + format_fixed(j[1].get<double>(), 1) + ", " + format_fixed(j[2].get<double>(), 1) +
+         ") N";
+}
+
+// What the report shows of one run, and the plots it rendered.
+struct RunContent {
+  json summary;
+  OutputTable force, energies, contours, cone_sections;
+  std::vector<std::pair<std::string, OutputTable>> sections;  // forming: path point, section
+  std::vector<std::pair<std::string, std::string>> figures;   // image, caption
+};
+
+// Tool travel [mm] of each force.csv row: time x feed (every FE scene writes time = travel / feed).
+std::vector<double> travel(const RunContent& c) {
+  std::vector<double> t = c.force.column("time");
+  const double feed = c.summary.contains("tool") ? number_at(c.summary["tool"], "feed", 1.0) : 1.0;
+  for (double& v : t) v *= feed;
+  return t;
+}
+
+bool any_nonzero(const std::vector<double>& v) {
+  return std::any_of(v.begin(), v.end(), [](double x) { return std::isfinite(x) && std::abs(x) > 1e-9; });
+}
+
+PlotSpec force_plot(const RunContent& c) {
+  PlotSpec p;
+  p.stem = "run_force";
+  const std::string kind = c.summary.value("kind", "");
+  std::vector<double> x = travel(c);
+  p.xlabel = "tool travel [mm]";
+  if (kind == "indent") {  // tool-tip depth below the first touch
+    const std::vector<double> z = c.force.column("tool_z");
+    const double z0 = c.summary.contains("tool") ? number_at(c.summary["tool"], "radius", 0.0) + 0.5 * number_at(c.summary["model"], "thickness", 0.0)
+                                                 : 0.0;
+    for (std::size_t i = 0; i < x.size() && i < z.size(); ++i) x[i] = z0 - z[i];
+    p.xlabel = "tool-tip depth [mm]";
+  }
+  p.title = "Tool force (by the sheet on the tool)";
+  p.ylabel = "force [N]";
+  p.key_outside = true;
+  const bool cone = kind == "cone";
+  for (const char* name : cone ? std::vector<const char*>{"Fr", "Ftheta", "Fz"} : std::vector<const char*>{"Fx", "Fy", "Fz"}) {
+    const std::vector<double> y = c.force.column(name);
+    if (y.empty() || (std::string(name) != "Fz" && !any_nonzero(y))) continue;
+    p.series.push_back({std::string(name) == "Ftheta" ? "Fθ" : name, x, y, Series::Style::line, ""});
+  }
+  return p;
+}
+
+PlotSpec contour_plot(const RunContent& c) {
+  PlotSpec p;
+  p.stem = "run_contour_means";
+  p.title = "Mean force over the central third of each contour";
+  p.xlabel = "contour (in the order run)";
+  p.ylabel = "mean force [N]";
+  p.integer_x = true;
+  p.key_outside = true;
+  std::vector<double> x;
+  for (std::size_t i = 0; i < c.contours.rows(); ++i) x.push_back(static_cast<double>(i + 1));
+  for (const char* name : {"Fr", "Ftheta", "Fz"}) {
+    const std::vector<double> y = c.contours.column(name);
+    if (!y.empty()) p.series.push_back({std::string(name) == "Ftheta" ? "Fθ" : name, x, y, Series::Style::linespoints, ""});
+  }
+  return p;
+}
+
+PlotSpec section_plot(const RunContent& c, const char* column, const std::string& label, const std::string& stem) {
+  PlotSpec p;
+  p.stem = stem;
+  p.title = "Section y = 0 (mid-surface): " + label;
+  p.xlabel = "x [mm]";
+  p.ylabel = label + " [mm]";
+  p.key_outside = true;
+  for (const auto& [point, t] : c.sections) p.series.push_back({"at " + point, t.column("x"), t.column(column), Series::Style::line, ""});
+  return p;
+}
+
+PlotSpec cone_depth_plot(const RunContent& c) {
+  PlotSpec p;
+  p.stem = "run_cone_shape";
+  p.title = "Part centre depth and thinnest wall after each contour";
+  p.xlabel = "contour (in the order run)";
+  p.ylabel = "[mm]";
+  p.integer_x = true;
+  p.key_outside = true;
+  std::vector<double> x;
+  for (std::size_t i = 0; i < c.cone_sections.rows(); ++i) x.push_back(static_cast<double>(i + 1));
+  p.series.push_back({"centre depth", x, c.cone_sections.column("centre_depth"), Series::Style::linespoints, ""});
+  p.series.push_back({"thinnest wall", x, c.cone_sections.column("min_thickness"), Series::Style::linespoints, ""});
+  return p;
+}
+
+PlotSpec energy_plot(const RunContent& c) {
+  PlotSpec p;
+  p.stem = "run_energies";
+  p.title = "Energy account";
+  p.xlabel = "tool travel [mm]";
+  p.ylabel = "energy [N mm]";
+  p.key_outside = true;
+  const std::vector<double> x = c.energies.column("travel");
+  for (const char* name : {"external_work", "elastic", "plastic", "friction_dissipation", "contact_stored", "balance_error"}) {
+    const std::vector<double> y = c.energies.column(name);
+    if (!y.empty() && any_nonzero(y)) {
+      std::string title = name;
+      std::replace(title.begin(), title.end(), '_', ' ');
+      p.series.push_back({title, x, y, Series::Style::line, ""});
+    }
+  }
+  return p;
+}
+
+PlotSpec iterations_plot(const RunContent& c) {
+  PlotSpec p;
+  p.stem = "run_iterations";
+  p.title = "Newton iterations per increment";
+  p.xlabel = "tool travel [mm]";
+  p.ylabel = "iterations";
+  p.key = false;
+  p.series.push_back({"iterations", travel(c), c.force.column("iterations"), Series::Style::points, ""});
+  return p;
+}
+
+void read_tables(const fs::path& dir, RunContent& c, std::vector<std::string>* warnings) {
+  std::string why;
+  auto optional_table = [&](const char* file, OutputTable* t) {
+    if (fs::exists(dir / file) && !read_output_table(dir / file, t, &why)) warnings->push_back(why);
+  };
+  optional_table("force.csv", &c.force);
+  optional_table("energies.csv", &c.energies);
+  optional_table("contours.csv", &c.contours);
+  optional_table("sections.csv", &c.cone_sections);
+  std::error_code ec;
+  if (c.summary.value("kind", "") == "cone" || !fs::is_directory(dir / "sections", ec)) return;
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(dir / "sections", ec))
+    if (e.path().extension() == ".csv" && e.path().stem().string().rfind("section_", 0) == 0) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  for (const fs::path& f : files) {
+    OutputTable t;
+    if (read_output_table(f, &t, &why)) c.sections.emplace_back(f.stem().string().substr(8), std::move(t));
+    else warnings->push_back(why);
+  }
+}
+
+void render_plots(const fs::path& dir, const ReportOptions& options, RunContent& c, RunReportSummary& out) {
+  if (!options.plots) return;
+  const fs::path gnuplot = find_executable(options.gnuplot);
+  if (gnuplot.empty()) {
+    out.warnings.push_back("gnuplot (" + options.gnuplot + ") not found; the report has no plots (Debian: apt-get install gnuplot-nox)");
+    return;
+  }
+  PlotSession session(gnuplot, dir / "plots");
+  auto add = [&](const PlotSpec& spec, const std::string& caption) {
+    if (spec.series.empty()) return;
+    const fs::path image = session.render(spec);
+    if (!image.empty()) c.figures.emplace_back("plots/" + image.filename().string(), caption);
+  };
+  const bool cone = c.summary.value("kind", "") == "cone";
+  if (c.force.rows() > 0) add(force_plot(c), cone ? "Tool force in polar components at the tool's angle (Fr outward, Fθ along the path)" : "Tool force");
+  if (c.contours.rows() > 0) add(contour_plot(c), "Contour means (thesis §8.3: the steady state of the forming forces)");
+  if (c.cone_sections.rows() > 0) add(cone_depth_plot(c), "Shape after each contour");
+  if (!c.sections.empty()) {
+    add(section_plot(c, "z", "z", "run_section_shape"), "Sections at the named path points: shape");
+    add(section_plot(c, "thickness", "thickness", "run_section_thickness"), "Sections at the named path points: thickness");
+  }
+  if (c.energies.rows() > 0) add(energy_plot(c), "Energy account (balance error: external work minus the stored and dissipated parts)");
+  if (c.force.has("iterations")) add(iterations_plot(c), "Newton iterations of each increment");
+  out.plots = session.images();
+  out.warnings.insert(out.warnings.end(), session.warnings().begin(), session.warnings().end());
+}
+
+Document run_document(const RunContent& c) {
+  const json& s = c.summary;
+  Document d;
+  d.title = "spifit run report: " + s.value("scene", std::string("?")) + " (" + s.value("kind", std::string("?")) + ")";
+  const std::string status = s.value("status", "?");
+  if (status == "running") {
+    d.callout(CalloutKind::note, "Status: running (or killed while running)",
+              {{{"The files hold the increments done so far; this report shows them."}}});
+  } else if (status != "ok") {
+    d.callout(CalloutKind::warning, "Status: " + status, {{{s.value("message", std::string("no message"))}}});
+  }
+  if (s.contains("warnings") && s["warnings"].is_array() && !s["warnings"].empty()) {
+    std::vector<Inline> items;
+    for (const auto& w : s["warnings"]) items.push_back({{w.get<std::string>()}});
+    d.callout(CalloutKind::warning, "Warnings", items);
+  }
+  d.heading(2, "Summary", "summary");
+  Table t;
+  t.id = "summary";
+  t.header = {"item", "value"};
+  auto row = [&](const std::string& k, const std::string& v) { t.rows.push_back({cell(k), cell(v)}); };
+  row("scene file", s.value("scene_file", std::string("n/a")));
+  if (s.contains("description")) row("description", s.value("description", std::string()));
+  row("material", s.value("material", std::string("n/a")));
+  row("status", status);
+  if (s.contains("model")) row("elements", format_significant(number_at(s["model"], "elements"), 10));
+  row("increments / Newton iterations / cut-backs", format_significant(number_at(s, "increments"), 10) + " / " +
+                                                        format_significant(number_at(s, "newton_iterations"), 10) + " / " +
+                                                        format_significant(number_at(s, "cutbacks"), 10));
+  if (s.contains("travel_reached")) row("tool travel reached", with_unit(format_significant(number_at(s, "travel_reached"), 6), "mm"));
+  if (s.contains("contours_completed"))
+    row("contours", format_significant(number_at(s, "contours_completed"), 10) + " of " + format_significant(number_at(s, "contours_total"), 10));
+  row("peak force (x, y, z)", force_text(s.value("peak_force", json())));
+  if (s.contains("peak_polar_force")) row("peak force (r, θ, z)", force_text(s["peak_polar_force"]));
+  row("final force (x, y, z)", force_text(s.value("final_force", json())));
+  const double h = s.contains("model") ? number_at(s["model"], "thickness") : NAN;
+  const double pen = number_at(s, "max_penetration");
+  row("largest penetration of the tool", with_unit(format_significant(pen, 3), "mm") +
+                                             (std::isfinite(h) && h > 0 ? " (" + format_percent(pen / h) + " of the thickness)" : ""));
+  row("wall time", with_unit(format_significant(number_at(s, "wall_seconds"), 4), "s"));
+  d.table(t);
+  if (s.contains("profile_seconds")) {
+    const json& p = s["profile_seconds"];
+    const double wall = number_at(s, "wall_seconds"), el = number_at(p, "elements", 0.0), as = number_at(p, "assembly", 0.0),
+                 li = number_at(p, "linear_solver", 0.0);
+    Table r;
+    r.id = "time";
+    r.header = {"where the time went", "seconds", "share"};
+    r.right = {false, true, true};
+    auto line = [&](const std::string& k, double v) { r.rows.push_back({cell(k), cell(format_fixed(v, 2)), cell(format_percent(v / wall))}); };
+    line("element evaluation (parallel)", el);
+    line("scatter into the tangent", as);
+    line("linear solver (factorisation and solves)", li);
+    line("the rest (contact search, outputs, predictor)", std::max(0.0, wall - el - as - li));
+    d.heading(2, "Run time", "time");
+    d.table(r);
+  }
+  if (!c.figures.empty()) d.heading(2, "Plots", "plots");
+  for (const auto& [src, caption] : c.figures) d.figure(src, caption);
+  d.para({{"Files: "}, {"force.csv", false, true}, {" (tool force per increment), "}, {"energies.csv", false, true}, {", "},
+          {"summary.json", false, true}, {" (every number above), "}, {"vtu/", false, true},
+          {" (ParaView). Re-render with "}, {"spifit report DIR", false, true}, {"."}});
+  return d;
+}
+
+}  // namespace
+
+bool is_fe_run_directory(const fs::path& dir) {
+  const auto s = read_summary(dir);
+  return s && is_fe_kind(*s);
+}
+
+RunReportSummary render_run_report(const fs::path& dir, const ReportOptions& options) {
+  const auto summary = read_summary(dir);
+  if (!summary || !is_fe_kind(*summary))
+    throw io::InputError((dir / "summary.json").string(), "", "",
+                         "no summary.json of an FE run (indent, indent_line, line, cone) here: not an output directory of `spifit run`");
+  RunReportSummary out;
+  RunContent c;
+  c.summary = *summary;
+  read_tables(dir, c, &out.warnings);
+  render_plots(dir, options, c, out);
+  const Document doc = run_document(c);
+  out.markdown = dir / "report.md";
+  out.html = dir / "report.html";
+  io::write_file_atomic(out.markdown, to_markdown(doc));
+  io::write_file_atomic(out.html, to_html(doc));
+  return out;
+}
+
+}  // namespace spifit::reports
