@@ -1,5 +1,6 @@
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
+#include "cli/progress_meter.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
@@ -10,7 +11,9 @@
 #include "reports/run_report.hpp"
 
 #include <nlohmann/json.hpp>
+#include <unistd.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -115,8 +118,22 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, scene->input_files(), g.quiet);
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
-    if (g.verbose) control.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "  %s\n", e.text.c_str()); };
+    std::shared_ptr<ProgressMeter> meter;
+    if (g.verbose) {
+      control.progress = [](const scene::ProgressEvent& e) {
+        if (!e.text.empty()) std::fprintf(stderr, "  %s\n", e.text.c_str());
+      };
+    } else if (!g.quiet) {
+      meter = std::make_shared<ProgressMeter>(::isatty(STDERR_FILENO) != 0);
+      const auto t0 = std::chrono::steady_clock::now();
+      control.progress = [meter, t0](const scene::ProgressEvent& e) {
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (const auto text = meter->update(e.fraction, elapsed)) std::fputs(text->c_str(), stderr);
+      };
+    }
     const auto result = scene->run(scene::RunFiles(dir), control);
+    if (meter)
+      if (const auto end = meter->finish()) std::fputs(end->c_str(), stderr);
     // FE runs: report.md and report.html with plots, of a failed run too (what it did so far).
     if (reports::is_fe_run_directory(dir.path())) {
       try {

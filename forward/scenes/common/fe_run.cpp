@@ -49,10 +49,13 @@ class FeRun::Stepper {
     if (periodic) last_write_ = now;
     const WriteReason reason = marked ? WriteReason::mark : periodic ? WriteReason::periodic : WriteReason::increment;
     for (auto& o : run_.observers_) o->write(reason);
-    if (s.progress_every_increment && run_.control_.progress) {
-      char buf[200];
-      std::snprintf(buf, sizeof buf, "increment %d: travel %.2f / %.2f mm, %d iterations", log.increments, travel,
-                    s.load_map.length(), ir.iterations);
+    if (run_.control_.progress) {
+      // Every increment reports its fraction of the path (a progress meter); the line of text
+      // only where the scene asks for one per increment (the cone's come per contour).
+      char buf[200] = "";
+      if (s.progress_every_increment)
+        std::snprintf(buf, sizeof buf, "increment %d: travel %.2f / %.2f mm, %d iterations", log.increments, travel, s.load_map.length(),
+                      ir.iterations);
       report(run_.control_.progress, ProgressEvent::Kind::increment, buf, fraction);
     }
     checkpoint_if_due();

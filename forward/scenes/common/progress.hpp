@@ -9,7 +9,7 @@ namespace spifit::scene {
 struct ProgressEvent {
   enum class Kind { increment, mark, checkpoint, note };
   Kind kind = Kind::note;
-  std::string text;       // one line, no newline
+  std::string text;       // one line, no newline; may be empty (an increment: the fraction only)
   double fraction = 0.0;  // of the run's path, in [0, 1]
 };
 
