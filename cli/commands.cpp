@@ -1,5 +1,6 @@
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
+#include "cli/run_signals.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
@@ -16,6 +17,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace spifit::cli {
 
@@ -115,7 +117,22 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
     if (g.verbose) control.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "  %s\n", e.text.c_str()); };
+    // SIGINT/SIGTERM end an FE run at the end of an increment, with a checkpoint to resume from;
+    // the other kinds take seconds and end as they would without spifit's handler.
+    std::optional<InterruptHandlers> handlers;
+    if (kind->resumable) {
+      handlers.emplace();
+      control.interrupt = &interrupt_signal();
+    }
     const auto result = scene->run(scene::RunFiles(dir), control);
+    handlers.reset();
+    if (result->status == scene::RunStatus::interrupted) {
+      const int sig = interrupt_signal().load();
+      std::cerr << "spifit: " << scene->name() << " " << result->message << "; resume with: spifit run " << o->scene << " --out " << o->out
+                << " --resume\n";
+      exit_code = interrupted_exit_code(sig);
+      return;
+    }
     if (!result->ok()) {
       std::cerr << "spifit: " << scene->name() << " failed: " << result->message << "\n";
       exit_code = 1;
