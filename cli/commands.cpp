@@ -1,6 +1,7 @@
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
 #include "cli/progress_meter.hpp"
+#include "cli/run_signals.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
@@ -20,6 +21,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 namespace spifit::cli {
 
@@ -101,6 +103,41 @@ void add_material_command(CLI::App& app, const GlobalOptions& g, int& exit_code)
   });
 }
 
+namespace {
+
+// What `run` prints of an FE run's progress: every line with --verbose; without it (unless
+// --quiet) the progress meter, whose last line *meter ends.
+scene::ProgressSink progress_sink(const GlobalOptions& g, std::shared_ptr<ProgressMeter>* meter) {
+  if (g.verbose) {
+    return [](const scene::ProgressEvent& e) {
+      if (!e.text.empty()) std::fprintf(stderr, "  %s\n", e.text.c_str());
+    };
+  }
+  if (g.quiet) return {};
+  auto m = std::make_shared<ProgressMeter>(::isatty(STDERR_FILENO) != 0);
+  *meter = m;
+  const auto t0 = std::chrono::steady_clock::now();
+  return [m, t0](const scene::ProgressEvent& e) {
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (const auto text = m->update(e.fraction, elapsed)) std::fputs(text->c_str(), stderr);
+  };
+}
+
+// FE runs: report.md and report.html with plots, of a failed or interrupted run too (what it
+// did so far). A report that cannot be written is a warning, never a failed run.
+void write_run_report(const io::OutputDirectory& dir) {
+  if (!reports::is_fe_run_directory(dir.path())) return;
+  try {
+    const auto report = reports::render_run_report(dir.path());
+    dir.record();  // report.md, report.html, plots/ in the manifest
+    for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
+  } catch (const std::exception& e) {
+    std::cerr << "spifit: warning: no run report: " << e.what() << "\n";
+  }
+}
+
+}  // namespace
+
 void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string scene, out; bool force = false, resume = false; };
   auto o = std::make_shared<Opts>();
@@ -119,30 +156,25 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
     std::shared_ptr<ProgressMeter> meter;
-    if (g.verbose) {
-      control.progress = [](const scene::ProgressEvent& e) {
-        if (!e.text.empty()) std::fprintf(stderr, "  %s\n", e.text.c_str());
-      };
-    } else if (!g.quiet) {
-      meter = std::make_shared<ProgressMeter>(::isatty(STDERR_FILENO) != 0);
-      const auto t0 = std::chrono::steady_clock::now();
-      control.progress = [meter, t0](const scene::ProgressEvent& e) {
-        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        if (const auto text = meter->update(e.fraction, elapsed)) std::fputs(text->c_str(), stderr);
-      };
+    control.progress = progress_sink(g, &meter);
+    // SIGINT/SIGTERM end an FE run at the end of an increment, with a checkpoint to resume from;
+    // the other kinds take seconds and end as they would without spifit's handler.
+    std::optional<InterruptHandlers> handlers;
+    if (kind->resumable) {
+      handlers.emplace();
+      control.interrupt = &interrupt_signal();
     }
     const auto result = scene->run(scene::RunFiles(dir), control);
+    handlers.reset();
     if (meter)
       if (const auto end = meter->finish()) std::fputs(end->c_str(), stderr);
-    // FE runs: report.md and report.html with plots, of a failed run too (what it did so far).
-    if (reports::is_fe_run_directory(dir.path())) {
-      try {
-        const auto report = reports::render_run_report(dir.path());
-        dir.record();  // report.md, report.html, plots/ in the manifest
-        for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
-      } catch (const std::exception& e) {
-        std::cerr << "spifit: warning: no run report: " << e.what() << "\n";
-      }
+    write_run_report(dir);
+    if (result->status == scene::RunStatus::interrupted) {
+      const int sig = interrupt_signal().load();
+      std::cerr << "spifit: " << scene->name() << " " << result->message << "; resume with: spifit run " << o->scene << " --out " << o->out
+                << " --resume\n";
+      exit_code = interrupted_exit_code(sig);
+      return;
     }
     if (!result->ok()) {
       std::cerr << "spifit: " << scene->name() << " failed: " << result->message << "\n";

@@ -1,9 +1,11 @@
 // `spifit fit` and `spifit synth`: thin wrappers over inverse/.
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
+#include "cli/run_signals.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/common/run_status.hpp"
 #include "forward/scenes/material_point/material_point_file.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/run_fit.hpp"
@@ -17,6 +19,7 @@
 #include "reports/run_report.hpp"
 #include "reports/sweep_plots.hpp"
 
+#include <atomic>
 #include <cstdio>
 
 #include <filesystem>
@@ -27,6 +30,27 @@
 #include <thread>
 
 namespace spifit::cli {
+
+namespace {
+
+// Runs f; an exception ends the watch and leaves summary.json with status "failed" and the
+// exception's message (not "running" with a heartbeat that stops) before it goes on.
+template <typename F>
+auto failed_on_error(scene::RunHeartbeat& heartbeat, RunWatch& watch, F f) {
+  try {
+    return f();
+  } catch (const std::exception& e) {
+    watch.stop();
+    nlohmann::json j = heartbeat.running();
+    for (const char* k : {"pid", "host", "heartbeat", "heartbeat_interval"}) j.erase(k);
+    j["status"] = scene::to_string(scene::RunStatus::failed);
+    j["message"] = e.what();
+    heartbeat.finish(j);
+    throw;
+  }
+}
+
+}  // namespace
 
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string file, out, algorithm; bool force = false, resume = false; unsigned seed = 42; int multistart = 0; };
@@ -56,10 +80,25 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     } else if (o->resume) {
       throw io::InputError(o->file, "experiment", "", "--resume continues fits with FE experiments (the others take seconds)");
     }
-    nlohmann::json running{{"status", "running"}, {"fit_file", o->file}};
-    dir.write_file("summary.json", running.dump(2) + "\n");
+    // The running summary with pid, host and a heartbeat; SIGINT/SIGTERM end the fit at once with
+    // status "interrupted", the FE evaluations that finished kept for --resume.
+    scene::RunHeartbeat heartbeat(scene::RunFiles(dir), {{"kind", "fit"}, {"fit", problem.name}, {"fit_file", o->file}});
+    const auto runs = problem.scene_runs;
+    auto progress = [runs] { return runs ? nlohmann::json{{"forward_runs", runs->runs()}} : nlohmann::json::object(); };
+    RunWatch watch(heartbeat, progress, [&heartbeat, runs, progress, o](int sig) {
+      nlohmann::json j = heartbeat.running();
+      for (const char* k : {"pid", "host", "heartbeat", "heartbeat_interval"}) j.erase(k);
+      j["status"] = scene::to_string(scene::RunStatus::interrupted);
+      j["progress"] = progress();
+      j["message"] = "interrupted by " + signal_name(sig) +
+                     (runs ? "; the FE evaluations that finished are kept in runs/evaluations.jsonl: resume with spifit fit " + o->file + " --out " +
+                                 o->out + " --resume"
+                           : "");
+      return j;
+    });
+    heartbeat.write();  // once the signals are handled
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const auto result = inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart});
+    const auto result = failed_on_error(heartbeat, watch, [&] { return inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart}); });
     inverse::write_fit_outputs(problem, result, dir);
     // The fitted card for production FE codes (approximations stated in each deck).
     nlohmann::json export_notes = nlohmann::json::object();
@@ -78,6 +117,8 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const auto report = reports::render_fit_report(dir.path(), {});
     dir.record();  // report.md, report.html, plots/ in the manifest
     for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
+    watch.stop();  // the final summary is this one
+    heartbeat.stop();
     nlohmann::json summary{{"status", result.usable ? "ok" : "failed"},
                            {"kind", "fit"},
                            {"fit", problem.name},
@@ -250,18 +291,37 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->callback([o, &g, &exit_code] {
     const auto spec = inverse::read_sweep_file(o->file);
     const auto dir = prepare_output(o->out, o->force, inverse::sweep_input_files(spec), g.quiet);
-    dir.write_file("summary.json", nlohmann::json{{"status", "running"}, {"kind", "sweep"}}.dump(2) + "\n");
+    // The running summary with pid, host and a heartbeat; SIGINT/SIGTERM end the sweep at once
+    // with status "interrupted" (the points that finished are in DIR/points/).
+    scene::RunHeartbeat heartbeat(scene::RunFiles(dir), {{"kind", "sweep"}, {"sweep", spec.name}, {"sweep_file", o->file}});
+    auto done = std::make_shared<std::atomic<long>>(0);
+    auto progress = [done] { return nlohmann::json{{"runs_done", done->load()}}; };
+    RunWatch watch(heartbeat, progress, [&heartbeat, progress](int sig) {
+      nlohmann::json j = heartbeat.running();
+      for (const char* k : {"pid", "host", "heartbeat", "heartbeat_interval"}) j.erase(k);
+      j["status"] = scene::to_string(scene::RunStatus::interrupted);
+      j["progress"] = progress();
+      j["message"] = "interrupted by " + signal_name(sig) + " (a sweep does not resume: run it again with --force)";
+      return j;
+    });
+    heartbeat.write();  // once the signals are handled
     inverse::SweepRunOptions ro;
     ro.threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     ro.out = &dir;
-    if (!g.quiet) ro.progress = [](const scene::ProgressEvent& e) { std::fprintf(stderr, "%s\n", e.text.c_str()); };
-    const auto r = inverse::run_sweep(spec, ro);
+    const bool quiet = g.quiet;
+    ro.progress = [done, quiet](const scene::ProgressEvent& e) {
+      ++*done;  // one event per forward run (serial sweeps)
+      if (!quiet) std::fprintf(stderr, "%s\n", e.text.c_str());
+    };
+    const auto r = failed_on_error(heartbeat, watch, [&] { return inverse::run_sweep(spec, ro); });
     dir.write_file("sweep.csv", inverse::sweep_csv(spec, r));
     if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));
     for (const auto& w : reports::render_sweep_plots(dir.path(), sweep_table(spec, r))) std::cerr << "spifit: warning: " << w << "\n";
     dir.record();  // plots/ in the manifest
     int failed = 0;
     for (const auto& p : r.points) failed += p.ok ? 0 : 1;
+    watch.stop();  // the final summary is this one
+    heartbeat.stop();
     dir.write_file("summary.json", nlohmann::json{{"status", "ok"}, {"kind", "sweep"}, {"sweep", spec.name}, {"points", r.points.size()},
                                                   {"failed_points", failed}, {"wall_seconds", r.wall_seconds}}
                                        .dump(2) + "\n");

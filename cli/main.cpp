@@ -1,5 +1,6 @@
 // spifit: identification of sheet-metal material parameters for SPIF.
-// Exit codes: 0 ok, 1 failure (numerical), 2 usage or input error (one line on stderr).
+// Exit codes: 0 ok, 1 failure (numerical), 2 usage or input error (one line on stderr); a run
+// ended by SIGINT or SIGTERM: 128 + the signal (130, 143; docs/file-formats.md, "Run status").
 #include "cli/commands.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
   spifit::cli::add_fit_command(app, g, exit_code);
   spifit::cli::add_sweep_command(app, g, exit_code);
   spifit::cli::add_report_command(app, g, exit_code);
+  spifit::cli::add_status_command(app, g, exit_code);
   spifit::cli::add_scan_command(app, g, exit_code);
   spifit::cli::add_inputs_command(app, g, exit_code);
   std::string command_line = "spifit";

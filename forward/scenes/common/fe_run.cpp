@@ -4,6 +4,7 @@
 #include "forward/scenes/common/run_checkpoint.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 
 namespace spifit::scene {
@@ -21,11 +22,13 @@ void report(const ProgressSink& sink, ProgressEvent::Kind kind, std::string text
 // the periodic writes and the stop options. The callback of the Newton solver.
 class FeRun::Stepper {
  public:
-  Stepper(FeRun& run, const RunInputs& inputs, Clock::time_point t0) : run_(run), inputs_(inputs), t0_(t0) {}
+  Stepper(FeRun& run, const RunInputs& inputs, Clock::time_point t0, RunHeartbeat& heartbeat)
+      : run_(run), inputs_(inputs), t0_(t0), heartbeat_(heartbeat) {}
 
   RunLog log;
   CheckpointRecord checkpoints;
   bool stopped = false, timed_out = false;
+  int interrupted = 0;  // the signal that ended the run
 
   double wall() const { return std::chrono::duration<double>(Clock::now() - t0_).count(); }
   void start_from(const RunLog& restored) {
@@ -58,8 +61,21 @@ class FeRun::Stepper {
                       ir.iterations);
       report(run_.control_.progress, ProgressEvent::Kind::increment, buf, fraction);
     }
-    checkpoint_if_due();
     const RunControl& c = run_.control_;
+    const bool at_end = run_.model_->load_factor() >= 1.0 - 1e-12;
+    const int sig = c.interrupt && !at_end ? c.interrupt->load() : 0;
+    checkpoint_if_due(sig != 0);
+    if (heartbeat_.due())
+      heartbeat_.beat({{"increments", log.increments},
+                       {"marks_reached", log.marks_reached},
+                       {"marks", s.marks.size()},
+                       {"travel_reached", travel},
+                       {"travel", s.load_map.length()},
+                       {"wall_seconds", v.wall_seconds}});
+    if (sig != 0) {
+      interrupted = sig;
+      return false;
+    }
     if ((c.stop_after_marks > 0 && log.marks_reached >= c.stop_after_marks) ||
         (c.stop_after_increments > 0 && log.increments >= c.stop_after_increments)) {
       stopped = true;
@@ -76,6 +92,7 @@ class FeRun::Stepper {
   FeRun& run_;
   const RunInputs& inputs_;
   Clock::time_point t0_;
+  RunHeartbeat& heartbeat_;
   Clock::time_point last_write_ = Clock::now();
   int last_checkpoint_marks_ = 0, last_checkpoint_increments_ = 0;
 
@@ -111,12 +128,13 @@ class FeRun::Stepper {
     return any;
   }
 
-  void checkpoint_if_due() {
+  // now: an interrupted run's last checkpoint, due or not.
+  void checkpoint_if_due(bool now) {
     const FeOutputOptions& o = run_.setup_.output;
     if (!run_.files_.enabled()) return;
     const bool by_marks = o.checkpoint_every > 0 && log.marks_reached >= last_checkpoint_marks_ + o.checkpoint_every;
     const bool by_count = o.checkpoint_increments > 0 && log.increments >= last_checkpoint_increments_ + o.checkpoint_increments;
-    if (!by_marks && !by_count) return;
+    if (!now && !by_marks && !by_count) return;
     if (run_.model_->load_factor() >= 1.0 - 1e-12) return;  // the end of the path: nothing left to resume
     // The solver has chosen its next increment already (NewtonSolver's callback), so its state
     // is where the run goes on.
@@ -164,10 +182,9 @@ FeRunOutcome FeRun::run(const nlohmann::json& head) {
     solver_->set_state(newton);
     t0 -= std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(restored.wall_seconds));
   }
-  nlohmann::json running = head;
-  running["status"] = to_string(RunStatus::running);
-  files_.write("summary.json", running.dump(2) + "\n");
-  Stepper step(*this, inputs, t0);
+  RunHeartbeat heartbeat(files_, head, control_.heartbeat_seconds);
+  heartbeat.write();
+  Stepper step(*this, inputs, t0, heartbeat);
   step.start_from(restored);
   step.checkpoints.every_marks = setup_.output.checkpoint_every;
   step.checkpoints.every_increments = setup_.output.checkpoint_increments;
@@ -186,7 +203,14 @@ FeRunOutcome FeRun::run(const nlohmann::json& head) {
   out.mark_wall_seconds = step.log.mark_wall;
   out.resumed_at_mark = control_.resume ? restored.marks_reached : -1;
   out.checkpoints = step.checkpoints;
-  if (step.stopped) {
+  if (step.interrupted) {
+    // As a stop: the files hold every increment so far, the checkpoint the state after the last.
+    out.status = RunStatus::interrupted;
+    out.message = std::string("interrupted by ") + (step.interrupted == SIGINT ? "SIGINT" : step.interrupted == SIGTERM ? "SIGTERM" : "a signal") +
+                  " at tool travel " + std::to_string(out.travel_reached) + " mm, after " + std::to_string(step.log.increments) +
+                  " increments, " + std::to_string(step.log.marks_reached) + " marks" +
+                  (step.checkpoints.written > 0 ? "; checkpoint/state.bin holds the state after the last one" : "");
+  } else if (step.stopped) {
     // As a kill may leave it: the files hold every increment so far, no final VTU step.
     out.status = RunStatus::stopped;
     out.message = "stopped after " + std::to_string(step.log.increments) + " increments, " + std::to_string(step.log.marks_reached) +

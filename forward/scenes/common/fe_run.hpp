@@ -13,6 +13,7 @@
 #include "forward/model/tool_contact.hpp"
 #include "forward/scenes/common/load_map.hpp"
 #include "forward/scenes/common/run_files.hpp"
+#include "forward/scenes/common/run_heartbeat.hpp"
 #include "forward/scenes/common/run_observer.hpp"
 #include "forward/scenes/common/run_status.hpp"
 #include "forward/solver/dof_constraints.hpp"
@@ -21,6 +22,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <string>
@@ -73,6 +75,12 @@ struct RunControl {
   // End the run (status timed_out) once its wall time passes this many seconds, checked after
   // every increment (0: no limit).
   double time_limit_seconds = 0.0;
+  // A signal number set by a SIGINT/SIGTERM handler (0: none): the run ends at the end of the
+  // increment under way (status interrupted) after a checkpoint (when it writes files and is
+  // not at the end of its path), so that a resume continues it. Checked after every increment.
+  const std::atomic<int>* interrupt = nullptr;
+  // Seconds between heartbeats of the running summary.json (run_heartbeat.hpp).
+  double heartbeat_seconds = kHeartbeatSeconds;
 };
 
 struct CheckpointRecord {
@@ -84,7 +92,7 @@ struct CheckpointRecord {
 // What the skeleton knows of a run's end, common to every FE scene's typed result.
 struct FeRunOutcome {
   RunStatus status = RunStatus::running;
-  std::string message;  // failed: where and why; stopped: after what
+  std::string message;  // failed: where and why; stopped, interrupted: after what
   solver::NewtonCounters counters;
   double travel_reached = 0.0;
   int marks_reached = 0;
@@ -118,8 +126,9 @@ class FeRun {
   }
 
   // Runs the whole path (or resumes it). head: the summary's description of the inputs, written
-  // as DIR/summary.json with status "running" before the first increment. The final summary is
-  // the caller's to write, from its typed result.
+  // as DIR/summary.json with status "running" (and pid, host, started, heartbeat) before the
+  // first increment, its heartbeat and "progress" rewritten every RunControl::heartbeat_seconds as
+  // increments complete. The final summary is the caller's to write, from its typed result.
   FeRunOutcome run(const nlohmann::json& head);
 
  private:
