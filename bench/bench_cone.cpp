@@ -13,6 +13,7 @@
 // trade of docs/cone-scene.md, "Session 24").
 // --benchmark_repetitions=N repeats a scene N times and adds Google Benchmark's median (the
 // "_median" row) over the repetitions.
+#include "bench/bench_main.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
@@ -115,9 +116,5 @@ int main(int argc, char** argv) {
         ->Unit(benchmark::kSecond)
         ->UseRealTime();
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return spifit::bench::run_registered_benchmarks(argc, argv);
 }

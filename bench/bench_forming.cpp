@@ -7,6 +7,7 @@
 //   indent_line  peak Fz vs the same scene at 0.25 mm of travel per increment (637.72 N);
 //   line_*       none (reference_error printed as 0; half vs full: docs/contact.md).
 // The line scenes are long (minutes): select them with --benchmark_filter.
+#include "bench/bench_main.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
@@ -73,9 +74,5 @@ int main(int argc, char** argv) {
         ->Unit(benchmark::kSecond)
         ->UseRealTime();
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return spifit::bench::run_registered_benchmarks(argc, argv);
 }

@@ -7,6 +7,7 @@
 // The bundled settings themselves are compared with a tight run (1e-7 on both tests), which
 // says how far today's results are from converged. Select a scene with --benchmark_filter
 // (line_half takes about 40 s a run, so a full study is several minutes).
+#include "bench/bench_main.hpp"
 #include "bench/scene_runs.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
@@ -129,9 +130,5 @@ int main(int argc, char** argv) {
           ->Iterations(3)
           ->Unit(benchmark::kSecond)
           ->UseRealTime();
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return spifit::bench::run_registered_benchmarks(argc, argv);
 }

@@ -1,5 +1,7 @@
 #include "reports/experiment_data.hpp"
 
+#include "reports/output_table.hpp"
+
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -10,21 +12,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<std::string> split_csv_line(const std::string& line) {
-  std::vector<std::string> out(1);
-  for (char c : line) {
-    if (c == ',') out.emplace_back();
-    else if (c != '\r') out.back() += c;
-  }
-  return out;
-}
-
 double cell_value(const std::vector<std::string>& cells, int k) {
   if (k < 0) return std::numeric_limits<double>::quiet_NaN();
-  const std::string& s = cells[static_cast<std::size_t>(k)];
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  return (end == s.c_str() || *end != '\0') ? std::numeric_limits<double>::quiet_NaN() : v;
+  return csv_number(cells[static_cast<std::size_t>(k)]);
 }
 
 }  // namespace

@@ -2,12 +2,10 @@
 // plots, builds the document and writes it as Markdown and HTML.
 #include "reports/fit_report.hpp"
 
-#include "forward/io/atomic_file.hpp"
 #include "forward/io/input_error.hpp"
 #include "inverse/fit_record.hpp"
 #include "reports/fit_document.hpp"
-#include "reports/html_writer.hpp"
-#include "reports/markdown_writer.hpp"
+#include "reports/report_files.hpp"
 
 namespace spifit::reports {
 
@@ -59,11 +57,9 @@ ReportSummary render_fit_report(const fs::path& dir, const ReportOptions& option
   render_plots(dir, options, c, summary);
   c.plots_written = !summary.plots.empty();
 
-  const Document doc = fit_report_document(c);
-  summary.markdown = dir / "report.md";
-  summary.html = dir / "report.html";
-  io::write_file_atomic(summary.markdown, to_markdown(doc));
-  io::write_file_atomic(summary.html, to_html(doc));
+  const ReportFiles files = write_report_files(dir, fit_report_document(c));
+  summary.markdown = files.markdown;
+  summary.html = files.html;
   return summary;
 }
 

@@ -22,9 +22,7 @@ std::string OutputTable::unit(const std::string& name) const {
   return k < 0 ? std::string() : units[static_cast<std::size_t>(k)];
 }
 
-namespace {
-
-std::vector<std::string> split(const std::string& line) {
+std::vector<std::string> split_csv_line(const std::string& line) {
   std::vector<std::string> out(1);
   for (char c : line) {
     if (c == ',') out.emplace_back();
@@ -33,13 +31,11 @@ std::vector<std::string> split(const std::string& line) {
   return out;
 }
 
-double number(const std::string& s) {
+double csv_number(const std::string& s) {
   char* end = nullptr;
   const double v = std::strtod(s.c_str(), &end);
   return (end == s.c_str() || *end != '\0') ? std::numeric_limits<double>::quiet_NaN() : v;
 }
-
-}  // namespace
 
 bool read_output_table(const std::filesystem::path& csv, OutputTable* t, std::string* why) {
   std::ifstream f(csv);
@@ -59,7 +55,7 @@ bool read_output_table(const std::filesystem::path& csv, OutputTable* t, std::st
     return false;
   }
   *t = OutputTable{};
-  for (const std::string& cell : split(line)) {
+  for (const std::string& cell : split_csv_line(line)) {
     const auto open = cell.find(" [");
     const bool has_unit = open != std::string::npos && cell.back() == ']';
     t->names.push_back(has_unit ? cell.substr(0, open) : cell);
@@ -68,9 +64,9 @@ bool read_output_table(const std::filesystem::path& csv, OutputTable* t, std::st
   t->columns.assign(t->names.size(), {});
   while (std::getline(f, line)) {
     if (line.empty() || line[0] == '#') continue;
-    const auto cells = split(line);
+    const auto cells = split_csv_line(line);
     if (cells.size() != t->names.size()) break;  // a row cut off by a killed run
-    for (std::size_t k = 0; k < cells.size(); ++k) t->columns[k].push_back(number(cells[k]));
+    for (std::size_t k = 0; k < cells.size(); ++k) t->columns[k].push_back(csv_number(cells[k]));
   }
   return true;
 }

@@ -19,6 +19,11 @@ struct OutputTable {
   std::size_t rows() const { return columns.empty() ? 0 : columns.front().size(); }
 };
 
+// The cells of one CSV line (no quoting: spifit writes none), and a cell as a number (NaN when
+// it is not one).
+std::vector<std::string> split_csv_line(const std::string& line);
+double csv_number(const std::string& cell);
+
 // false with *why when the file is missing or has no header.
 bool read_output_table(const std::filesystem::path& csv, OutputTable* table, std::string* why);
 

@@ -2,13 +2,11 @@
 // renders the plots, builds the document and writes it as Markdown and HTML.
 #include "reports/run_report.hpp"
 
-#include "forward/io/atomic_file.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/text_file.hpp"
-#include "reports/html_writer.hpp"
-#include "reports/markdown_writer.hpp"
 #include "reports/output_table.hpp"
 #include "reports/plot_session.hpp"
+#include "reports/report_files.hpp"
 #include "reports/report_document.hpp"
 #include "reports/report_format.hpp"
 
@@ -97,21 +95,29 @@ PlotSpec force_plot(const RunContent& c) {
   return p;
 }
 
-PlotSpec contour_plot(const RunContent& c) {
+// Columns of a per-contour table (contours.csv, sections.csv) against the contour's number in
+// the order run; series titles by column.
+PlotSpec per_contour_plot(const OutputTable& t, const std::string& stem, const std::string& title, const std::string& ylabel,
+                          const std::vector<std::pair<std::string, std::string>>& columns) {
   PlotSpec p;
-  p.stem = "run_contour_means";
-  p.title = "Mean force over the central third of each contour";
+  p.stem = stem;
+  p.title = title;
   p.xlabel = "contour (in the order run)";
-  p.ylabel = "mean force [N]";
+  p.ylabel = ylabel;
   p.integer_x = true;
   p.key_outside = true;
   std::vector<double> x;
-  for (std::size_t i = 0; i < c.contours.rows(); ++i) x.push_back(static_cast<double>(i + 1));
-  for (const char* name : {"Fr", "Ftheta", "Fz"}) {
-    const std::vector<double> y = c.contours.column(name);
-    if (!y.empty()) p.series.push_back({std::string(name) == "Ftheta" ? "Fθ" : name, x, y, Series::Style::linespoints, ""});
+  for (std::size_t i = 0; i < t.rows(); ++i) x.push_back(static_cast<double>(i + 1));
+  for (const auto& [column, series] : columns) {
+    const std::vector<double> y = t.column(column);
+    if (!y.empty()) p.series.push_back({series, x, y, Series::Style::linespoints, ""});
   }
   return p;
+}
+
+PlotSpec contour_plot(const RunContent& c) {
+  return per_contour_plot(c.contours, "run_contour_means", "Mean force over the central third of each contour", "mean force [N]",
+                          {{"Fr", "Fr"}, {"Ftheta", "Fθ"}, {"Fz", "Fz"}});
 }
 
 PlotSpec section_plot(const RunContent& c, const char* column, const std::string& label, const std::string& stem) {
@@ -126,18 +132,8 @@ PlotSpec section_plot(const RunContent& c, const char* column, const std::string
 }
 
 PlotSpec cone_depth_plot(const RunContent& c) {
-  PlotSpec p;
-  p.stem = "run_cone_shape";
-  p.title = "Part centre depth and thinnest wall after each contour";
-  p.xlabel = "contour (in the order run)";
-  p.ylabel = "[mm]";
-  p.integer_x = true;
-  p.key_outside = true;
-  std::vector<double> x;
-  for (std::size_t i = 0; i < c.cone_sections.rows(); ++i) x.push_back(static_cast<double>(i + 1));
-  p.series.push_back({"centre depth", x, c.cone_sections.column("centre_depth"), Series::Style::linespoints, ""});
-  p.series.push_back({"thinnest wall", x, c.cone_sections.column("min_thickness"), Series::Style::linespoints, ""});
-  return p;
+  return per_contour_plot(c.cone_sections, "run_cone_shape", "Part centre depth and thinnest wall after each contour", "length [mm]",
+                          {{"centre_depth", "centre depth"}, {"min_thickness", "thinnest wall"}});
 }
 
 PlotSpec energy_plot(const RunContent& c) {
@@ -301,11 +297,9 @@ RunReportSummary render_run_report(const fs::path& dir, const ReportOptions& opt
   c.summary = *summary;
   read_tables(dir, c, &out.warnings);
   render_plots(dir, options, c, out);
-  const Document doc = run_document(c);
-  out.markdown = dir / "report.md";
-  out.html = dir / "report.html";
-  io::write_file_atomic(out.markdown, to_markdown(doc));
-  io::write_file_atomic(out.html, to_html(doc));
+  const ReportFiles files = write_report_files(dir, run_document(c));
+  out.markdown = files.markdown;
+  out.html = files.html;
   return out;
 }
 

@@ -3,6 +3,7 @@
 // from a directory that is no spifit output (exit 2); SIGINT and SIGTERM end an FE run at the
 // end of an increment with a checkpoint, status "interrupted" and exit code 130 / 143, and
 // `--resume` then finishes it; a fit ends at once, its evaluations kept for --resume.
+#include "forward/scenes/common/run_heartbeat.hpp"
 #include "tests/cli/cli_support.hpp"
 #include "tests/support/tiny_scenes.hpp"
 
@@ -34,13 +35,7 @@ std::string host() {
   return buf;
 }
 
-std::string iso(std::time_t t) {
-  std::tm tm{};
-  gmtime_r(&t, &tm);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &tm);
-  return buf;
-}
+std::string iso(std::time_t t) { return spifit::scene::utc_iso(t); }
 
 // DIR/summary.json, null while there is none (or it cannot be read).
 nlohmann::json summary(const fs::path& dir) {
