@@ -3,6 +3,7 @@
 #include "cli/cli_errors.hpp"
 #include "cli/run_signals.hpp"
 
+#include "forward/material/material_inputs.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/common/run_status.hpp"
@@ -17,7 +18,7 @@
 #include "reports/card_export.hpp"
 #include "reports/fit_report.hpp"
 #include "reports/run_report.hpp"
-#include "reports/sweep_plots.hpp"
+#include "reports/sweep_report.hpp"
 
 #include <atomic>
 #include <cstdio>
@@ -268,8 +269,21 @@ namespace {
 
 reports::SweepTable sweep_table(const inverse::SweepSpec& spec, const inverse::SweepResult& r) {
   reports::SweepTable table;
-  for (const auto& in : spec.inputs) table.inputs.push_back(in.name);
+  // Units from the scene kind's inputs and observables, and the card's parameters.
+  std::vector<io::InputInfo> infos = spec.kind ? spec.kind->inputs : std::vector<io::InputInfo>{};
+  for (const auto& m : material::material_input_infos()) infos.push_back(m);
+  for (const auto& in : spec.inputs) {
+    table.inputs.push_back(in.name);
+    std::string unit;
+    for (const auto& info : infos)
+      if (info.name == in.name) unit = info.unit;
+    table.input_units.push_back(unit);
+  }
   table.metrics = spec.metrics;
+  for (const auto& m : spec.metrics) {
+    const scene::Observable* ob = spec.kind ? spec.kind->find_observable(m) : nullptr;
+    table.metric_units.push_back(ob ? ob->unit : "");
+  }
   for (const auto& p : r.points) {
     table.input_values.push_back(p.inputs);
     table.metric_values.push_back(p.metrics);
@@ -316,8 +330,11 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const auto r = failed_on_error(heartbeat, watch, [&] { return inverse::run_sweep(spec, ro); });
     dir.write_file("sweep.csv", inverse::sweep_csv(spec, r));
     if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));
-    for (const auto& w : reports::render_sweep_plots(dir.path(), sweep_table(spec, r))) std::cerr << "spifit: warning: " << w << "\n";
-    dir.record();  // plots/ in the manifest
+    std::vector<std::string> messages;
+    for (const auto& p : r.points) messages.push_back(p.message);
+    for (const auto& w : reports::render_sweep_report(dir.path(), spec.name, sweep_table(spec, r), messages).warnings)
+      std::cerr << "spifit: warning: " << w << "\n";
+    dir.record();  // report.md, report.html, plots/ in the manifest
     int failed = 0;
     for (const auto& p : r.points) failed += p.ok ? 0 : 1;
     watch.stop();  // the final summary is this one

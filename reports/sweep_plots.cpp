@@ -1,5 +1,6 @@
 #include "reports/sweep_plots.hpp"
 
+#include "reports/report_format.hpp"
 #include "reports/plot.hpp"
 
 #include <algorithm>
@@ -19,6 +20,13 @@ bool sweep_log_x(const std::vector<double>& v) {
   }
   return hi > 20.0 * lo;
 }
+
+namespace {
+std::string unit_of(const std::vector<std::string>& units, std::size_t k) { return k < units.size() ? units[k] : std::string(); }
+}  // namespace
+
+std::string sweep_input_label(const SweepTable& t, std::size_t k) { return axis_label(t.inputs[k], unit_of(t.input_units, k), t.inputs[k]); }
+std::string sweep_metric_label(const SweepTable& t, std::size_t k) { return axis_label(t.metrics[k], unit_of(t.metric_units, k), t.metrics[k]); }
 
 std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, const SweepTable& t) {
   std::vector<std::string> warnings;
@@ -43,6 +51,8 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
         char buf[96];
         std::snprintf(buf, sizeof buf, "%s = %.6g", t.inputs[1].c_str(), v2);
         s.title = buf;
+        const std::string unit = unit_of(t.input_units, 1);
+        if (!unit.empty() && unit != "-") s.title += " " + unit;
       } else {
         s.title = "";
       }
@@ -62,8 +72,9 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
     PlotSpec p;
     p.stem = "sweep_" + t.metrics[m];
     p.title = t.metrics[m] + " vs " + t.inputs[0];
-    p.xlabel = t.inputs[0];
-    p.ylabel = t.metrics[m];
+    p.xlabel = sweep_input_label(t, 0);
+    p.ylabel = sweep_metric_label(t, m);
+    p.key_outside = true;
     p.key = t.inputs.size() > 1;
     p.log_x = log_x;
     p.series = series_for([&](std::size_t i) { return t.ok[i] ? t.metric_values[i][m] : NAN; });
@@ -73,8 +84,9 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
   PlotSpec w;
   w.stem = "sweep_wall_seconds";
   w.title = "run time per point";
-  w.xlabel = t.inputs[0];
-  w.ylabel = "wall seconds";
+  w.xlabel = sweep_input_label(t, 0);
+  w.ylabel = "wall time [s]";
+  w.key_outside = true;
   w.key = t.inputs.size() > 1;
   w.log_x = log_x;
   w.series = series_for([&](std::size_t i) { return t.wall_seconds[i]; });

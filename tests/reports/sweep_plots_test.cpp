@@ -1,6 +1,7 @@
 // Sweep plots: one SVG per metric plus run time, when gnuplot is available.
 #include "reports/plot.hpp"
 #include "reports/sweep_plots.hpp"
+#include "reports/sweep_report.hpp"
 
 #include <gtest/gtest.h>
 
@@ -63,6 +64,38 @@ TEST(SweepPlots, LogXForWidePositiveFirstInput) {
     std::ifstream gp(dir / "plots" / "src" / (std::string(stem) + ".gp"));
     const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
     EXPECT_NE(script.find("set logscale x"), std::string::npos) << stem;
+  }
+  fs::remove_all(dir);
+}
+
+// The sweep report: units in the table's header and the plots' axes, failed points named.
+TEST(SweepReport, TablesAndAxesCarryUnitsAndFailuresAreNamed) {
+  const fs::path dir = fs::temp_directory_path() / ("spifit_sweep_report_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  SweepTable t;
+  t.inputs = {"contact.penalty"};
+  t.input_units = {"N/mm^3"};
+  t.metrics = {"peak_fz", "newton_iterations"};
+  t.metric_units = {"N", ""};
+  for (double kp : {1e2, 1e3, 1e4}) {
+    t.input_values.push_back({kp});
+    t.metric_values.push_back({0.3 * kp, 40.0});
+    t.wall_seconds.push_back(0.5);
+    t.ok.push_back(kp < 1e4);
+  }
+  const auto r = render_sweep_report(dir, "penalty", t, {"", "", "increment failed at the minimum increment"});
+  std::ifstream in(r.markdown);
+  const std::string md((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(md.find("| point | contact.penalty [N/mm^3] | peak_fz [N] | newton_iterations | wall time [s] |"), std::string::npos) << md;
+  EXPECT_NE(md.find("1 of 3 points failed"), std::string::npos) << md;
+  EXPECT_NE(md.find("point 3: increment failed at the minimum increment"), std::string::npos) << md;
+  if (!find_executable("gnuplot").empty()) {
+    std::ifstream gp(dir / "plots" / "src" / "sweep_peak_fz.gp");
+    const std::string script((std::istreambuf_iterator<char>(gp)), std::istreambuf_iterator<char>());
+    EXPECT_NE(script.find("set xlabel 'contact.penalty [N/mm^3]'"), std::string::npos) << script;
+    EXPECT_NE(script.find("set ylabel 'peak_fz [N]'"), std::string::npos) << script;
+    EXPECT_NE(md.find("![peak_fz [N] against contact.penalty [N/mm^3]](plots/sweep_peak_fz.svg)"), std::string::npos) << md;
   }
   fs::remove_all(dir);
 }
