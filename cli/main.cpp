@@ -3,6 +3,7 @@
 // ended by SIGINT or SIGTERM: 128 + the signal (130, 143; docs/file-formats.md, "Run status").
 #include "cli/commands.hpp"
 #include "forward/io/input_error.hpp"
+#include "cli/run_signals.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 
 #include <iostream>
@@ -45,6 +46,7 @@ const CLI::Validator kThreads(
 
 int main(int argc, char** argv) {
   spifit::runtime::ensure_passive_omp_wait(argv);
+  spifit::cli::start_signal_thread();  // before any other thread (OpenMP, Ceres) exists
   CLI::App app{"spifit " SPIFIT_VERSION " - material parameter identification for Single Point Incremental Forming"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("spifit ") + SPIFIT_VERSION);

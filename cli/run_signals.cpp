@@ -5,19 +5,53 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <thread>
+#include <pthread.h>
 #include <unistd.h>
 
 namespace spifit::cli {
 namespace {
 
-static_assert(std::atomic<int>::is_always_lock_free, "the signal handler stores into a lock-free atomic");
+static_assert(std::atomic<int>::is_always_lock_free, "the signal thread stores into a lock-free atomic");
 std::atomic<int> g_signal{0};
+std::atomic<int> g_armed{0};  // InterruptHandlers alive
+sigset_t g_handled;           // SIGINT and SIGTERM, unless the process started with them ignored
 
-void record_signal(int sig) { g_signal.store(sig); }
-
-struct sigaction g_old_int, g_old_term;
+// The signal thread: every other thread blocks SIGINT and SIGTERM (start_signal_thread, before
+// any other thread exists), so they arrive here, synchronously, and never interrupt the
+// computing threads (an asynchronous handler crashed a fit under load: a corrupted stack in the
+// main thread while an OpenMP loop ran). Armed, the first of each kind is recorded; otherwise,
+// or the second time, the default action ends the process.
+void signal_loop() {
+  for (;;) {
+    int sig = 0;
+    if (sigwait(&g_handled, &sig) != 0) continue;
+    if (g_armed.load() > 0 && g_signal.load() != sig) {
+      g_signal.store(sig);
+      continue;
+    }
+    std::signal(sig, SIG_DFL);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, sig);
+    pthread_sigmask(SIG_UNBLOCK, &one, nullptr);
+    std::raise(sig);  // to this thread, the only one that does not block it: the default action
+  }
+}
 
 }  // namespace
+
+void start_signal_thread() {
+  sigemptyset(&g_handled);
+  for (int sig : {SIGINT, SIGTERM}) {
+    struct sigaction old {};
+    sigaction(sig, nullptr, &old);
+    // A signal the process was started to ignore (`nohup`, a shell's background job) stays ignored.
+    if (old.sa_handler != SIG_IGN) sigaddset(&g_handled, sig);
+  }
+  pthread_sigmask(SIG_BLOCK, &g_handled, nullptr);  // inherited by every thread created from now on
+  std::thread(signal_loop).detach();
+}
 
 const std::atomic<int>& interrupt_signal() { return g_signal; }
 
@@ -27,23 +61,9 @@ std::string signal_name(int sig) {
   return "signal " + std::to_string(sig);
 }
 
-InterruptHandlers::InterruptHandlers() {
-  struct sigaction sa {};
-  sa.sa_handler = record_signal;
-  sigemptyset(&sa.sa_mask);
-  // SA_RESTART: writes and waits go on; SA_RESETHAND: a second signal acts as without handler.
-  sa.sa_flags = SA_RESTART | SA_RESETHAND;
-  sigaction(SIGINT, &sa, &g_old_int);
-  sigaction(SIGTERM, &sa, &g_old_term);
-  // A signal the process was started to ignore (`nohup`, a shell's background job) stays ignored.
-  if (g_old_int.sa_handler == SIG_IGN) sigaction(SIGINT, &g_old_int, nullptr);
-  if (g_old_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &g_old_term, nullptr);
-}
+InterruptHandlers::InterruptHandlers() { ++g_armed; }
 
-InterruptHandlers::~InterruptHandlers() {
-  sigaction(SIGINT, &g_old_int, nullptr);
-  sigaction(SIGTERM, &g_old_term, nullptr);
-}
+InterruptHandlers::~InterruptHandlers() { --g_armed; }
 
 RunWatch::RunWatch(scene::RunHeartbeat& heartbeat, std::function<nlohmann::json()> progress, std::function<nlohmann::json(int)> interrupted)
     : heartbeat_(heartbeat), progress_(std::move(progress)), interrupted_(std::move(interrupted)) {

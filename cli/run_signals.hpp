@@ -1,6 +1,7 @@
 #pragma once
-// SIGINT and SIGTERM while a command runs (docs/file-formats.md, "Run status"): the handler only
-// records the signal; an FE run (`spifit run`) reads it after every increment
+// SIGINT and SIGTERM while a command runs (docs/file-formats.md, "Run status"): a thread of its
+// own receives them (start_signal_thread) and, while an InterruptHandlers lives, only records
+// them; an FE run (`spifit run`) reads it after every increment
 // (scene::RunControl::interrupt) and ends with a checkpoint and status "interrupted"; a fit or
 // a sweep is ended by its watch (RunWatch) at once with status "interrupted". A second signal
 // of the same kind ends the process as it would without spifit's handler.
@@ -16,6 +17,10 @@
 
 namespace spifit::cli {
 
+// Blocks SIGINT and SIGTERM in the calling thread and every thread created after it, and starts
+// the thread that receives them. Call first in main(), before any other thread exists.
+void start_signal_thread();
+
 // The signal received (SIGINT, SIGTERM), 0 before any.
 const std::atomic<int>& interrupt_signal();
 // The exit code of a run ended by signal sig: 128 + sig (130 for SIGINT, 143 for SIGTERM), as a
@@ -24,8 +29,9 @@ inline int interrupted_exit_code(int sig) { return 128 + sig; }
 // "SIGINT", "SIGTERM", "signal N".
 std::string signal_name(int sig);
 
-// Installs the handlers of SIGINT and SIGTERM for its lifetime (one shot each: SA_RESETHAND); a
-// signal ignored when the process started (nohup, a background job of a script) stays ignored.
+// While one lives, the first SIGINT and the first SIGTERM are recorded (interrupt_signal) instead
+// of ending the process; a second one of the same kind ends it. A signal ignored when the process
+// started (nohup, a background job of a script) stays ignored.
 class InterruptHandlers {
  public:
   InterruptHandlers();

@@ -62,8 +62,7 @@ void read_noise_column(const io::TomlTable& e, const MeasurementTable& t, const 
 
 // The measured (x, y): x strictly increasing inside [0, clamp radius]; y in mm; point weights.
 void read_data(const io::TomlTable& e, const std::string& path, double clamp_radius, ConeSectionSpec* c) {
-  CurveData d = read_curve_data(e, path, c->x, c->y, 0.0, clamp_radius, "mm (from the axis to the clamp)");
-  if (!d.y_unit.empty() && d.y_unit != "mm") e.fail("data", "column " + c->y + " is in " + d.y_unit + "; sections are compared in mm");
+  CurveData d = read_curve_data(e, path, c->x, c->y, 0.0, clamp_radius, "mm (from the axis to the clamp)", "mm", "mm");
   c->xs = std::move(d.xs);
   c->ys = std::move(d.ys);
   c->point_weights = std::move(d.weights);

@@ -76,8 +76,7 @@ std::unique_ptr<Experiment> section(const io::TomlTable& e, const std::string& p
   if (!is_section_abscissa(c.x)) e.fail("x", "not an abscissa of a section (known: x, x0)");
   if (!is_section_response(c.y)) e.fail("y", "not a column of a section (known: z, thickness)");
   const double half = 0.5 * c.scene->input("sheet.length");
-  CurveData d = read_curve_data(e, path, c.x, c.y, -half, half, "mm (the sheet)");
-  if (!d.y_unit.empty() && d.y_unit != "mm") e.fail("data", "column " + c.y + " is in " + d.y_unit + "; sections are compared in mm");
+  CurveData d = read_curve_data(e, path, c.x, c.y, -half, half, "mm (the sheet)", "mm", "mm");
   c.xs = std::move(d.xs);
   c.ys = std::move(d.ys);
   c.point_weights = std::move(d.weights);
@@ -93,7 +92,8 @@ std::unique_ptr<Experiment> contour_means(const io::TomlTable& e, const std::str
   if (!is_contour_mean(c.y)) e.fail("contour_means", std::string("not a contour mean (known: ") + contour_mean_names() + ")");
   for (const char* k : {"x", "y"})
     if (e.has(k)) e.fail(k, "contour means take the columns contour and " + c.y + " of the data file");
-  CurveData d = read_curve_data(e, path, "contour", c.y, 1.0, 1e9, "(contours from 1)");
+  const bool ratio = c.y.size() > 7 && c.y.compare(c.y.size() - 7, 7, "_over_fz") == 0;
+  CurveData d = read_curve_data(e, path, "contour", c.y, 1.0, 1e9, "(contours from 1)", "", ratio ? "" : "N");
   for (double k : d.xs) {
     if (k != std::floor(k)) e.fail("data", "contour numbers must be whole (" + format_number(k) + ")");
     if (k > c.scene->contours())
@@ -109,9 +109,13 @@ std::unique_ptr<Experiment> contour_means(const io::TomlTable& e, const std::str
 }  // namespace
 
 CurveData read_curve_data(const io::TomlTable& e, const std::string& path, const std::string& x, const std::string& y, double lo, double hi,
-                          const std::string& range_note) {
+                          const std::string& range_note, const std::string& x_unit, const std::string& y_unit) {
   const std::string data_path = resolve_path(path, e.string("data"));
   MeasurementTable table = read_measurement_csv(data_path);
+  table.column(x);  // a missing column named first
+  table.column(y);
+  convert_column(table, x, x_unit);
+  convert_column(table, y, y_unit);
   CurveData d{table.column(x), table.column(y), {}, table.units.at(y), data_path, {}};
   if (e.has("weight_column")) {
     d.weights = table.column(e.string("weight_column"));
@@ -160,8 +164,8 @@ std::unique_ptr<Experiment> read_fe_experiment(const io::TomlTable& e, const std
   const auto [lo, hi] = force_curve_range(*c.scene->tool_centre_path(), t, radius, c.x);
   CurveData d = read_curve_data(e, path, c.x, c.y, lo, hi,
                                 std::string(force_curve_abscissa_unit(c.x)) + " of scene " + c.scene->name() +
-                                    (c.x == "depth" ? " (the depth while the tool goes down)" : ""));
-  if (!d.y_unit.empty() && d.y_unit != "N") e.fail("data", "column " + c.y + " is in " + d.y_unit + "; tool forces are compared in N");
+                                    (c.x == "depth" ? " (the depth while the tool goes down)" : ""),
+                                force_curve_abscissa_unit(c.x), "N");
   c.xs = std::move(d.xs);
   c.ys = std::move(d.ys);
   c.point_weights = std::move(d.weights);

@@ -24,8 +24,10 @@ struct CurveData {
   std::string y_unit, data_path;
   MeasurementTable table;
 };
+// The columns come in the units the simulation compares them in (x_unit, y_unit; "" for
+// counts and ratios), converted from the header's units (convert_column, measurement.hpp).
 CurveData read_curve_data(const io::TomlTable& e, const std::string& path, const std::string& x, const std::string& y, double lo, double hi,
-                          const std::string& range_note);
+                          const std::string& range_note, const std::string& x_unit, const std::string& y_unit);
 
 // The keys an FE [[experiment]] may hold.
 const std::vector<std::string>& fe_experiment_keys();

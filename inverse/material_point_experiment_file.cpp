@@ -127,7 +127,11 @@ std::unique_ptr<Experiment> curve_experiment(const io::TomlTable& e, const std::
   scene::CurvePoint<double> probe;
   if (!scene::curve_abscissa(probe, c.x)) e.fail("x", std::string("not an abscissa of a simulated curve (known: ") + scene::curve_abscissa_names() + ")");
   if (!scene::curve_response(probe, c.y)) e.fail("y", std::string("not a column of a simulated curve (known: ") + scene::curve_response_names() + ")");
-  const auto table = read_measurement_csv(resolve_path(path, e.string("data")));
+  auto table = read_measurement_csv(resolve_path(path, e.string("data")));
+  table.column(c.x);  // a missing column named first
+  table.column(c.y);
+  convert_column(table, c.x, scene::curve_column_unit(c.x));  // e.g. strain [%] to a fraction
+  convert_column(table, c.y, scene::curve_column_unit(c.y));
   c.xs = table.column(c.x);
   c.ys = table.column(c.y);
   c.x_unit = table.units.at(c.x);

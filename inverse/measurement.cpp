@@ -3,6 +3,7 @@
 #include "forward/io/input_error.hpp"
 
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -113,6 +114,50 @@ std::string resolve_path(const std::string& base_file, const std::string& path) 
   std::filesystem::path q(path);
   if (q.is_relative()) q = std::filesystem::path(base_file).parent_path() / q;
   return q.lexically_normal().string();
+}
+
+namespace {
+
+bool dimensionless(const std::string& u) { return u.empty() || u == "-"; }
+
+// The factor from unit `from` to unit `to`, NaN when they do not convert.
+double unit_factor(const std::string& from, const std::string& to) {
+  if (from == to || (dimensionless(from) && dimensionless(to))) return 1.0;
+  struct Conversion {
+    const char* from;
+    const char* to;  // "-": dimensionless
+    double factor;
+  };
+  static const Conversion kConversions[] = {
+      {"%", "-", 0.01},  {"kN", "N", 1e3},    {"GPa", "MPa", 1e3}, {"kPa", "MPa", 1e-3}, {"Pa", "MPa", 1e-6}, {"N/mm^2", "MPa", 1.0},
+      {"N/mm2", "MPa", 1.0}, {"um", "mm", 1e-3}, {"µm", "mm", 1e-3}, {"cm", "mm", 10.0},  {"m", "mm", 1e3},   {"ms", "s", 1e-3},
+      {"min", "s", 60.0},
+  };
+  const std::string target = dimensionless(to) ? "-" : to;
+  for (const Conversion& c : kConversions)
+    if (from == c.from && target == c.to) return c.factor;
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+}  // namespace
+
+void convert_column(MeasurementTable& t, const std::string& column, const std::string& unit) {
+  auto& values = t.columns.at(column);  // callers read the column first (column() names a missing one)
+  std::string& own = t.units[column];
+  if (own.empty()) {
+    own = unit;
+    return;
+  }
+  const double f = unit_factor(own, unit);
+  if (!std::isfinite(f)) {
+    throw InputError(t.file, "column " + column, own,
+                     "a unit spifit does not convert to " + (dimensionless(unit) ? std::string("a fraction (-)") : unit) +
+                         " (it converts %, kN, GPa, kPa, Pa, N/mm^2, um, cm, m, ms, min): give the column in " +
+                         (dimensionless(unit) ? std::string("-") : unit));
+  }
+  if (f != 1.0)
+    for (double& v : values) v *= f;
+  own = unit;
 }
 
 }  // namespace spifit::inverse

@@ -21,6 +21,12 @@ struct MeasurementTable {
 
 MeasurementTable read_measurement_csv(const std::string& path);
 
+// Puts a column into `unit`, the unit the simulation compares it in: values scaled from the
+// header's unit where the two convert (% to a fraction; kN to N; GPa, kPa, Pa, N/mm^2 to MPa;
+// um, cm, m to mm; ms, min to s); a column without a unit is taken as already in `unit`.
+// ("" and "-" both mean dimensionless.) InputError naming the file, column and unit otherwise.
+void convert_column(MeasurementTable& t, const std::string& column, const std::string& unit);
+
 // A path written in file `base_file` (a fit file's scene or data), relative to that file's folder.
 std::string resolve_path(const std::string& base_file, const std::string& path);
 

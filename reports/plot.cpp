@@ -198,6 +198,9 @@ GnuplotRun run_gnuplot(const fs::path& gnuplot, const fs::path& workdir, const s
   const pid_t pid = ::fork();
   if (pid < 0) return {false, "cannot start gnuplot (fork failed)"};
   if (pid == 0) {
+    sigset_t none;  // gnuplot with the default signal mask (spifit blocks SIGINT and SIGTERM in its threads)
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
     if (::chdir(wd.c_str()) != 0) ::_exit(126);
     const int in = ::open("/dev/null", O_RDONLY);
     const int out = ::open(log_name.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);

@@ -156,3 +156,26 @@ TEST(FitFile, RelativeNoiseDividesEachResidualByItsOwnDeviation) {
     }
   }
 }
+
+// Units in a measurement header: a curve given in % strain and GPa is the same experiment as
+// the one in fractions and MPa; a unit spifit does not convert names the file, column and unit.
+TEST(FitFile, MeasurementUnitsAreConvertedOrRejected) {
+  const std::string plain = write("plain.csv", "strain [-],stress [MPa]\n0.01,60\n0.02,70\n");
+  const std::string percent = write("percent.csv", "strain [%],stress [GPa]\n1,0.060\n2,0.070\n");
+  const auto a = inverse::read_fit_file(write("a.toml", base_fit(kParam, curve(plain)))).experiments.at(0);
+  const auto b = inverse::read_fit_file(write("b.toml", base_fit(kParam, curve(percent)))).experiments.at(0);
+  inverse::ParameterPoint p;
+  const auto ca = a->compare(p), cb = b->compare(p);
+  ASSERT_EQ(ca.x.size(), 2u);
+  ASSERT_EQ(cb.x.size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_NEAR(cb.x[i], ca.x[i], 1e-15);
+    EXPECT_NEAR(cb.measured[i], ca.measured[i], 1e-12);
+  }
+  EXPECT_EQ(b->axes().x_unit, "-");
+  EXPECT_EQ(b->axes().y_unit, "MPa");
+  const std::string odd = write("odd.csv", "strain [furlong],stress [MPa]\n0.01,60\n0.02,70\n");
+  expect_error(base_fit(kParam, curve(odd)), "column strain", "does not convert to a fraction");
+  const std::string ksi = write("ksi.csv", "strain [-],stress [ksi]\n0.01,60\n0.02,70\n");
+  expect_error(base_fit(kParam, curve(ksi)), "column stress", "does not convert to MPa");
+}

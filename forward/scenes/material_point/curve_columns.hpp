@@ -31,6 +31,13 @@ std::optional<T> curve_response(const CurvePoint<T>& p, const std::string& n) {
   return std::nullopt;
 }
 
+// The unit of a column of curve.csv: MPa for stresses, "" for the increment, "-" for strains.
+inline const char* curve_column_unit(const std::string& name) {
+  if (name == "increment") return "";
+  if (name.rfind("stress", 0) == 0 || name.rfind("sig_", 0) == 0) return "MPa";
+  return "-";
+}
+
 inline const char* curve_abscissa_names() { return "increment, strain, cumulative_strain"; }
 inline const char* curve_response_names() {
   return "stress, stress_kirchhoff, eps_ww, gamma_lw, eps_zz, sig_xx, sig_yy, sig_xy, eqps";
