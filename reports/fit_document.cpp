@@ -1,3 +1,5 @@
+#include "forward/material/material_inputs.hpp"
+#include "forward/scenes/scene_registry.hpp"
 #include "reports/fit_document.hpp"
 
 #include "reports/fit_sections.hpp"
@@ -105,13 +107,23 @@ void add_summary(Document& d, const FitReportContent& c) {
            ". When noise is given for every experiment, σ² near 1 means the residuals are as large as the stated noise."}});
 }
 
+// The unit of a fitted parameter: a card parameter's (swift.K: MPa) or a scene input's
+// (tool.radius: mm); "-" for dimensionless ones (hill.F, contact.friction).
+std::string parameter_unit(const std::string& name) {
+  std::vector<io::InputInfo> infos = material::material_input_infos();
+  for (const auto& kind : scene::scene_kinds()) infos.insert(infos.end(), kind.inputs.begin(), kind.inputs.end());
+  for (const auto& info : infos)
+    if (info.name == name) return info.unit.empty() ? "-" : info.unit;
+  return "-";
+}
+
 void add_parameters(Document& d, const FitReportContent& c) {
   const FitRecord& rec = c.record;
   d.heading(2, "Parameters", "parameters");
   Table p;
   p.id = "parameters";
-  p.header = {"parameter", "initial", "value", "std. error", "95 % interval", "lower", "upper", "identifiable", "note"};
-  p.right = {false, true, true, true, true, true, true, false, false};
+  p.header = {"parameter", "unit", "initial", "value", "std. error", "95 % interval", "lower", "upper", "identifiable", "note"};
+  p.right = {false, false, true, true, true, true, true, true, false, false};
   for (std::size_t k = 0; k < rec.parameters.size(); ++k) {
     const auto& q = rec.parameters[k];
     const std::string& at = c.verdict.at_bound[k];
@@ -121,7 +133,7 @@ void add_parameters(Document& d, const FitReportContent& c) {
     const bool ci_known = std::isfinite(q.ci95_lower) && std::isfinite(q.ci95_upper);
     const std::string ci = ci_known ? "[" + fmt(q.ci95_lower) + ", " + fmt(q.ci95_upper) + "]" : "n/a";
     const std::string ident = !q.has_uncertainty ? "n/a" : q.identifiable ? "yes" : "NO";
-    p.rows.push_back({cell(q.name), cell(fmt(q.initial)), cell(fmt(q.value), bad_if(!at.empty())), cell(fmt(q.std_error, 4)), cell(ci),
+    p.rows.push_back({cell(q.name), cell(parameter_unit(q.name)), cell(fmt(q.initial)), cell(fmt(q.value), bad_if(!at.empty())), cell(fmt(q.std_error, 4)), cell(ci),
                       cell(fmt(q.lower)), cell(fmt(q.upper)), cell(ident, bad_if(!q.identifiable)), cell(note, bad_if(!at.empty()))});
   }
   d.table(p);

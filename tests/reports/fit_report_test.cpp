@@ -120,14 +120,15 @@ TEST_F(FitReportTest, MarkdownShowsTheNumbersOfFitJson) {
   ASSERT_EQ(j["parameters"].size(), 6u);
   for (const auto& [name, p] : j["parameters"].items()) {
     const auto row = md_row(md, name);
-    ASSERT_GE(row.size(), 9u) << name << "\n" << md;
-    EXPECT_LT(rel_diff(std::stod(row[1]), p["initial"].get<double>()), 1e-5) << name;
-    EXPECT_LT(rel_diff(std::stod(row[2]), p["value"].get<double>()), 1e-5) << name << ": " << row[2];
-    EXPECT_LT(rel_diff(std::stod(row[3]), p["std_error"].get<double>()), 1e-3) << name;
-    EXPECT_LT(rel_diff(std::stod(row[4].substr(1)), p["ci95"][0].get<double>()), 1e-5) << name;
-    EXPECT_LT(rel_diff(std::stod(row[5]), p["lower"].get<double>()), 1e-5) << name;
-    EXPECT_LT(rel_diff(std::stod(row[6]), p["upper"].get<double>()), 1e-5) << name;
-    EXPECT_EQ(row[7], "yes") << name;
+    ASSERT_GE(row.size(), 10u) << name << "\n" << md;
+    EXPECT_EQ(row[1], name.rfind("swift.K", 0) == 0 ? "MPa" : "-") << name;  // the card's unit of K; Hill and n are ratios
+    EXPECT_LT(rel_diff(std::stod(row[2]), p["initial"].get<double>()), 1e-5) << name;
+    EXPECT_LT(rel_diff(std::stod(row[3]), p["value"].get<double>()), 1e-5) << name << ": " << row[3];
+    EXPECT_LT(rel_diff(std::stod(row[4]), p["std_error"].get<double>()), 1e-3) << name;
+    EXPECT_LT(rel_diff(std::stod(row[5].substr(1)), p["ci95"][0].get<double>()), 1e-5) << name;
+    EXPECT_LT(rel_diff(std::stod(row[6]), p["lower"].get<double>()), 1e-5) << name;
+    EXPECT_LT(rel_diff(std::stod(row[7]), p["upper"].get<double>()), 1e-5) << name;
+    EXPECT_EQ(row[8], "yes") << name;
   }
   // Parameters in the order of the fit file (hill.F first), not alphabetical.
   EXPECT_LT(md.find("| hill.F |"), md.find("| swift.K |"));
@@ -310,8 +311,8 @@ TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
   EXPECT_LT(box, md.find("## Summary"));
   for (const auto& f : s.findings) EXPECT_NE(md.find(f.substr(0, 30)), std::string::npos) << f;
   EXPECT_NE(md_row(md, "tensile_45").at(10).find("CONFLICT"), std::string::npos);
-  EXPECT_EQ(md_row(md, "swift.eps0").at(7), "**NO**");
-  EXPECT_NE(md_row(md, "hill.N").at(8).find("AT upper BOUND"), std::string::npos);
+  EXPECT_EQ(md_row(md, "swift.eps0").at(8), "**NO**");
+  EXPECT_NE(md_row(md, "hill.N").at(9).find("AT upper BOUND"), std::string::npos);
   const std::string html = slurp(d / "report.html");
   EXPECT_NE(html.find("<div class=\"callout warn\">"), std::string::npos);
   EXPECT_NE(html.find("<td class=\"bad\">CONFLICT"), std::string::npos);
@@ -326,7 +327,7 @@ TEST_F(FitReportTest, BoundWarningOfFitJsonIsNotRepeated) {
   const auto s = reports::render_fit_report(d, {false});
   ASSERT_EQ(s.findings.size(), 1u);
   EXPECT_EQ(s.findings[0], "hill.N ended at its bound (1): the data push it further");
-  EXPECT_NE(md_row(slurp(d / "report.md"), "hill.N").at(8).find("AT lower BOUND"), std::string::npos);
+  EXPECT_NE(md_row(slurp(d / "report.md"), "hill.N").at(9).find("AT lower BOUND"), std::string::npos);
 }
 
 TEST_F(FitReportTest, MultiStartSectionAndSpreadNote) {
