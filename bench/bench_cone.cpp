@@ -4,13 +4,13 @@
 // removed afterwards) and prints the median wall time, Newton iterations, increments, cut-backs,
 // completed contours, seconds per contour and where the time went (elements, assembly, linear
 // solver). Error against a reference: the steady-state Fz is only defined for the 100-contour
-// cone70 (docs/cone-scene.md), so the line reports the last contour's central-third mean Fz
+// cone70 (docs/design/cone.md), so the line reports the last contour's central-third mean Fz
 // for comparison by eye with the tables there (read from the run's contours.csv). Only
 // cone70_short (3 contours, about a minute) runs by default: the others take minutes to hours
 // and are selected with --benchmark_filter; --benchmark_filter=cone50_ runs the pie trade (the
 // first 10 contours of cone50 on the 45, 90 and 360 degree meshes of one layout), and
 // cone70_fine_loose_60 the 60 fine contours with loose Newton tolerances (the speed/accuracy
-// trade of docs/cone-scene.md, "Session 24").
+// trade of docs/results/benchmarks.md, "Looser Newton tolerances").
 // --benchmark_repetitions=N repeats a scene N times and adds Google Benchmark's median (the
 // "_median" row) over the repetitions.
 #include "bench/bench_main.hpp"

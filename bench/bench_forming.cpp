@@ -3,9 +3,9 @@
 // file as `spifit run` would (outputs to a temporary directory, removed afterwards) and reports
 // the median wall time of its repetitions, the Newton iterations and increments, where the time
 // went (elements, assembly, linear solver), and an error against a stated reference:
-//   indent       peak Fz vs the impenetrable limit 293.78 N (K_p = 1e7, docs/contact.md);
+//   indent       peak Fz vs the impenetrable limit 293.78 N (K_p = 1e7, docs/results/validation.md);
 //   indent_line  peak Fz vs the same scene at 0.25 mm of travel per increment (637.72 N);
-//   line_*       none (reference_error printed as 0; half vs full: docs/contact.md).
+//   line_*       none (reference_error printed as 0; half vs full: docs/results/validation.md).
 // The line scenes are long (minutes): select them with --benchmark_filter.
 #include "bench/bench_main.hpp"
 #include "forward/io/output_directory.hpp"

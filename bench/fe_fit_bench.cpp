@@ -1,4 +1,4 @@
-// Fits on FE scenes (docs/identification.md, "Fits on FE scenes"):
+// Fits on FE scenes (docs/design/identification.md, "Fits on FE scenes"):
 // - fe_jacobian_steps: the noise of the central-difference Jacobian of an FE experiment (the
 //   indent test's Fz against depth of fit_af_indent) for relative steps 1e-7 ... 1e-2, as the
 //   relative distance of each column from the column at step 1e-3; the step rule of
@@ -84,7 +84,7 @@ void fit_fe(benchmark::State& state, const std::string& fit, const std::string& 
   state.counters["max_rel_dev"] = dev;
   state.counters["usable"] = r.usable;
 }
-// One fit per repetition, three repetitions: the median is the number docs/benchmarks.md quotes.
+// One fit per repetition, three repetitions: the median is the number docs/results/benchmarks.md quotes.
 #define SPIFIT_FE_FIT(name, card, truth)                                                  \
   BENCHMARK_CAPTURE(fit_fe, name, #name ".toml", card, truth)                              \
       ->Unit(benchmark::kSecond)                                                          \

@@ -194,7 +194,7 @@ void add_inputs_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("inputs", "List the scene kinds, or one kind's keys (unit, valid values, meaning) and observables");
   cmd->add_option("KIND", o->kind, "a scene kind (e.g. cone); none: every kind");
-  cmd->add_flag("--markdown", o->markdown, "print the whole reference as Markdown (docs/input-reference.md)");
+  cmd->add_flag("--markdown", o->markdown, "print the whole reference as Markdown (docs/reference/input-reference.md)");
   cmd->callback([o, &g, &exit_code] {
     exit_code = 0;
     if (o->markdown) {

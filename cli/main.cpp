@@ -1,6 +1,6 @@
 // spifit: identification of sheet-metal material parameters for SPIF.
 // Exit codes: 0 ok, 1 failure (numerical), 2 usage or input error (one line on stderr); a run
-// ended by SIGINT or SIGTERM: 128 + the signal (130, 143; docs/file-formats.md, "Run status").
+// ended by SIGINT or SIGTERM: 128 + the signal (130, 143; docs/reference/file-formats.md, "Run status").
 #include "cli/commands.hpp"
 #include "forward/io/input_error.hpp"
 #include "cli/run_signals.hpp"
@@ -32,7 +32,7 @@ std::string unknown_subcommand(const CLI::App& app) {
 // to the largest double (300 digits) and let 1000 through. 512 is the hardware threads of the
 // largest two-socket servers (2 x 128 cores x 2 SMT): no machine is refused its own thread count,
 // while more threads than the hardware has only slow the OpenMP loops down (results do not depend
-// on the count, docs/cli.md).
+// on the count, docs/reference/cli.md).
 constexpr int kMaxThreads = 512;
 const CLI::Validator kThreads(
     [](std::string& text) -> std::string {

@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT and SIGTERM while a command runs (docs/file-formats.md, "Run status"): a thread of its
+// SIGINT and SIGTERM while a command runs (docs/reference/file-formats.md, "Run status"): a thread of its
 // own receives them (start_signal_thread) and, while an InterruptHandlers lives, only records
 // them; an FE run (`spifit run`) reads it after every increment
 // (scene::RunControl::interrupt) and ends with a checkpoint and status "interrupted"; a fit or

@@ -1,4 +1,4 @@
-// `spifit status DIR`: what became of the run in an output directory (docs/file-formats.md, "Run
+// `spifit status DIR`: what became of the run in an output directory (docs/reference/file-formats.md, "Run
 // status"): its kind, scene and status; for a "running" summary whether the run is alive (its
 // process exists on this host and its heartbeat is recent) or dead, and how to resume it.
 // Exit codes: 0 ok or running and alive, 1 anything else (failed, interrupted, dead, ...),

@@ -1,4 +1,4 @@
-# One static library per layer of the source tree (docs/architecture.md, "Layers").
+# One static library per layer of the source tree (docs/design/architecture.md, "Layers").
 #
 # spifit_layer(TARGET DIR [DEPS layer...] [PUBLIC_LIBS ...] [PRIVATE_LIBS ...] [EXCLUDE file...])
 #

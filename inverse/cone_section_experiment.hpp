@@ -1,5 +1,5 @@
 #pragma once
-// A cone's radial section as an FE experiment (docs/file-formats.md "Fit file"; docs/cone-scene.md
+// A cone's radial section as an FE experiment (docs/reference/file-formats.md "Fit file"; docs/design/cone.md
 // "Shape, stage and element observables"): the section a cone run takes after a completed
 // contour, the mid-surface height z or the thickness against the current radius r or the initial
 // radius r0, compared with measured (r, y) by interpolating the simulated section at the measured

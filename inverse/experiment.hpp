@@ -1,5 +1,5 @@
 #pragma once
-// An experiment = a scene + what is measured + how residuals are weighted (docs/identification.md).
+// An experiment = a scene + what is measured + how residuals are weighted (docs/design/identification.md).
 // The identification sees the forward model only through this interface: parameter values
 // in, conditioned residuals out. Material-point experiments evaluate with Jets (exact
 // derivatives); FE experiments (fe_experiment.hpp) report supports_jets() = false and are

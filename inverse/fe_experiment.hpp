@@ -1,5 +1,5 @@
 #pragma once
-// Experiments on FE scenes (indent, indent_line, line, cone, ...; docs/identification.md, "Fits
+// Experiments on FE scenes (indent, indent_line, line, cone, ...; docs/design/identification.md, "Fits
 // on FE scenes"): a tool-force curve against tool-tip depth, tool travel or time, or a scalar
 // observable of the scene kind (peak_fz, mean_fx over a travel window, steady_ftheta_over_fz
 // over a contour range, ...). The runs come from the fit's SceneRuns (one per parameter point,

@@ -1,7 +1,7 @@
 #pragma once
 // An [[experiment]] of a fit file on an FE scene (indent, indent_line, line, cone, ...): a force
 // curve (data, x, y) or a scalar observable of the scene kind (observable, value, window or
-// contours). Schema in docs/file-formats.md; errors name the file, key and value.
+// contours). Schema in docs/reference/file-formats.md; errors name the file, key and value.
 #include "forward/io/toml_reader.hpp"
 #include "inverse/fe_experiment.hpp"
 #include "inverse/measurement.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// A fit file (TOML, schema in docs/file-formats.md): the starting card, the named free and
+// A fit file (TOML, schema in docs/reference/file-formats.md): the starting card, the named free and
 // fixed parameters with bounds, the experiments and the optimiser settings.
 #include "inverse/experiment.hpp"
 #include "inverse/parameters.hpp"
@@ -23,7 +23,7 @@ struct FitSettings {
 // The defaults of a fit with FE experiments (unless the fit file states them): an FE run's cost
 // wobbles from one evaluation to the next by about 1e-11 of itself at the solution (the Newton
 // tolerances), so the tolerances above would keep Levenberg-Marquardt stepping on that noise
-// (docs/identification.md, "Stopping").
+// (docs/design/identification.md, "Stopping").
 FitSettings fe_fit_settings();
 
 struct FitProblem {

@@ -1,7 +1,7 @@
 #pragma once
 // What `spifit fit` writes: DIR/fit.json (machines), DIR/card.toml (the fitted card),
 // DIR/experiments/NAME.csv (measured vs simulated at the start and at the solution), and the
-// terse CLI table. Schema in docs/file-formats.md.
+// terse CLI table. Schema in docs/reference/file-formats.md.
 #include "forward/io/output_directory.hpp"
 #include "inverse/fit_result.hpp"
 #include "inverse/fit_record.hpp"

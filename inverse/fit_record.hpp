@@ -1,5 +1,5 @@
 #pragma once
-// The record of one fit as `spifit fit` stores it in DIR/fit.json (docs/file-formats.md): plain
+// The record of one fit as `spifit fit` stores it in DIR/fit.json (docs/reference/file-formats.md): plain
 // data, written by inverse/fit_output.cpp and read by the reports. Numbers that fit.json holds
 // as null (not finite, not computed) are NaN here; keys that a fit.json of an older spifit may
 // lack are std::optional where the readers tell "absent" from a value.

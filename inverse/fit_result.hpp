@@ -1,5 +1,5 @@
 #pragma once
-// The result of an identification, whatever the engine (Ceres, NLopt; docs/identification.md):
+// The result of an identification, whatever the engine (Ceres, NLopt; docs/design/identification.md):
 // the fitted values and card, costs, history, uncertainty, per-experiment fits and conflicts,
 // multi-start spread; and the run options.
 #include "inverse/fit_file.hpp"

@@ -2,7 +2,7 @@
 // An [[experiment]] of a fit file on a material-point scene (tensile, shear, bauschinger, ...): a
 // curve (data, x, y), a scalar (observable, value) or a table of scalars (observable, data, x:
 // one run and one residual per row, the row's x a scene input such as the angle), each with the
-// scene's angle overridden by `angle`. Schema in docs/file-formats.md; errors name the file, key
+// scene's angle overridden by `angle`. Schema in docs/reference/file-formats.md; errors name the file, key
 // and value.
 #include "forward/io/toml_reader.hpp"
 #include "inverse/experiment.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Multi-start (docs/identification.md): the fit from its own initial point plus starts drawn uniformly
+// Multi-start (docs/design/identification.md): the fit from its own initial point plus starts drawn uniformly
 // (seeded, in internal coordinates: uniform in ln(value) for log-scaled parameters) inside the
 // bounds; the best solution is returned, and the spread of the solutions says whether the
 // optimum is unique.

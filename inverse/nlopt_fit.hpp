@@ -1,5 +1,5 @@
 #pragma once
-// Derivative-free and global identification with NLopt (docs/identification.md): local BOBYQA, COBYLA,
+// Derivative-free and global identification with NLopt (docs/design/identification.md): local BOBYQA, COBYLA,
 // Nelder-Mead, Sbplx; global DIRECT-L, CRS2, ISRES, MLSL (with BOBYQA as local optimiser).
 // The objective is the same cost as Ceres's (1/2 sum of squared conditioned residuals); a
 // failed forward run costs kFailedRunCost (finite, never NaN). The best point seen is kept

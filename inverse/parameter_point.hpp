@@ -1,7 +1,7 @@
 #pragma once
 // One point of a fit's parameter space in physical values: the material parameters (the fit's
 // card with the fitted values set) and the scene inputs a fit varies (contact.friction,
-// contact.penalty, tool.radius, ...: named inputs of the FE scenes, docs/identification.md).
+// contact.penalty, tool.radius, ...: named inputs of the FE scenes, docs/design/identification.md).
 #include "forward/material/material_params.hpp"
 
 #include <string>

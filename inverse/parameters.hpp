@@ -1,5 +1,5 @@
 #pragma once
-// Named, bounded parameters of an identification (docs/identification.md) and their mapping
+// Named, bounded parameters of an identification (docs/design/identification.md) and their mapping
 // between the optimiser's vector (internal coordinates: log of the value for log-scaled
 // parameters) and a material card. The names, units and ties are the material law's table
 // (forward/material/material_inputs.hpp: hill.N also sets L and M). Normalisation G + H = 2 is

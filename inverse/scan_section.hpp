@@ -75,7 +75,7 @@ ScanSection average_scan_section(const std::vector<Eigen::Vector3d>& cloud, cons
 // q = 0, sorted[n - 1] at q = 1).
 double sorted_quantile(const std::vector<double>& sorted, double q);
 
-// section.csv (docs/file-formats.md "Scan section").
+// section.csv (docs/reference/file-formats.md "Scan section").
 std::string scan_section_csv(const ScanSection& s, const ScanSectionOptions& options);
 
 }  // namespace spifit::inverse

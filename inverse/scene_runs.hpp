@@ -1,5 +1,5 @@
 #pragma once
-// The forward runs of the FE scenes of a fit (docs/identification.md, "Fits on FE scenes"): one
+// The forward runs of the FE scenes of a fit (docs/design/identification.md, "Fits on FE scenes"): one
 // run per scene and parameter point, however many experiments read it and however many
 // threads ask at once (the pattern of Ceres's EvaluationCallback: one simulation per point,
 // read by every residual block on it). A run that fails is retried once with half the tool

@@ -1,5 +1,5 @@
 #pragma once
-// What every fit engine does at its solution (docs/identification.md, "Uncertainty"): values,
+// What every fit engine does at its solution (docs/design/identification.md, "Uncertainty"): values,
 // card, the Jacobian-based uncertainty and the per-experiment costs; and the conditioned
 // residuals at a parameter vector.
 #include "inverse/fit_result.hpp"

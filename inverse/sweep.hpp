@@ -1,5 +1,5 @@
 #pragma once
-// Sensitivity studies (docs/identification.md, "Sweeps"): a scene of any kind run over a grid of
+// Sensitivity studies (docs/design/identification.md, "Sweeps"): a scene of any kind run over a grid of
 // one or more named inputs -- the scene kind's own (contact.friction, tool.radius, ...) or the
 // card's parameters (hill.N, swift.K, ...) -- with scalar metrics read off each run's typed result
 // (the kind's observables), wall seconds and status per point, and local normalised

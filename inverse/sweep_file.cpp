@@ -1,4 +1,4 @@
-// Reading a sweep file (schema: docs/file-formats.md, "Sweep file").
+// Reading a sweep file (schema: docs/reference/file-formats.md, "Sweep file").
 #include "inverse/sweep.hpp"
 
 #include "forward/io/input_error.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Uncertainty and identifiability of a least-squares fit (docs/identification.md): covariance
+// Uncertainty and identifiability of a least-squares fit (docs/design/identification.md): covariance
 // sigma^2 (J^T J)^+ with sigma^2 = SSE / (m - p), from a dense SVD of the Jacobian scaled by
 // the parameter magnitudes, so that a rank-deficient Jacobian is reported, not crashed on.
 #include <Eigen/Core>
@@ -29,7 +29,7 @@ struct Uncertainty {
 Uncertainty analyse_uncertainty(const Eigen::MatrixXd& J, const Eigen::VectorXd& residuals, const std::vector<double>& values,
                                 const std::vector<std::string>& names, double sigma2_without_dof = std::numeric_limits<double>::quiet_NaN());
 
-// Which block of rows informs which parameter (docs/identification.md, "Which experiment informs
+// Which block of rows informs which parameter (docs/design/identification.md, "Which experiment informs
 // which parameter"): entry (e, k) is block e's share of parameter k's Fisher information,
 // diag(J_eᵀ J_e)_k / diag(Jᵀ J)_k, where J_e are the rows[e] rows of block e (blocks in order).
 // A column's shares add up to 1; NaN where no row responds to the parameter.

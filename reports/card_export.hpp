@@ -1,7 +1,7 @@
 #pragma once
 // Material-card exports to other FE codes: Abaqus (*MATERIAL block), LS-DYNA (*MAT_HILL_3R +
 // *DEFINE_CURVE) and CalculiX (*MATERIAL block). What each deck contains, the notation
-// conversions and every approximation are in docs/exports.md.
+// conversions and every approximation are in docs/reference/outputs.md.
 //
 // Every exporter writes the card in one "RD-normalised" form, exact for any Hill card:
 //   h = sqrt((G + H)/2)              (sigma_eq of a unit uniaxial stress along RD)
@@ -37,7 +37,7 @@ struct ExportOptions {
   int lsdyna_curve_id = 1;
   // CalculiX: write kinematic hardening with ccx's own combined model (*PLASTIC,
   // HARDENING=COMBINED + *CYCLIC HARDENING) instead of the isotropic equivalent in monotonic RD
-  // tension (default). Measured worse (docs/exports.md): ccx's back-stress modulus is the table
+  // tension (default). Measured worse (docs/reference/outputs.md): ccx's back-stress modulus is the table
   // slope at the accumulated strain and its back-stress is convected with the stretch.
   bool calculix_combined_hardening = false;
   // Measure (with spifit's own integrator) how far the exported law is from the card when the

@@ -1,4 +1,4 @@
-// The Abaqus deck (*MATERIAL block; Standard and Explicit): docs/exports.md "Abaqus".
+// The Abaqus deck (*MATERIAL block; Standard and Explicit): docs/reference/outputs.md "Abaqus".
 #include "reports/card_export.hpp"
 #include "reports/card_export_text.hpp"
 

@@ -1,4 +1,4 @@
-// The CalculiX deck (*MATERIAL block): docs/exports.md "CalculiX".
+// The CalculiX deck (*MATERIAL block): docs/reference/outputs.md "CalculiX".
 #include "reports/card_export.hpp"
 #include "reports/card_export_text.hpp"
 
@@ -40,7 +40,7 @@ std::vector<std::string> calculix_notes(const MaterialCard& card, const Exported
                 " MPa, gamma = " + num(law.gamma) + fit + ". Monotonic tension is reproduced; there is no Bauschinger "
                 "effect: after a reversal the reverse yield stress is too high by 2 X_RD (up to " + fixed(2.0 * xmax, 1) +
                 " MPa), a difference that decays over a reverse strain of a few 1/gamma. CalculiX's own combined "
-                "hardening was measured worse (docs/exports.md).");
+                "hardening was measured worse (docs/results/validation.md).");
   } else {
     n.push_back("APPROXIMATION: CalculiX's combined hardening (*PLASTIC, HARDENING=COMBINED = kinematic curve sigma_0(0) "
                 "+ (C/gamma)(1 - exp(-gamma ebar)), C = " + num(law.C) + " MPa, gamma = " + num(law.gamma) + fit +
@@ -48,7 +48,7 @@ std::vector<std::string> calculix_notes(const MaterialCard& card, const Exported
                 "accumulated plastic strain, C exp(-gamma ebar), instead of C + gamma |X| after a reversal, and its "
                 "finite-strain formulation stores the back-stress in the reference configuration (it keeps growing with "
                 "the stretch). Measured for card C.8, one C3D8 element: monotonic tension to 0.2 off by up to 7.8 %; "
-                "after reversing by 0.1 the stress is -14 MPa instead of -120 MPa (docs/exports.md).");
+                "after reversing by 0.1 the stress is -14 MPa instead of -120 MPa (docs/results/validation.md).");
   }
   return n;
 }

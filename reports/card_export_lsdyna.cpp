@@ -1,4 +1,4 @@
-// The LS-DYNA deck (*MAT_HILL_3R + *DEFINE_CURVE, long format): docs/exports.md "LS-DYNA".
+// The LS-DYNA deck (*MAT_HILL_3R + *DEFINE_CURVE, long format): docs/reference/outputs.md "LS-DYNA".
 #include "reports/card_export.hpp"
 #include "reports/card_export_text.hpp"
 

@@ -51,7 +51,7 @@ void write_header(std::ostringstream& os, const std::string& prefix, const std::
   if (!card.source.empty()) write_comment(os, prefix, "source: " + card.source, width, "  ");
   if (!card.file.empty()) write_comment(os, prefix, "card file: " + card.file, width, "  ");
   write_comment(os, prefix, "units: mm, N, s, t (tonne); stress MPa; density t/mm^3", width);
-  write_comment(os, prefix, "conventions and approximations (docs/exports.md):", width);
+  write_comment(os, prefix, "conventions and approximations (docs/reference/outputs.md):", width);
   for (std::size_t i = 0; i < notes.size(); ++i) {
     write_comment(os, prefix, std::to_string(i + 1) + ". " + notes[i], width, "   ");
   }
@@ -97,7 +97,7 @@ std::vector<std::string> common_notes(const MaterialCard& card, const ExportedLa
   }
   n.push_back("tables are true (Cauchy) stress [MPa] vs logarithmic equivalent plastic strain; spifit's law is written "
               "in Kirchhoff stress (tau = J sigma, yield on tau): the two differ by the elastic volume change, J - 1 = "
-              "(1 - 2 nu) tr(sigma)/E (6e-4 at 150 MPa uniaxial for AA3003-O, docs/material-point-scenes.md).");
+              "(1 - 2 nu) tr(sigma)/E (6e-4 at 150 MPa uniaxial for AA3003-O, docs/design/numerics-material.md).");
   return n;
 }
 

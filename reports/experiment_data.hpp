@@ -1,5 +1,5 @@
 #pragma once
-// The data file of each experiment of a fit, DIR/experiments/NAME.csv (docs/file-formats.md):
+// The data file of each experiment of a fit, DIR/experiments/NAME.csv (docs/reference/file-formats.md):
 // columns X (or "index"), measured, simulated_initial, simulated_final.
 #include "inverse/fit_record.hpp"
 

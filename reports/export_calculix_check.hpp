@@ -2,7 +2,7 @@
 // A one-element CalculiX check of an exported material block: one C3D8 unit cube, symmetry
 // planes x = 0, y = 0, z = 0, prescribed displacement of the face x = L (NLGEOM), printing
 // U, S, E and PEEQ at every increment to the .dat file. Used by tests/reports to compare ccx with
-// spifit's tensile scene (docs/exports.md, "CalculiX check").
+// spifit's tensile scene (docs/results/validation.md, "CalculiX check").
 //
 // Measures in the .dat file (ccx 2.20, NLGEOM): S is the Cauchy (true) stress, E the
 // Green-Lagrange strain; log strain = ln(1 + u/L) = 0.5 ln(1 + 2 E11).

@@ -1,5 +1,5 @@
 #pragma once
-// The plots of a fit report (docs/reports.md "Plots and gnuplot"): per curve experiment the
+// The plots of a fit report (docs/guide/reading-reports.md "Plots and gnuplot"): per curve experiment the
 // data with the initial and fitted simulation, and the residuals; the scalar experiments as
 // bars; the cost per iteration.
 #include "inverse/fit_record.hpp"

@@ -2,7 +2,7 @@
 // A human report of a fit: reads what `spifit fit --out DIR` wrote (DIR/fit.json,
 // DIR/experiments/NAME.csv) and writes DIR/report.md, DIR/report.html (self-contained, inline
 // CSS, images referenced as plots/NAME.svg) and DIR/plots/*.svg made with gnuplot
-// (scripts and data kept under DIR/plots/src/). Contents and rules: docs/reports.md.
+// (scripts and data kept under DIR/plots/src/). Contents and rules: docs/guide/reading-reports.md.
 #include <filesystem>
 #include <string>
 #include <vector>

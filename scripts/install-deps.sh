@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages spifit builds with, only those that are missing
 # (idempotent: a machine that has them all is not touched and needs no network).
-# Why each package is needed: docs/dependencies.md.
+# Why each package is needed: docs/design/dependencies.md.
 set -euo pipefail
 
 packages=(

@@ -79,7 +79,7 @@ bool tool_misses_element(const element::NodeVectors& x, double offset, const Sph
   return (centre - tool.centre).norm() > tool.radius + radius + 2.0 * offset;
 }
 
-// Regularised Coulomb friction at a contact point in contact (docs/contact.md, "Contact
+// Regularised Coulomb friction at a contact point in contact (docs/design/contact.md, "Contact
 // formulation (ShellContact)"): the trial traction is the committed one minus kt times the
 // slip, projected on the tangent plane (P); it sticks inside the cone |t| <= mu p and is
 // returned to it otherwise. Returns the traction on the sheet t and adds its derivative with

@@ -1,6 +1,6 @@
 #pragma once
 // Contact between a rigid analytic sphere (the forming tool) and the tool-side surface of the shell
-// (docs/contact.md, "Contact formulation (ShellContact)"; thesis §3.2, §7.1): penalty normal
+// (docs/design/contact.md, "Contact formulation (ShellContact)"; thesis §3.2, §7.1): penalty normal
 // pressure p = K_p <-g> at n x n contact points per element (the mid-surface offset by h/2 along
 // the director), and regularised Coulomb friction (elastic stick with a tangential penalty K_t,
 // return to the cone |t| <= mu p). The contribution of an element is returned in the shell's

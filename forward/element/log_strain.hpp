@@ -1,6 +1,6 @@
 #pragma once
 // In-plane logarithmic (Hencky) strain of a shell layer and its first and second derivatives
-// with respect to the Green-Lagrange strain (docs/numerics-shell.md).
+// with respect to the Green-Lagrange strain (docs/design/numerics-shell.md).
 //
 // The layer's in-plane right Cauchy-Green tensor in the material frame is C = I + 2E. For a
 // symmetric 2x2 tensor every isotropic function is a I + b C; for the logarithm, with

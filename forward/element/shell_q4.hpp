@@ -1,6 +1,6 @@
 #pragma once
 // ShellQ4: 4-node elastoplastic shell for large rotations and large membrane strains
-// (theory and references in docs/numerics-shell.md).
+// (theory and references in docs/design/numerics-shell.md).
 //
 //  * Degenerated-solid kinematics with a unit director per node: the point (xi, eta, zeta)
 //    sits at x = sum N_I (x_I + zeta h/2 d_I). Total Lagrangian: strains are measured from

@@ -1,5 +1,5 @@
 #pragma once
-// Through-thickness integration of one shell integration point (docs/numerics-shell.md).
+// Through-thickness integration of one shell integration point (docs/design/numerics-shell.md).
 //
 // The layer at zeta in [-1, 1] has the in-plane Green-Lagrange strain E(zeta) = e + z kappa
 // (material frame, engineering shear), z = zeta h / 2 with h the thickness at the start of

@@ -62,7 +62,7 @@ struct OutputDirectory::Manifest {
   }
   void write(const fs::path& dir) const {
     std::string text = "# spifit output directory: the entries spifit wrote here, one per line (a directory ends in /).\n"
-                       "# `--force` removes these and nothing else (docs/file-formats.md, \"Output directories\").\n";
+                       "# `--force` removes these and nothing else (docs/reference/file-formats.md, \"Output directories\").\n";
     for (const auto& n : listed) text += n + (fs::is_directory(dir / n) ? "/" : "") + "\n";
     write_file_atomic(file, text);
   }

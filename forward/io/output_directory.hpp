@@ -9,7 +9,7 @@
 //     names of spifit's outputs (summary.json, force.csv, vtu/, ...) are removed, the rest kept;
 //   - neither: refused, it is not a spifit output.
 // Files are written atomically (temporary + rename), so a killed run never leaves a half-written
-// file under its final name. Format: docs/file-formats.md, "Output directories".
+// file under its final name. Format: docs/reference/file-formats.md, "Output directories".
 #include "forward/io/input_error.hpp"
 
 #include <filesystem>

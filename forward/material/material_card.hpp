@@ -1,6 +1,6 @@
 #pragma once
 // A material card: the constitutive parameters of one material, read from a TOML file
-// (schema in docs/file-formats.md) and validated.
+// (schema in docs/reference/file-formats.md) and validated.
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_params.hpp"
 

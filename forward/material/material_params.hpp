@@ -1,7 +1,7 @@
 #pragma once
 // Constitutive parameters of the Hill48 + Swift + {none, Armstrong-Frederick, Ziegler} law,
 // templated on the scalar type so that ceres::Jet gives exact parameter derivatives of a
-// material-point curve (docs/numerics-material.md, "Jets (exact parameter derivatives)").
+// material-point curve (docs/design/numerics-material.md, "Jets (exact parameter derivatives)").
 #include "forward/material/scalar.hpp"
 
 #include <string>

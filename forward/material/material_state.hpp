@@ -1,6 +1,6 @@
 #pragma once
 // State of one integration point, and the status a constitutive update reports instead of throwing
-// (docs/numerics-material.md, "Status instead of exceptions"; MGIS/MFront's integrate -> ok /
+// (docs/design/numerics-material.md, "Status instead of exceptions"; MGIS/MFront's integrate -> ok /
 // failed + suggested step factor).
 #include "forward/material/scalar.hpp"
 

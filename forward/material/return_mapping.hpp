@@ -2,7 +2,7 @@
 // Implicit return mapping for Hill48 + Swift + {none, Armstrong-Frederick, Ziegler}
 // hardening, in 3D (Dim = 6) or plane stress (Dim = 3), with the consistent tangent.
 //
-// Algorithm (docs/numerics-material.md gives the derivation):
+// Algorithm (docs/design/numerics-material.md gives the derivation):
 //  * Elastic predictor sigma_tr = sigma_0 + C d_eps; xi = sigma - X is the shifted stress.
 //  * Plastic corrector, closest-point projection: d_eps_p = dl * P xi / (2 sigma_F) and
 //    sigma = sigma_tr - C d_eps_p, with dl the equivalent plastic strain increment.

@@ -1,5 +1,5 @@
 #pragma once
-// The two stress spaces served by one return-mapping core (docs/numerics-material.md,
+// The two stress spaces served by one return-mapping core (docs/design/numerics-material.md,
 // "Conventions" and "Plane stress: exact reduction"):
 //  * Dim = 6, full 3D, Voigt order xx, yy, zz, xy, xz, yz;
 //  * Dim = 3, plane stress (szz = sxz = syz = 0), order xx, yy, xy.

@@ -1,5 +1,5 @@
 #pragma once
-// Cyclic (rotational) symmetry of a pie about the z axis (thesis Fig. 8.4; docs/cone-scene.md,
+// Cyclic (rotational) symmetry of a pie about the z axis (thesis Fig. 8.4; docs/design/cone.md,
 // "Virtual tools"): every node of the second pie edge carries the DOFs of its partner on the
 // first edge, rotated by the pie angle: u_s = R(gamma) u_m and psi_s = R(gamma) psi_m. Nodes
 // on the axis belong to both edges: their in-plane translations and rotations vanish

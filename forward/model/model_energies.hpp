@@ -10,7 +10,7 @@
 // through-thickness stress to do that work. The balance
 //   external_work = elastic + plastic + transverse_shear + contact_stored
 //                   + friction_dissipation + contact_offset_release
-// holds up to the trapezoidal rule's error (balance_error; docs/cone-scene.md, "Energies").
+// holds up to the trapezoidal rule's error (balance_error; docs/design/cone.md, "Energies").
 namespace spifit::model {
 
 class ShellModel;

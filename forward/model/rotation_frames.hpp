@@ -1,5 +1,5 @@
 #pragma once
-// Nodal rotation frames: five unknowns per node of a shell (docs/numerics-shell.md, "Nodal
+// Nodal rotation frames: five unknowns per node of a shell (docs/design/numerics-shell.md, "Nodal
 // rotation frames"). At every node whose three rotations are free (neither prescribed, tied,
 // nor the master of a tie), the rotation unknowns are taken in the frame (t1, t2, d) of the
 // node's current director d instead of about x, y, z, and the one about d -- the drilling

@@ -21,14 +21,14 @@ namespace spifit::model {
 struct ShellModelOptions {
   element::ShellOptions shell;
   // Thickness over the shortest element edge: a warning above warn_..., an error above max_...
-  // (the thesis's fine cone mesh has t/l = 1.7; docs/numerics-shell.md).
+  // (the thesis's fine cone mesh has t/l = 1.7; docs/design/numerics-shell.md).
   double warn_thickness_over_length = 1.0;
   double max_thickness_over_length = 3.0;
   // Material axes of the elements. `fixed` (default): the rolling direction is
   // shell.material_axis everywhere, as in a rolled sheet. `polar`: shell.material_axis is read in
   // each element's polar frame (e_r, e_theta, z) at its reference centroid, so the rolling
   // direction turns with the polar angle; the material is then the same in every pie of a disc,
-  // which is what the cyclic ties of a pie model assume (docs/cone-scene.md, "Material axes").
+  // which is what the cyclic ties of a pie model assume (docs/design/cone.md, "Material axes").
   enum class MaterialAxes { fixed, polar };
   MaterialAxes material_axes = MaterialAxes::fixed;
 };

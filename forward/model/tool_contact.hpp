@@ -1,7 +1,7 @@
 #pragma once
 // The rigid spherical forming tool as a contribution of the shell model: the tool's centre
 // follows a path of the load factor, the contact with the sheet is contact::ShellContact
-// (penalty pressure, regularised Coulomb friction, docs/contact.md), and on a pie model the
+// (penalty pressure, regularised Coulomb friction, docs/design/contact.md), and on a pie model the
 // contact also sees copies of the tool rotated about z by the pie angle (the "virtual tools" of
 // thesis Fig. 8.4), each with its own contact point states. It keeps the tool's work on the
 // sheet and the energy released by the moving contact surface (ModelEnergies).

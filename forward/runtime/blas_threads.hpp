@@ -1,6 +1,6 @@
 #pragma once
 // Which BLAS sits behind libblas.so.3 (Debian's alternative), as far as calling it from two
-// threads at once is concerned (docs/dependencies.md, BLAS). Debian 12 ships OpenBLAS in three
+// threads at once is concerned (docs/design/dependencies.md, BLAS). Debian 12 ships OpenBLAS in three
 // builds: the serial one (libopenblas0-serial) is not safe for concurrent calls -- two CHOLMOD
 // factorisations side by side corrupted each other's scratch buffers and reported "not positive
 // definite" -- while the OpenMP and pthreads builds lock their buffers. ATLAS and the reference

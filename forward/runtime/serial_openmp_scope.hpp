@@ -5,7 +5,7 @@
 // (CHOLMOD_OMP_NUM_THREADS, compiled in) for every supernode it assembles. On the 2-core test
 // machine this oversubscribes the cores and turns each factorisation into thousands of thread
 // wake-ups: the 45-degree cone pie of cone70_pie45_short spent 43 s in the linear solver with
-// them and 19 s without (docs/benchmarks.md). While this scope lives, max-active-levels is 0, so
+// them and 19 s without (docs/design/decisions.md). While this scope lives, max-active-levels is 0, so
 // every parallel region the calling thread opens runs on that thread alone; the element loops of
 // spifit, outside the scope, keep all threads. Use it from serial code only (the ICV is global in
 // libgomp).
@@ -13,7 +13,7 @@
 // The scope also sets the calling thread's team size to 1: the OpenMP build of OpenBLAS
 // (libopenblas0-openmp) sizes its own teams by omp_get_max_threads() and then waits for the
 // partners of a split dgemm, which never come when max-active-levels is 0 -- a deadlock
-// (docs/dependencies.md, BLAS).
+// (docs/design/dependencies.md, BLAS).
 #ifdef _OPENMP
 #include <omp.h>
 #endif

@@ -29,7 +29,7 @@ std::string input_reference_markdown() {
       "(a test keeps this file equal to it). A key `table.key` is the key `key` of the TOML table `[table]`; "
       "\"varied by sweeps and fits\" marks the numbers an `[inputs.\"NAME\"]` table of a sweep file may vary. "
       "Keys the reader handles itself (paths, lists, the tool path) are listed with their type. Unknown keys are "
-      "errors. Formats and examples: docs/file-formats.md.\n\n"
+      "errors. Formats and examples: docs/reference/file-formats.md.\n\n"
       "## Scene kinds\n\n";
   const SceneKind* shown = nullptr;
   for (const auto& k : scene_kinds()) {
@@ -47,7 +47,7 @@ std::string input_reference_markdown() {
     shown = &k;
     out += kind_reference_markdown(k);
   }
-  out += "## Material parameters\n\nThe parameters of a material card (docs/file-formats.md, \"Material card\") by the names fits and "
+  out += "## Material parameters\n\nThe parameters of a material card (docs/reference/file-formats.md, \"Material card\") by the names fits and "
          "sweeps use; the card file holds each under the key given.\n\n"
          "| name | card key | unit | valid values | description |\n|---|---|---|---|---|\n";
   for (const auto& m : material::material_inputs())

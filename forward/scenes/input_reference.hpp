@@ -1,5 +1,5 @@
 #pragma once
-// The generated key reference (docs/input-reference.md, `spifit inputs --markdown`): every scene
+// The generated key reference (docs/reference/input-reference.md, `spifit inputs --markdown`): every scene
 // kind with its named inputs (io/named_inputs.hpp) and observables, and the material parameters
 // (material/material_inputs.hpp), from the tables the readers use.
 #include "forward/scenes/common/scene.hpp"

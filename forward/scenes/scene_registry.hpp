@@ -1,7 +1,7 @@
 #pragma once
 // Every scene kind spifit knows (common/scene.hpp), by name: what `spifit run`, `sweep`,
 // `synth`, `inputs` and fits look a scene file's [scene] kind up in. A new kind is a folder of
-// its own plus its line in scene_registry.cpp (docs/extending.md).
+// its own plus its line in scene_registry.cpp (docs/design/architecture.md).
 #include "forward/scenes/common/scene.hpp"
 
 #include <deque>

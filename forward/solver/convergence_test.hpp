@@ -1,5 +1,5 @@
 #pragma once
-// The convergence test of one Newton increment (docs/numerics-shell.md, "Global solution",
+// The convergence test of one Newton increment (docs/design/numerics-shell.md, "Global solution",
 // Convergence): the force scale and relative residual of an iterate, the rules that accept it,
 // and the rules that give the increment up.
 #include "forward/solver/newton_options.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Linear constraints of the implicit solver (docs/numerics-shell.md, "Global solution"): the full
+// Linear constraints of the implicit solver (docs/design/numerics-shell.md, "Global solution"): the full
 // DOF vector is u = T u_bar + g, where u_bar are the free (reduced) unknowns, g the prescribed
 // values and T maps every DOF to a combination of reduced ones:
 //   * free DOF: its own reduced unknown;

@@ -1,5 +1,5 @@
 #pragma once
-// Automatic increment control (docs/numerics-shell.md, "Global solution", Increment control):
+// Automatic increment control (docs/design/numerics-shell.md, "Global solution", Increment control):
 // where the next increment ends (lambda_end, breakpoints, restarts), growth after easy
 // increments under a ceiling that a failure lowers, cut-back after a failure, and the minimum
 // increment where a failure ends the run.

@@ -1,5 +1,5 @@
 #pragma once
-// Step length along a Newton correction du (docs/numerics-shell.md, "Global solution", Line
+// Step length along a Newton correction du (docs/design/numerics-shell.md, "Global solution", Line
 // search): a trial where an element fails is halved; optionally, the energy line search
 // (Crisfield) takes secant steps on s(alpha) = du . r(alpha) until |s| has dropped to 0.8 |s(0)|.
 #include "forward/solver/newton_options.hpp"

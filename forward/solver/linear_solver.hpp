@@ -1,5 +1,5 @@
 #pragma once
-// Direct sparse solvers from SuiteSparse (docs/meshes.md, "Sparse linear algebra"): UMFPACK for
+// Direct sparse solvers from SuiteSparse (docs/design/numerics-shell.md, "Sparse linear algebra"): UMFPACK for
 // general (non-symmetric) tangents — large rotations, friction — and CHOLMOD for symmetric positive
 // definite ones. The symbolic analysis (fill-reducing ordering) depends only on the pattern and is
 // done once per pattern; each factorize() redoes only the numeric factorisation. Failures are

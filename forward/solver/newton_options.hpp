@@ -1,5 +1,5 @@
 #pragma once
-// Options of the implicit Newton solver (NewtonSolver); docs/numerics-shell.md, "Global
+// Options of the implicit Newton solver (NewtonSolver); docs/design/numerics-shell.md, "Global
 // solution", explains the rules and records what they were measured to do.
 #include "forward/solver/linear_solver.hpp"
 

@@ -77,7 +77,7 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
     const int count = std::min(chunk, ne - first);
     auto t0 = std::chrono::steady_clock::now();
     // Dynamic chunks: elements under the tool (plastic layers, contact) cost more than the
-    // rest, so static halves would leave one thread waiting (docs/numerics-shell.md, Assembly).
+    // rest, so static halves would leave one thread waiting (docs/design/numerics-shell.md, Assembly).
 #pragma omp parallel for schedule(dynamic, 16)
     for (int i = 0; i < count; ++i) {
       const auto ui = static_cast<std::size_t>(i);

@@ -1,5 +1,5 @@
 #pragma once
-// Implicit static solution (docs/numerics-shell.md, "Global solution"): load factor lambda
+// Implicit static solution (docs/design/numerics-shell.md, "Global solution"): load factor lambda
 // from 0 to 1 in increments; Newton-Raphson on the reduced residual. NewtonSolver assembles
 // (parallel element evaluation with OpenMP, assembly in element order, so results do not depend
 // on the thread count), solves the linear systems (UMFPACK or CHOLMOD on a pattern built once,

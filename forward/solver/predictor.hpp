@@ -1,6 +1,6 @@
 #pragma once
 // The extrapolated first iterate of an increment (NewtonOptions::extrapolate;
-// docs/numerics-shell.md, "Global solution", Predictor): the free part of the last converged
+// docs/design/numerics-shell.md, "Global solution", Predictor): the free part of the last converged
 // increment, scaled to the new increment's size.
 #include "forward/solver/dof_constraints.hpp"
 #include "forward/solver/nonlinear_problem.hpp"

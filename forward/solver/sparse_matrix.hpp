@@ -1,5 +1,5 @@
 #pragma once
-// Sparse matrices of the implicit FE solver (docs/numerics-shell.md, "Global solution"): a CSR
+// Sparse matrices of the implicit FE solver (docs/design/numerics-shell.md, "Global solution"): a CSR
 // pattern built once from the element connectivity, an assembly map giving, for every element, the
 // positions of its entries in the value array, and deterministic assembly (element matrices may be
 // computed in parallel; they are added in element order).

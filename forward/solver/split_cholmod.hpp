@@ -1,5 +1,5 @@
 #pragma once
-// Two-domain Cholesky (docs/numerics-shell.md, "Split factorisation"): the symmetric positive
+// Two-domain Cholesky (docs/design/numerics-shell.md, "Split factorisation"): the symmetric positive
 // definite tangent K is cut by a node separator S (METIS, through CHOLMOD's bisector) into two
 // domains D0 and D1 that share no entry. Each half K_h = K[D_h + S, D_h + S] is a principal
 // submatrix of K, so it is positive definite; CHOLMOD factorises both halves at the same time

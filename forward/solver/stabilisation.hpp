@@ -1,5 +1,5 @@
 #pragma once
-// Stabilised increments (docs/numerics-shell.md, "Stabilised increments"; NewtonOptions::
+// Stabilised increments (docs/design/numerics-shell.md, "Stabilised increments"; NewtonOptions::
 // stabilisation): viscous forces c D du_bar on the reduced unknowns of an increment, and the
 // damping factor c that an increment failing at the minimum increment switches on or raises.
 #include "forward/solver/newton_counters.hpp"

@@ -3,7 +3,7 @@
 // waypoints are positions of the tool CENTRE in the global frame of the project: the
 // sheet's mid-surface is z = 0, its initial top (tool-side) surface z = t/2, the tool comes
 // from +z, the cone axis is the z axis, polar angle theta measured from +x towards +y.
-// docs/cone-paths.md describes the same with the numbers of the presets.
+// docs/design/cone.md describes the same with the numbers of the presets.
 //
 // Geometry, in the (r, z) half-plane of any polar angle:
 // - CAD surface = the part's inner, tool-side surface, the cone
@@ -19,7 +19,7 @@
 //   so the tool tip (z_c - R) lies R (1 - cos alpha) below the touching point. The
 //   centres of all contours lie on a cone parallel to the CAD surface (offset by R).
 //
-// Path of one cone (every segment at `feed`, no rapids; see docs/cone-paths.md for numbers):
+// Path of one cone (every segment at `feed`, no rapids; see docs/design/cone.md for numbers):
 // - Start: tool centre above the start of contour 1 with its tip at t/2 + approach_clearance;
 //   a vertical approach down to contour 1. The end of the path is a vertical retract from the
 //   end of contour N back to the same height.
@@ -110,7 +110,7 @@ ToolPath multistage_cone_path(const std::vector<ConePathOptions>& stages, double
 ConePath annotated_multistage_cone_path(const std::vector<ConePathOptions>& stages,
                                         double safe_z);
 
-// Presets (docs/cone-paths.md, "Presets"). Tool radius 5 mm (10 mm sphere, thesis §8.1.1,
+// Presets (docs/design/cone.md, "Presets"). Tool radius 5 mm (10 mm sphere, thesis §8.1.1,
 // §9.1.1); feed 2000 mm/min.
 // cone50 (§4.1.2 = stage 1 of §8.1): alpha 50, dz 1 mm, 30 contours, t 1.5 mm, r_top 64 mm,
 // stepdown at 6 deg (stage 1's); the thesis simulated a quarter (pie 90).

@@ -1,7 +1,7 @@
 #pragma once
 // The path of the forming tool CENTRE (not the contact point) as a polyline of waypoints, with
 // a feed per segment. Readers: G-code (gcode.hpp) and CSV point lists (path_csv.hpp). Units
-// mm and s (docs/file-formats.md). Queries by travelled distance or by time clamp to the path ends.
+// mm and s (docs/reference/file-formats.md). Queries by travelled distance or by time clamp to the path ends.
 #include <Eigen/Core>
 
 #include <vector>

@@ -1,4 +1,4 @@
-// spifit run --resume (docs/cli.md; docs/cone-scene.md, "Checkpoints and resume"): a cone run
+// spifit run --resume (docs/reference/cli.md; docs/design/architecture.md, "Checkpoints and resume"): a cone run
 // killed with SIGKILL after its first checkpoint and resumed ends with the force.csv and
 // contours.csv of an uninterrupted run, byte for byte; --resume refuses other scene kinds, a
 // missing directory or checkpoint, and --force, with exit code 2 and one line naming the

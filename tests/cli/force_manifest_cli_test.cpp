@@ -1,6 +1,6 @@
 // --force removes only what spifit wrote: the entries DIR/.spifit-manifest lists (or, in a
 // directory of an older spifit without one, the entries with spifit's output names); a user's
-// own files stay, with a warning (docs/file-formats.md, "Output directories").
+// own files stay, with a warning (docs/reference/file-formats.md, "Output directories").
 #include "tests/cli/cli_support.hpp"
 #include "tests/support/temp_files.hpp"
 

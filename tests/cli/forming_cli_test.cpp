@@ -29,7 +29,7 @@ TEST(FormingCli, IndentWritesForceSummaryAndVtu) {
   ASSERT_EQ(r.code, 0) << r.err;
   const auto s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
   EXPECT_EQ(s["status"], "ok");
-  EXPECT_NEAR(s["final_force"][2].get<double>(), 289.40, 0.05);  // K_p = 1e3 (docs/contact.md)
+  EXPECT_NEAR(s["final_force"][2].get<double>(), 289.40, 0.05);  // K_p = 1e3 (docs/results/validation.md)
   EXPECT_GT(s["max_penetration"].get<double>(), 0.0);
   std::ifstream f(out / "force.csv");
   int lines = 0;

@@ -1,4 +1,4 @@
-// spifit run --resume on a forming scene (docs/cli.md): a line run killed with SIGKILL after
+// spifit run --resume on a forming scene (docs/reference/cli.md): a line run killed with SIGKILL after
 // its first checkpoint and resumed ends with the force.csv, energies.csv and sections of an
 // uninterrupted run, byte for byte.
 #include "tests/cli/cli_support.hpp"

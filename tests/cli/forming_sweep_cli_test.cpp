@@ -116,8 +116,8 @@ TEST(ConeSweepCli, FrictionSweepOfACone) {
   fs::remove_all(dir);
 }
 
-// The documented edges of a cone sweep's contour range and window (docs/file-formats.md, "Sweep
-// file and outputs"): a contour metric without a contour range and a window on a cone are input
+// The documented edges of a cone sweep's contour range and window (docs/reference/file-formats.md, "Sweep
+// file"): a contour metric without a contour range and a window on a cone are input
 // errors (exit 2, the key named, --out untouched); a range the run never reaches gives NaN, the
 // run being fine.
 TEST(ConeSweepCli, ContourRangeAndWindowEdges) {
@@ -150,7 +150,7 @@ TEST(ConeSweepCli, ContourRangeAndWindowEdges) {
   fs::remove_all(dir);
 }
 
-// A point that fails at run time (docs/cli.md "sweep", docs/file-formats.md): the small tiny
+// A point that fails at run time (docs/reference/cli.md "sweep", docs/reference/file-formats.md): the small tiny
 // cone at force_tolerance 1e-12 fails after 9 increments (about 0.3 s), at 1e-4 it runs. The
 // failed point is reported on stderr with its message, has ok = 0 and NaN force metrics but
 // keeps its counts (those of its own summary.json), summary.json counts it, the exit code is 0

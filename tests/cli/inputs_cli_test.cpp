@@ -1,5 +1,5 @@
 // spifit inputs: the kinds, a kind's keys and observables, and the Markdown reference that
-// docs/input-reference.md must equal (regenerate: spifit inputs --markdown > docs/input-reference.md).
+// docs/reference/input-reference.md must equal (regenerate: spifit inputs --markdown > docs/reference/input-reference.md).
 #include "tests/cli/cli_support.hpp"
 #include "forward/io/text_file.hpp"
 
@@ -8,8 +8,8 @@
 TEST(InputsCli, TheDocumentedReferenceIsTheGeneratedOne) {
   const auto r = spifit::test::run_spifit("inputs --markdown");
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(r.out, spifit::io::read_text_file(std::string(SPIFIT_SOURCE_DIR) + "/docs/input-reference.md"))
-      << "docs/input-reference.md is stale: spifit inputs --markdown > docs/input-reference.md";
+  EXPECT_EQ(r.out, spifit::io::read_text_file(std::string(SPIFIT_SOURCE_DIR) + "/docs/reference/input-reference.md"))
+      << "docs/reference/input-reference.md is stale: spifit inputs --markdown > docs/reference/input-reference.md";
 }
 
 TEST(InputsCli, KindsAndOneKindsKeys) {

@@ -1,5 +1,5 @@
 // Messages a user test found misleading: each names what is wrong (file, key, value) and exits
-// with 2, the code of a usage or input error (docs/cli.md).
+// with 2, the code of a usage or input error (docs/reference/cli.md).
 #include "tests/cli/cli_support.hpp"
 #include "tests/support/temp_files.hpp"
 

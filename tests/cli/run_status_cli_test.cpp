@@ -1,4 +1,4 @@
-// Run status from the command line (docs/file-formats.md, "Run status"): a running summary names
+// Run status from the command line (docs/reference/file-formats.md, "Run status"): a running summary names
 // its process and beats; `spifit status DIR` tells a live run from a dead one (exit 0 / 1) and
 // from a directory that is no spifit output (exit 2); SIGINT and SIGTERM end an FE run at the
 // end of an increment with a checkpoint, status "interrupted" and exit code 130 / 143, and

@@ -1,4 +1,4 @@
-// Cone sections as fit experiments (docs/file-formats.md "Fit file"): the section the small tiny
+// Cone sections as fit experiments (docs/reference/file-formats.md "Fit file"): the section the small tiny
 // cone takes after its last contour, read back as data (directly and through the laser-scan
 // averaging of `spifit scan`), its residuals at the parameters that made it and away from them,
 // and the input errors of the experiment; the part centre's depth as a scalar experiment.

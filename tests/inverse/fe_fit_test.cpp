@@ -1,4 +1,4 @@
-// Fits on FE scenes (docs/identification.md, "Fits on FE scenes"): the force curve of a run,
+// Fits on FE scenes (docs/design/identification.md, "Fits on FE scenes"): the force curve of a run,
 // the fit file's FE experiments and their input errors, the shared runs and their failures, and
 // a twin experiment that recovers the friction coefficient of the tiny line test.
 #include "forward/io/input_error.hpp"
@@ -270,7 +270,7 @@ TEST(FeFit, TinyLineFrictionIsRecoveredAndExperimentsShareTheirRuns) {
 
 // The central-difference Jacobian of an FE experiment (the fit's own, numeric_cost.hpp: relative
 // step 1e-6) against a reference with 100 times the step: the columns agree to 1e-4 of their
-// norm (docs/identification.md, "Derivatives": the forward model's noise lies far below).
+// norm (docs/design/identification.md, "Derivatives": the forward model's noise lies far below).
 TEST(FeFit, JacobianOfAForceCurveAgreesWithALargerStep) {
   const TinyLineData fx = tiny_line_data("fx");
   const fs::path f = write_fit(fit_head(std::string(kFriction) + "[parameters.\"swift.K\"]\ninitial = 150.0\nlower = 100.0\nupper = 300.0\n") +
@@ -307,7 +307,7 @@ TEST(FeFit, JacobianOfAForceCurveAgreesWithALargerStep) {
 
 // Twin experiment on a shape: the section at E of the tiny line test made at mu = 0.1 (no noise)
 // gives back mu from 0.14. Friction drags the sheet: the section moves by up to 0.045 mm between
-// mu = 0 and 0.2 on this coarse mesh (docs/identification.md, "What each observable identifies").
+// mu = 0 and 0.2 on this coarse mesh (docs/design/identification.md, "What each observable identifies").
 TEST(FeFit, TinyLineFrictionFromTheSectionAtE) {
   const fs::path scene = test::write_tiny_line(test::temp_path("line.toml"));
   std::ofstream(scene, std::ios::app) << "[contact]\nfriction = 0.1\n";

@@ -229,7 +229,7 @@ TEST(FormingSweep, InputErrorsNameFileAndKey) {
 }
 
 // Checks across keys, which the scene readers make, reject a grid value at read time too
-// (docs/architecture.md, "Typed results, kinds and named inputs"): the surface rule with an
+// (docs/design/architecture.md, "Typed results, kinds and named inputs"): the surface rule with an
 // even thickness_points on a cone, and a sheet too small for the tool path of an indent.
 TEST(FormingSweep, CrossKeyChecksRejectGridValuesAtReadTime) {
   TempDir tmp("cross_key");
@@ -257,7 +257,7 @@ TEST(FormingSweep, CrossKeyChecksRejectGridValuesAtReadTime) {
   for (const char* part : {"inputs.sheet.length.values = 4", "never goes below"}) EXPECT_NE(e.find(part), std::string::npos) << e;
 }
 
-// The bundled FE sweep files read (the runs are on demand: README, docs/cli.md).
+// The bundled FE sweep files read (the runs are on demand: README, docs/reference/cli.md).
 TEST(FormingSweep, BundledSweepFilesRead) {
   const auto p = inverse::read_sweep_file(src("experiments/aa3003o/sweep_indent_penalty.toml"));
   ASSERT_EQ(p.inputs.size(), 1u);

@@ -1,4 +1,4 @@
-// Material-point experiments of a fit file (docs/file-formats.md, "Fit file"): a table of scalars
+// Material-point experiments of a fit file (docs/reference/file-formats.md, "Fit file"): a table of scalars
 // (one run and one residual per row), the angle of an experiment over its scene's, a scene
 // without a card of its own, and their input errors naming file, key and value.
 #include "forward/io/input_error.hpp"
@@ -24,7 +24,7 @@ std::string fit_text(const std::string& experiments) {
   return "[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") + "\"\n[parameters.\"hill.N\"]\nlower = 1.0\nupper = 8.0\n" + experiments;
 }
 
-// Lankford coefficients of card C.2 (docs/material-cards.md): r0 = H/G, r45 = (2N - F - G) / (2 (F + G)), r90 = H/F.
+// Lankford coefficients of card C.2 (docs/reference/file-formats.md): r0 = H/G, r45 = (2N - F - G) / (2 (F + G)), r90 = H/F.
 constexpr double kF = 1.224, kG = 1.193, kH = 0.807, kN = 2.977;
 const double kLankford[3] = {kH / kG, (2 * kN - kF - kG) / (2 * (kF + kG)), kH / kF};
 

@@ -91,7 +91,7 @@ std::string fit_text(const fs::path& scene, const fs::path& data, const std::str
 }
 
 // A fit with FE experiments stops at function, parameter and gradient tolerances of 1e-9, 1e-8
-// and 1e-10 (an FE cost is not smooth below about 1e-11 of itself; docs/identification.md,
+// and 1e-10 (an FE cost is not smooth below about 1e-11 of itself; docs/design/identification.md,
 // "Stopping"); a tolerance the file states wins.
 TEST(FitFile, FeFitsStopAtTheFeTolerancesUnlessTheFileSetsThem) {
   const fs::path scene = test::write_tiny_line(test::temp_path("line.toml"));

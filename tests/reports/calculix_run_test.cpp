@@ -1,5 +1,5 @@
 // Runs CalculiX (ccx) on exported cards: one C3D8 element in uniaxial tension with NLGEOM to
-// 20 % log strain, compared with spifit's tensile scene (docs/exports.md, "CalculiX check").
+// 20 % log strain, compared with spifit's tensile scene (docs/results/validation.md, "CalculiX check").
 // Skipped when ccx is not installed (Debian package calculix-ccx).
 #include "reports/card_export.hpp"
 #include "reports/card_export_readers.hpp"
@@ -149,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(Cards, CalculixTension, ::testing::Values("vm", "c3c4",
 
 // Von Mises + Ziegler (card C.8), tension to 0.2 and back to 0.1. Default export (isotropic
 // equivalent): monotonic tension reproduced, no Bauschinger effect. ccx's own combined hardening
-// (option): measured only (docs/exports.md).
+// (option): measured only (docs/results/validation.md).
 namespace {
 
 struct ReversalDifferences {
@@ -204,7 +204,7 @@ TEST(CalculixKinematic, IsotropicEquivalentAndCombined) {
       EXPECT_LT(d.monotonic_rel, 0.01);
       EXPECT_LT(std::abs(d.end_ccx - d.end_spifit), 0.05 * std::abs(d.end_spifit));  // the transient has decayed
     } else {
-      EXPECT_LT(d.monotonic_rel, 0.15);  // documented 7.8 %: guards the numbers in docs/exports.md
+      EXPECT_LT(d.monotonic_rel, 0.15);  // documented 7.8 %: guards the numbers in docs/results/validation.md
     }
   }
 }

@@ -1,4 +1,4 @@
-// The fit report's verdicts on hand-made records (docs/reports.md "Rules for verdicts and
+// The fit report's verdicts on hand-made records (docs/guide/reading-reports.md "Rules for verdicts and
 // findings"): noise and range conditioning, the runs test, bounds, correlations, failures.
 #include "reports/fit_document.hpp"
 #include "reports/fit_verdict.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Closed-form material-point responses used as references (derivations in
-// docs/material-point-scenes.md). All in Kirchhoff stress vs the law's strain measure.
+// docs/design/numerics-material.md). All in Kirchhoff stress vs the law's strain measure.
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_params.hpp"
 #include "forward/material/swift_hardening.hpp"

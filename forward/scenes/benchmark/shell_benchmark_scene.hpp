@@ -2,7 +2,7 @@
 // Shell benchmark scene files (kind = "shell_benchmark", experiments/benchmarks/*.toml):
 // reading, running and writing DIR/summary.json (value, reference, relative error),
 // DIR/increments.csv (convergence report per increment) and DIR/vtu/shell.pvd (ParaView).
-// Schema: docs/file-formats.md.
+// Schema: docs/reference/file-formats.md.
 #include "forward/io/series.hpp"
 #include "forward/scenes/common/fe_run.hpp"
 #include "forward/scenes/common/run_files.hpp"

@@ -1,8 +1,8 @@
 #pragma once
-// The shell element's obstacle course (docs/shell-benchmarks.md): each benchmark builds its mesh,
+// The shell element's obstacle course (docs/results/validation.md): each benchmark builds its mesh,
 // material, supports and loads, says whether it is a linear or a nonlinear analysis, and
 // extracts one value to compare with a published or closed-form reference. Sources and
-// normalisations: docs/shell-benchmarks.md.
+// normalisations: docs/results/validation.md.
 #include "forward/mesh/mesh.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/solver/dof_constraints.hpp"

@@ -5,7 +5,7 @@
 // its observers; FeRun builds the shell model with the tool as a contribution, steps the Newton
 // solver over the whole path, calls the observers after every increment and at every mark,
 // writes VTU steps and checkpoints, and resumes from a checkpoint bit for bit
-// (docs/architecture.md, "FE runs").
+// (docs/design/architecture.md, "FE runs").
 #include "forward/contact/shell_contact.hpp"
 #include "forward/material/material_params.hpp"
 #include "forward/mesh/mesh.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The observables every FE forming run gives (docs/extending.md, "A new observable"): read off
+// The observables every FE forming run gives (docs/design/architecture.md, "A new observable"): read off
 // the FeSceneResult part of a kind's typed result, appended to the kind's own.
 #include "forward/scenes/common/scene.hpp"
 

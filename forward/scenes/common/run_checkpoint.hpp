@@ -1,5 +1,5 @@
 #pragma once
-// Checkpoints of an FE run (docs/cone-scene.md, "Checkpoints and resume"). DIR/checkpoint/
+// Checkpoints of an FE run (docs/design/architecture.md, "Checkpoints and resume"). DIR/checkpoint/
 // state.bin holds everything that decides how the run goes on: the model's committed state
 // (nodal positions and directors, every layer of every section, the tool and its copies with
 // their contact point states), the Newton solver's stepping state (load factor, next increment,

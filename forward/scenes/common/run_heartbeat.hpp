@@ -1,5 +1,5 @@
 #pragma once
-// What tells a live run from a dead one (docs/file-formats.md, "Run status"). While a run goes
+// What tells a live run from a dead one (docs/reference/file-formats.md, "Run status"). While a run goes
 // on, DIR/summary.json says "status": "running" with the process that runs it ("pid", "host"),
 // when it started ("started") and a "heartbeat" (UTC times, ISO 8601), rewritten atomically at
 // most every "heartbeat_interval" seconds as the run makes progress (FE increments; a fit's or

@@ -3,7 +3,7 @@
 // without files), its named inputs read and set, and its typed result read through the kind's
 // observables. `spifit run`, sweeps, synthetic data and fits work through this interface and
 // the registry (scene_registry.hpp), so that a new kind is a folder plus one registration line
-// (docs/extending.md).
+// (docs/design/architecture.md).
 #include "forward/io/named_inputs.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/scenes/common/fe_run.hpp"

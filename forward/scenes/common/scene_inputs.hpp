@@ -1,5 +1,5 @@
 #pragma once
-// What every kind's reader shares (docs/extending.md, "A new scene kind"): the [scene] keys
+// What every kind's reader shares (docs/design/architecture.md, "A new scene kind"): the [scene] keys
 // kind, name, description and material in its input table, reading name, description and card,
 // and letting the input table read the TOML tables it declares.
 #include "forward/io/named_inputs.hpp"

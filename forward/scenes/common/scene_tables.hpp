@@ -36,7 +36,7 @@ struct InputViolation {
 // [solver] tangent: how a tangent made non-symmetric (by sliding friction or kinematic
 // hardening) is factorised. auto: its symmetric part with CHOLMOD while the friction coefficient
 // is at most kSymmetrisedTangentFriction, else exact (NewtonOptions::symmetric_tangent; the
-// measurements behind the rule are in docs/contact.md, "Friction tangent").
+// measurements behind the rule are in docs/design/contact.md, "Friction tangent").
 enum class FrictionTangent { automatic, exact, symmetrised };
 inline constexpr double kSymmetrisedTangentFriction = 0.2;
 std::string to_string(FrictionTangent t);

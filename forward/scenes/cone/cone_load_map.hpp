@@ -1,5 +1,5 @@
 #pragma once
-// The load map of a cone run (common/load_map.hpp; docs/cone-scene.md, "Speed"): linear in the
+// The load map of a cone run (common/load_map.hpp; docs/design/decisions.md): linear in the
 // tool's travel with slope effective_length(), except on the horizontal moves of a pie between
 // contours. The tool is in the air there, so each move is shortened to move_increments x
 // travel_per_increment of "load" and crossed in that many increments instead of one per

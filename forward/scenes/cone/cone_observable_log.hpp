@@ -1,5 +1,5 @@
 #pragma once
-// The shape, stage and element observables of a cone run (docs/cone-scene.md) and their files:
+// The shape, stage and element observables of a cone run (docs/design/cone.md) and their files:
 //  - after each completed contour: sections/section_s<stage>_c<contour>.csv (cone_sections.hpp)
 //    and sections/elongation_s<stage>_c<contour>.csv, and a row of sections.csv (wall-thickness
 //    plateau vs the sine law, thinnest node, largest radial elongation, centre depth);

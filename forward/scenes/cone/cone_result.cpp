@@ -37,7 +37,7 @@ nlohmann::json ConeResult::to_json() const {
   j["contour_wall_seconds"] = run.mark_wall_seconds;
   // A cone's marks are its contours: besides every FE run's every_marks and resumed_at_mark,
   // summary.json has them under these names too, since both are documented
-  // (docs/file-formats.md, "Cone scene"; docs/cone-scene.md, "Checkpoints and resume").
+  // (docs/reference/file-formats.md, "Cone scene"; docs/design/architecture.md, "Checkpoints and resume").
   j["checkpoints"]["every_contours"] = run.checkpoints.every_marks;
   if (run.resumed_at_mark >= 0) j["resumed_at_contour"] = run.resumed_at_mark;
   return j;

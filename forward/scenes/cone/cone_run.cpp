@@ -1,5 +1,5 @@
 // Running a cone scene on the FE-run skeleton: mesh, clamp, cyclic ties and virtual tools, the
-// contour path as the load, observers (docs/cone-scene.md).
+// contour path as the load, observers (docs/design/cone.md).
 #include "forward/scenes/cone/cone_run.hpp"
 
 #include "forward/model/cyclic_symmetry.hpp"
@@ -41,7 +41,7 @@ solver::DofConstraints cone_constraints(const ConeScene& s, model::ShellModel* m
     for (int k = 0; k < clamped; ++k) c.prescribe(model::ShellModel::dof(n, k));
   }
   // Five unknowns at every node away from the ties and the clamp: the drilling rotations
-  // leave the factorisation (docs/numerics-shell.md, "Nodal rotation frames").
+  // leave the factorisation (docs/design/numerics-shell.md, "Nodal rotation frames").
   model->use_nodal_rotation_frames(&c);
   c.finalize();
   return c;

@@ -1,4 +1,4 @@
-// Reading a cone scene file (schema: docs/file-formats.md "Cone scene", docs/cone-scene.md).
+// Reading a cone scene file (schema: docs/reference/file-formats.md "Cone scene", docs/design/cone.md).
 // The run is in cone_run.cpp.
 #include "forward/scenes/cone/cone_scene.hpp"
 
@@ -101,7 +101,7 @@ void read_cone_table(const TomlTable& root, ConeScene& s) {
 }
 
 // Defaults that follow the preset: the thickness, the clamp radius (top radius + 1.5 mm, an
-// assumption: docs/cone-scene.md) and the tool radius.
+// assumption: docs/design/cone.md) and the tool radius.
 void preset_defaults(ConeScene& s) {
   s.thickness = s.stages.front().thickness;  // the preset's (0 without a preset: required)
   double top = 0.0;

@@ -1,5 +1,5 @@
 #pragma once
-// The `cone` scene (thesis §4.1.2, §8, §9; docs/cone-scene.md): a circular sheet or a pie of
+// The `cone` scene (thesis §4.1.2, §8, §9; docs/design/cone.md): a circular sheet or a pie of
 // angle gamma clamped at the clamp radius, formed by the contour tool path of a cone
 // (forward/toolpath/cone_path.hpp: presets cone50, cone70, vwall). Pies carry the cyclic ties
 // of their edges (model/cyclic_symmetry.hpp) and the virtual tools (the tool's copies rotated
@@ -30,16 +30,16 @@ struct ConeScene {
   double pie_angle = 360.0;        // gamma [deg]; 360 / gamma an integer
   // Sheet: the mesh is a disc or pie of radius clamp_radius (its rim is the clamp).
   double thickness = 1.2;
-  double clamp_radius = 91.5;      // default: top radius + 1.5 mm (an assumption: docs/cone-scene.md)
+  double clamp_radius = 91.5;      // default: top radius + 1.5 mm (an assumption: docs/design/cone.md)
   bool clamp_rotations = false;    // thesis: translations only
   mesh::DiscOptions mesh;          // radius and angle follow clamp_radius and pie_angle
   int thickness_points = 5;
   // [sheet] material_axes: "fixed" (default; rolling direction = x everywhere, a rolled sheet) or
   // "polar" (rolling direction = the radial direction of each element: the same material in every
-  // pie, as the cyclic ties of a pie assume; docs/cone-scene.md, "Material axes").
+  // pie, as the cyclic ties of a pie assume; docs/design/cone.md, "Material axes").
   model::ShellModelOptions::MaterialAxes material_axes = model::ShellModelOptions::MaterialAxes::fixed;
   // Gauss (default) or "surface" (Simpson per half, with the surface points: integrates the
-  // fully plastic moment exactly; 5 Gauss points miss 5.5 % of it, docs/numerics-shell.md).
+  // fully plastic moment exactly; 5 Gauss points miss 5.5 % of it, docs/design/numerics-shell.md).
   element::ThicknessRuleKind thickness_rule = element::ThicknessRuleKind::gauss;
   // Tool.
   double tool_radius = 5.0;
@@ -56,21 +56,21 @@ struct ConeScene {
   bool extrapolate = true;
   // Energy line search on by default for cones: on cone70_pie45_short it cut the Newton
   // iterations 1692 -> 1236 and the cut-backs 45 -> 6, forces within 1.3 % on the loaded
-  // contours (docs/cone-scene.md).
+  // contours (docs/design/cone.md).
   bool line_search = true;
   double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
   // NewtonOptions::divergence_after. 10 saves 23 % on the fine cone70 (most increments cut back
   // by the 3-iteration rule converge in 8-13 iterations when let run, and each cut-back costs
   // about five smaller increments), but the vwall pie then failed in contour 149 at a tied-edge
-  // node: the solver's 3 by default, cone70_pie45_fine.toml sets 10 (docs/cone-scene.md, speed).
+  // node: the solver's 3 by default, cone70_pie45_fine.toml sets 10 (docs/design/decisions.md).
   int divergence_after = solver::NewtonOptions{}.divergence_after;
   // NewtonOptions::estimate_next_correction: about 10 % fewer iterations, off by default
-  // (docs/cone-scene.md, speed: the vwall run then failed in its last contour).
+  // (docs/design/decisions.md: the vwall run then failed in its last contour).
   bool estimate_next_correction = false;
   // NewtonOptions::stabilisation: damping factor of the viscous forces of an increment that
   // failed at the minimum increment (where the run would end); up to 100 x it if needed. Off by
   // default: on the vwall pie's contour 149 the damped state crept away under a standing tool
-  // and the run ended all the same (docs/cone-scene.md); 1e-4 is the factor tried there.
+  // and the run ended all the same (docs/design/cone.md); 1e-4 is the factor tried there.
   double stabilisation = 0.0;
   std::optional<solver::LinearSolverKind> linear_solver;
   FrictionTangent tangent = FrictionTangent::automatic;  // [solver] tangent (scene_tables.hpp)

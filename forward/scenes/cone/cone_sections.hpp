@@ -1,11 +1,11 @@
 #pragma once
-// Radial shape sections of a cone (thesis §8.2.1, §9.2; docs/cone-scene.md "Observables"): the nodes of
+// Radial shape sections of a cone (thesis §8.2.1, §9.2; docs/design/cone.md "Shape, stage and element observables"): the nodes of
 // the initial radial line at the pie middle (cone_observables.hpp, radial_line_nodes) in the
 // current state, with
 //  - the mid-surface point (r, theta, z) and the nodal thickness h;
 //  - the top (tool-side) and bottom surfaces, mid +- h/2 along the nodal director (the shell's
 //    director d of ShellModel::director, unit, rotated with the node; the contact surface is
-//    offset along the same director, docs/contact.md), and the depth of the top surface below
+//    offset along the same director, docs/design/contact.md), and the depth of the top surface below
 //    its initial height t0/2 (thickness vs depth, thesis Figs. 9.8, 9.9);
 //  - the wall angle of the mid-surface from the neighbouring section points;
 //  - the twist (thesis §9.4.5, Fig. 9.41): circumferential displacement u_theta of each node
@@ -78,7 +78,7 @@ struct SectionSummary {
 SectionSummary summarise_section(const std::vector<SectionPoint>& points, const std::vector<RadialEdge>& edges, double wall_angle_deg,
                                  double t0, double tolerance_deg = 5.0);
 
-// CSV bodies (header row + rows; docs/file-formats.md "Cone scene").
+// CSV bodies (header row + rows; docs/reference/file-formats.md "Cone scene").
 std::string section_csv(const std::vector<SectionPoint>& points);
 std::string elongation_csv(const std::vector<RadialEdge>& edges);
 

@@ -83,7 +83,7 @@ struct ElementHistoryRow {
 // ShellModel::material_axis) into e_r, e_theta.
 ElementHistoryRow element_history_row(const model::ShellModel& model, int e, const element::ThicknessRule& rule);
 
-// history.csv columns and one row (docs/file-formats.md "Cone scene").
+// history.csv columns and one row (docs/reference/file-formats.md "Cone scene").
 std::vector<std::string> element_history_columns(int layers);
 std::vector<double> element_history_values(double travel, double lambda, const ElementHistoryRow& row);
 

@@ -19,7 +19,7 @@ namespace spifit::scene {
 namespace {
 
 // Thesis defaults per kind (§7.1 for indent; §4.1.1, §7.2 and §7.3 for the line test; the
-// path A -> E is an assumption: docs/contact.md).
+// path A -> E is an assumption: docs/design/contact.md).
 void set_defaults(FormingScene& s) {
   if (s.kind == "indent") {
     // §7.1: 10 x 10 mm, t = 0.3, edges clamped, R = 5 at the centre, 2 mm after 1 s from first touch.
@@ -28,7 +28,7 @@ void set_defaults(FormingScene& s) {
     s.path = {{"A", {0.0, 0.0, 0.0}}, {"B", {0.0, 0.0, -2.0}}};
     s.travel_per_increment = 0.05;
     // No predictor: from K_p = 1e6 up it led Newton into states it could not leave even with
-    // 1e-5 of the step (docs/contact.md); this small model gains nothing from it anyway.
+    // 1e-5 of the step (docs/design/decisions.md); this small model gains nothing from it anyway.
     s.extrapolate = false;
   } else {
     // 182 x 182 mm, t = 1.2, 50 x 50 regular mesh (3.64 mm, §7.3), edges clamped, R = 5,

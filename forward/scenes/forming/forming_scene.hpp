@@ -3,7 +3,7 @@
 // §7.1, for the penalty study), `indent_line` (the line-test sheet of thesis §4.1.1 and §7.2
 // indented to 5 mm: point B, the indent test of the identification, §2.3.3) and `line`
 // (A -> B -> C -> D -> E). Every geometric input is in the scene file; the defaults are the
-// thesis's (schema: docs/file-formats.md). The run is forming_run.hpp.
+// thesis's (schema: docs/reference/file-formats.md). The run is forming_run.hpp.
 #include "forward/contact/shell_contact.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/mesh/mesh.hpp"
@@ -45,10 +45,10 @@ struct FormingScene {
   bool extrapolate = true;            // predictor from the previous increment (NewtonOptions)
   bool line_search = false;           // energy line search (NewtonOptions)
   // Relative (NewtonOptions). 1e-5 changed the indent_line peak force by 1e-12 relative and
-  // saved 13 % of the iterations against 1e-7 (docs/contact.md).
+  // saved 13 % of the iterations against 1e-7 (docs/design/decisions.md).
   double force_tolerance = 1e-5, displacement_tolerance = 1e-5;
   int divergence_after = solver::NewtonOptions{}.divergence_after;  // the solver's 3
-  bool estimate_next_correction = false;  // NewtonOptions; the measured trade: docs/contact.md, "Newton tolerances"
+  bool estimate_next_correction = false;  // NewtonOptions; the measured trade: docs/design/decisions.md, "Estimated next correction"
   double stabilisation = 0.0;             // NewtonOptions: damping of an increment failing at the minimum increment
   std::optional<solver::LinearSolverKind> linear_solver;
   FrictionTangent tangent = FrictionTangent::automatic;  // [solver] tangent (scene_tables.hpp)
@@ -58,7 +58,7 @@ struct FormingScene {
   // Checkpoints (DIR/checkpoint/state.bin, --resume): after every checkpoint_every named points
   // (G-code: corners) and every checkpoint_increments increments, but not at the end of the
   // path; 0: none of that kind. line_half writes 5.5 MB per checkpoint in about 20 ms
-  // (docs/contact.md, "Checkpoints and resume").
+  // (docs/design/architecture.md, "Checkpoints and resume").
   int checkpoint_every = 1;
   int checkpoint_increments = 50;
 };

@@ -2,7 +2,7 @@
 // Loading frame of the material-point scenes: l along the loading direction at angle alpha
 // from RD (x), w in the sheet plane (width), z the normal. Material axes stay fixed (no
 // spin): strains are integrals of the rate of deformation in these fixed axes, which equals
-// the logarithmic strain whenever the principal axes do not rotate (docs/material-point-scenes.md).
+// the logarithmic strain whenever the principal axes do not rotate (docs/design/numerics-material.md).
 #include <Eigen/Core>
 #include <cmath>
 

@@ -1,5 +1,5 @@
 #pragma once
-// Reading a scene TOML file (schema: docs/file-formats.md). Paths inside a scene are
+// Reading a scene TOML file (schema: docs/reference/file-formats.md). Paths inside a scene are
 // relative to the scene file.
 #include "forward/material/material_card.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"

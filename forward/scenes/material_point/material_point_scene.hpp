@@ -1,6 +1,6 @@
 #pragma once
 // Running a material-point scene file: the typed result (the curve, r-value, yield points) and,
-// with files, DIR/summary.json and DIR/curve.csv (columns and units: docs/file-formats.md).
+// with files, DIR/summary.json and DIR/curve.csv (columns and units: docs/reference/file-formats.md).
 #include "forward/scenes/common/run_files.hpp"
 #include "forward/scenes/common/scene_result.hpp"
 #include "forward/scenes/material_point/material_point_file.hpp"

@@ -111,7 +111,7 @@ TEST(ThicknessRule, FullyPlasticMomentIsUnderIntegrated) {
     for (std::size_t i = 0; i < r.zeta.size(); ++i) s += r.weight[i] * std::abs(r.zeta[i]);
     return s;
   };
-  // docs/numerics-shell.md, "Known limits": 5 points miss ~5 %.
+  // docs/design/numerics-shell.md, "Known limits": 5 points miss ~5 %.
   EXPECT_NEAR(plastic(5), 0.944850, 1e-6);
   EXPECT_NEAR(plastic(11), 0.987523, 1e-6);  // still 1.25 % short
 }

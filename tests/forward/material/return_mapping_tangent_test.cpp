@@ -1,4 +1,4 @@
-// Consistent tangent = central finite differences of the stress update (docs/numerics-material.md,
+// Consistent tangent = central finite differences of the stress update (docs/design/numerics-material.md,
 // "Consistent tangent": relative error < 1e-6 elastic, < 1e-5 plastic and reverse loading), for
 // every card, in 3D and in plane stress.
 #include "forward/material/return_mapping.hpp"
@@ -88,7 +88,7 @@ TEST(ReturnMappingTangent, ThreeDEveryCard) {
 }
 
 // A single 10 % strain increment from the virgin state converges and lands on the yield
-// surface (safeguarded Newton, docs/numerics-material.md, "The algorithm").
+// surface (safeguarded Newton, docs/design/numerics-material.md, "The algorithm").
 TEST(ReturnMapping, TenPercentIncrementConverges) {
   for (const auto& c : spifit::test::all_test_cards()) {
     if (!c.params.plastic) continue;

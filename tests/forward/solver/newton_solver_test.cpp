@@ -233,7 +233,7 @@ class SteppedSpring : public NonlinearProblem {
   std::vector<std::vector<int>> dofs_{{0}};
 };
 
-// A run can end on such a cycle (docs/numerics-shell.md, "Global solution", Convergence): at the
+// A run can end on such a cycle (docs/design/numerics-shell.md, "Global solution", Convergence): at the
 // minimum increment the force test alone must decide, else the run ends on an iterate that
 // meets the force tolerance.
 TEST(NewtonSolver, AtTheMinimumIncrementTheForceTestAloneDecides) {

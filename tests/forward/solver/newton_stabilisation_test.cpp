@@ -50,7 +50,7 @@ class SnapThrough : public NonlinearProblem {
 };
 
 // Where a run would end at the minimum increment, stabilised increments carry it over the
-// snap-through (docs/numerics-shell.md, "Stabilised increments"); the unstabilised increments after them end
+// snap-through (docs/design/numerics-shell.md, "Stabilised increments"); the unstabilised increments after them end
 // on the far branch's exact equilibrium, and a run resumed from a state inside the stabilised
 // window ends bitwise where the uninterrupted one does.
 TEST(NewtonSolver, StabilisedIncrementsCrossASnapThrough) {

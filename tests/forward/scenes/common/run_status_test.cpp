@@ -1,4 +1,4 @@
-// Run status of FE runs (docs/file-formats.md, "Run status"): the running summary.json names the
+// Run status of FE runs (docs/reference/file-formats.md, "Run status"): the running summary.json names the
 // process (pid, host), when it started and a heartbeat with the progress, rewritten as
 // increments complete; an interrupt (RunControl::interrupt, as the SIGINT/SIGTERM handler of
 // `spifit run` sets it) ends the run at the end of the increment with a checkpoint and status

@@ -1,4 +1,4 @@
-// Checkpoints and resume of the cone scene (docs/cone-scene.md, "Checkpoints and resume"): a
+// Checkpoints and resume of the cone scene (docs/design/architecture.md, "Checkpoints and resume"): a
 // two-contour cone stopped after its first contour, or killed in the middle of the second,
 // and resumed from DIR/checkpoint/state.bin, writes force.csv, contours.csv, sections/,
 // sections.csv, stages.csv, history.csv and VTU files identical byte for byte to those of the

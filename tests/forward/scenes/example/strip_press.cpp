@@ -138,7 +138,7 @@ scene::SceneKind strip_press_kind() {
   scene::SceneKind k;
   k.name = "strip_press";
   k.family = "example";
-  k.doc = "a strip clamped at both ends, pressed at mid-span (the worked example of docs/extending.md)";
+  k.doc = "a strip clamped at both ends, pressed at mid-span (the worked example of docs/design/architecture.md)";
   k.read = [](const std::string& file) -> std::unique_ptr<scene::Scene> { return std::make_unique<StripPressScene>(read(file)); };
   k.inputs = inputs().infos();
   const auto of = [](const scene::SceneResult& r) -> const StripPressResult& { return dynamic_cast<const StripPressResult&>(r); };

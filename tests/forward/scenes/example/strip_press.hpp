@@ -1,5 +1,5 @@
 #pragma once
-// The worked example of docs/extending.md, "A new scene kind": `strip_press`, a strip clamped
+// The worked example of docs/design/architecture.md, "A new scene kind": `strip_press`, a strip clamped
 // at both ends and pressed at mid-span by the spherical tool, with a new observable
 // (mid_deflection). Everything a kind needs is in this folder; the product registers a kind with
 // one line in forward/scenes/scene_registry.cpp, this test with register_scene_kind().

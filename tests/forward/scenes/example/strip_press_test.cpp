@@ -1,4 +1,4 @@
-// The worked example of docs/extending.md: a scene kind defined in a folder of its own
+// The worked example of docs/design/architecture.md: a scene kind defined in a folder of its own
 // (strip_press.hpp), registered, read from a scene file, run through the registry, and swept
 // over one of its named inputs with its new observable.
 #include "tests/forward/scenes/example/strip_press.hpp"

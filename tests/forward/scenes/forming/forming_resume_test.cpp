@@ -1,4 +1,4 @@
-// Checkpoints and resume of the forming scenes (docs/contact.md, "Checkpoints and resume"): an
+// Checkpoints and resume of the forming scenes (docs/design/architecture.md, "Checkpoints and resume"): an
 // indent_line or line run stopped after a checkpoint -- at a named path point or in the middle
 // of a segment -- and resumed writes the force history, energies, sections and VTU steps of the
 // uninterrupted run, byte for byte, with the same counts.

@@ -1,6 +1,6 @@
 // Long (ctest -L long): the §7.1 indent over the whole penalty range 1e1..1e7 N/mm^3 (the
 // thesis's code failed above 1e5). Every value converges; the force settles; from 1e5 upward
-// the penetration falls in proportion to 1/K_p (docs/contact.md has the table).
+// the penetration falls in proportion to 1/K_p (docs/results/validation.md, "Indent", has the table).
 #include "forward/scenes/forming/forming_run.hpp"
 
 #include <gtest/gtest.h>

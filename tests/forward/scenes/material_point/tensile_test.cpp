@@ -1,5 +1,5 @@
 // Tensile scene against the closed-form Hill 1948 + Swift solution (card C.3 + C.4) and the
-// closed-form von Mises mixed-hardening solutions (docs/material-point-scenes.md).
+// closed-form von Mises mixed-hardening solutions (docs/design/numerics-material.md).
 #include "forward/material/hill48.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
@@ -96,7 +96,7 @@ INSTANTIATE_TEST_SUITE_P(Cards, TensileVonMisesKinematic,
                          ::testing::Values("aa3003o_c6_ziegler_brick", "aa3003o_c8_ziegler_shell", "aa3003o_c5_af_brick",
                                            "aa3003o_c7_af_shell", "aa3003o_c3c4"));
 
-// The AF saturation limit itself (docs/material-point-scenes.md): offset -> 1.5 Xsat after large strain.
+// The AF saturation limit itself (docs/design/numerics-material.md): offset -> 1.5 Xsat after large strain.
 TEST(TensileVonMisesKinematic, ArmstrongFrederickSaturatesAtOnePointFiveXsat) {
   auto card = test::von_mises_copy(test::card("aa3003o_c7_af_shell"));
   const auto r = scene::run_material_point(card.params, test::tensile(0.0, {1.0}, 400));
