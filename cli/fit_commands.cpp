@@ -53,6 +53,27 @@ auto failed_on_error(scene::RunHeartbeat& heartbeat, RunWatch& watch, F f) {
 
 }  // namespace
 
+namespace {
+
+// The fitted card for production FE codes (approximations stated in each deck): DIR/exports/
+// with notes.json; a deck that cannot be written is a note, not a failed fit.
+void write_card_exports(const material::MaterialCard& card, const io::OutputDirectory& dir) {
+  nlohmann::json export_notes = nlohmann::json::object();
+  for (auto f : {reports::ExportFormat::abaqus, reports::ExportFormat::lsdyna, reports::ExportFormat::calculix}) {
+    std::vector<std::string> notes;
+    const std::string name = "exports/card_" + reports::to_string(f) + reports::default_extension(f);
+    try {
+      dir.write_file(name, reports::export_card(card, f, &notes));
+      export_notes[name] = notes;
+    } catch (const std::exception& e) {
+      export_notes[name] = std::vector<std::string>{std::string("export failed: ") + e.what()};
+    }
+  }
+  dir.write_file("exports/notes.json", export_notes.dump(2) + "\n");
+}
+
+}  // namespace
+
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string file, out, algorithm; bool force = false, resume = false; unsigned seed = 42; int multistart = 0; };
   auto o = std::make_shared<Opts>();
@@ -101,19 +122,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const auto result = failed_on_error(heartbeat, watch, [&] { return inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart}); });
     inverse::write_fit_outputs(problem, result, dir);
-    // The fitted card for production FE codes (approximations stated in each deck).
-    nlohmann::json export_notes = nlohmann::json::object();
-    for (auto f : {reports::ExportFormat::abaqus, reports::ExportFormat::lsdyna, reports::ExportFormat::calculix}) {
-      std::vector<std::string> notes;
-      const std::string name = "exports/card_" + reports::to_string(f) + reports::default_extension(f);
-      try {
-        dir.write_file(name, reports::export_card(result.card, f, &notes));
-        export_notes[name] = notes;
-      } catch (const std::exception& e) {
-        export_notes[name] = std::vector<std::string>{std::string("export failed: ") + e.what()};
-      }
-    }
-    dir.write_file("exports/notes.json", export_notes.dump(2) + "\n");
+    write_card_exports(result.card, dir);
     // Report for people: report.md, report.html, plots/*.svg (gnuplot; without it, no plots).
     const auto report = reports::render_fit_report(dir.path(), {});
     dir.record();  // report.md, report.html, plots/ in the manifest

@@ -201,6 +201,23 @@ bool NewtonSolver::first_iterate(const Attempt& at, const Eigen::VectorXd& dg, A
   return true;
 }
 
+bool NewtonSolver::ends_increment_likely(const ConvergenceTest& test, const IncrementReport& report, double correction) const {
+  const std::vector<double>& rels = report.residual_norms;
+  if (!options_.skip_final_tangent || rels.size() < 2) return false;
+  // The increment's norm after the correction is at least its norm before less the correction.
+  const double increment = std::max(problem_.increment_from_committed().norm() - correction, 0.0);
+  return test.likely_final(rels.back(), rels[rels.size() - 2], correction, increment);
+}
+
+bool NewtonSolver::tangent_after_all(double lambda1, ElementEvaluation* failure) {
+  // Predicted wrongly: the tangent at the same iterate (the same residual again).
+  ++counters_.tangent_reassemblies;
+  const Assembly again = assemble(lambda1, true, nullptr);
+  if (again.failure.ok) return true;
+  *failure = again.failure;
+  return false;
+}
+
 bool NewtonSolver::increment(const Attempt& at, IncrementReport* report, ElementEvaluation* failure) {
   problem_.revert();
   problem_.begin_increment(at.lambda0, at.lambda1);
@@ -230,11 +247,7 @@ bool NewtonSolver::increment(const Attempt& at, IncrementReport* report, Element
     const Eigen::VectorXd dfree = constraints_.expand(du);
     // An iterate likely to end the increment gets its residual alone (about 440 of 2 550 tangents
     // of line_half were assembled there and never used); the tangent follows if it does not.
-    const std::vector<double>& rels = report->residual_norms;
-    const double du_norm = du.norm();
-    const bool likely_final = options_.skip_final_tangent && !first && rels.size() >= 2 &&
-                              test.likely_final(rels.back(), rels[rels.size() - 2], du_norm,
-                                                std::max(problem_.increment_from_committed().norm() - du_norm, 0.0));
+    const bool likely_final = !first && ends_increment_likely(test, *report, du.norm());
     // Step length: halved where an element fails, optionally the energy line search. A
     // stabilised increment's trial residual includes the viscous forces.
     Assembly trial;
@@ -279,15 +292,7 @@ bool NewtonSolver::increment(const Attempt& at, IncrementReport* report, Element
       failure->where = describe_largest(dfree);
       break;
     }
-    if (likely_final) {
-      // Predicted wrongly: the tangent at the same iterate (the same residual again).
-      ++counters_.tangent_reassemblies;
-      const Assembly again = assemble(at.lambda1, true, nullptr);
-      if (!again.failure.ok) {
-        *failure = again.failure;
-        return false;
-      }
-    }
+    if (likely_final && !tangent_after_all(at.lambda1, failure)) return false;
   }
   return fail(test.failure_reason(Verdict::next_iteration, options_.max_iterations, report->residual_norms.back()), {});
 }

@@ -25,6 +25,8 @@
 
 namespace spifit::solver {
 
+class ConvergenceTest;
+
 class NewtonSolver {
  public:
   NewtonSolver(NonlinearProblem& problem, const DofConstraints& constraints, NewtonOptions options = {});
@@ -102,6 +104,12 @@ class NewtonSolver {
   };
   // Returns false (with the failure) when the attempt fails.
   bool increment(const Attempt& attempt, IncrementReport* report, ElementEvaluation* failure);
+  // Whether the iterate a correction of this norm leads to will likely end the increment
+  // (NewtonOptions::skip_final_tangent; ConvergenceTest::likely_final).
+  bool ends_increment_likely(const ConvergenceTest& test, const IncrementReport& report, double correction) const;
+  // The tangent of an iterate assembled without it that did not end its increment; false (with
+  // the failure) if an element fails.
+  bool tangent_after_all(double lambda1, ElementEvaluation* failure);
   // The first iterate (committed state, or the predictor's when closer to equilibrium) and its
   // assembly with the tangent; *at_committed false when the predictor's was kept.
   bool first_iterate(const Attempt& attempt, const Eigen::VectorXd& dg, Assembly* a, bool* at_committed, IncrementReport* report,
