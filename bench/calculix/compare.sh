@@ -30,7 +30,8 @@ Usage: bench/calculix/compare.sh [options]
   --depths LIST           depths of the table, comma-separated (default 0.5,1,2,3,4,5)
   --penalty K             contact penalty [N/mm^3], both codes (default 1000)
   --threads T             spifit --threads and OMP_NUM_THREADS of ccx (default 2)
-  --out DIR               run directory (default /tmp/spifit_ccx_compare); emptied first
+  --out DIR               run directory (default out/ccx_compare in the repository); emptied first
+                          when it is one this script wrote (it holds ccx/job.inp), else refused
   --spifit PATH           spifit executable (default \$SPIFIT or $root/build/cli/spifit)
   --ccx PATH              ccx executable (default \$CCX or ccx)
 EOF
@@ -49,7 +50,7 @@ depth=5
 depths=""
 penalty=1000
 threads=2
-out=/tmp/spifit_ccx_compare
+out="$root/out/ccx_compare"
 smoke=0
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -89,6 +90,10 @@ command -v python3 >/dev/null || { echo "compare.sh: needs python3" >&2; exit 1;
 command -v "$ccx" >/dev/null || { echo "compare.sh: no ccx ($ccx): apt-get install calculix-ccx" >&2; exit 1; }
 [ -x "$spifit" ] || { echo "compare.sh: no spifit executable at $spifit (build it, or --spifit PATH)" >&2; exit 1; }
 
+if [ -d "$out" ] && [ -n "$(ls -A "$out")" ] && [ ! -f "$out/ccx/job.inp" ]; then
+  echo "compare.sh: $out is not empty and not a directory of this script: give another --out" >&2
+  exit 2
+fi
 rm -rf "$out"
 mkdir -p "$out/ccx"
 
