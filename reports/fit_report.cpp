@@ -26,11 +26,8 @@ inverse::FitRecord load_record(const fs::path& dir) {
 // The plots, unless switched off; gnuplot missing or failing only costs plots (warnings).
 void render_plots(const fs::path& dir, const ReportOptions& options, FitReportContent& c, ReportSummary& summary) {
   if (!options.plots) return;
-  const fs::path gnuplot = find_executable(options.gnuplot);
-  if (gnuplot.empty()) {
-    summary.warnings.push_back("gnuplot (" + options.gnuplot + ") not found; the report has no plots (Debian: apt-get install gnuplot-nox)");
-    return;
-  }
+  const fs::path gnuplot = find_gnuplot(options.gnuplot, &summary.warnings);
+  if (gnuplot.empty()) return;
   PlotSession session(gnuplot, dir / "plots");
   std::string failure;
   try {

@@ -87,6 +87,12 @@ fs::path find_executable(const std::string& program) {
   return {};
 }
 
+std::filesystem::path find_gnuplot(const std::string& program, std::vector<std::string>* warnings) {
+  std::filesystem::path path = find_executable(program);
+  if (path.empty()) warnings->push_back("gnuplot (" + program + ") not found; the report has no plots (Debian: apt-get install gnuplot-nox)");
+  return path;
+}
+
 std::string gnuplot_quote(const std::string& text) {
   std::string out = "'";
   for (char c : text) {

@@ -14,6 +14,8 @@ namespace spifit::reports {
 // The program's full path: program itself when it contains '/', else the first executable
 // match on PATH; empty when not found.
 std::filesystem::path find_executable(const std::string& program);
+// gnuplot for a report: its path, or empty with the warning that the report has no plots.
+std::filesystem::path find_gnuplot(const std::string& program, std::vector<std::string>* warnings);
 
 // A gnuplot single-quoted string literal: ' doubled, control characters replaced by spaces.
 std::string gnuplot_quote(const std::string& text);

@@ -190,11 +190,8 @@ void read_tables(const fs::path& dir, RunContent& c, std::vector<std::string>* w
 
 void render_plots(const fs::path& dir, const ReportOptions& options, RunContent& c, RunReportSummary& out) {
   if (!options.plots) return;
-  const fs::path gnuplot = find_executable(options.gnuplot);
-  if (gnuplot.empty()) {
-    out.warnings.push_back("gnuplot (" + options.gnuplot + ") not found; the report has no plots (Debian: apt-get install gnuplot-nox)");
-    return;
-  }
+  const fs::path gnuplot = find_gnuplot(options.gnuplot, &out.warnings);
+  if (gnuplot.empty()) return;
   PlotSession session(gnuplot, dir / "plots");
   auto add = [&](const PlotSpec& spec, const std::string& caption) {
     if (spec.series.empty()) return;
