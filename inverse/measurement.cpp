@@ -24,16 +24,6 @@ std::vector<std::string> split(const std::string& line) {
   if (!line.empty() && line.back() == ',') out.push_back("");
   return out;
 }
-// The first byte of a line that is no text (a control character other than a tab, or a byte of
-// no valid UTF-8 character: a binary file), or npos.
-std::size_t first_non_text(const std::string& line) {
-  for (std::size_t i = 0; i < line.size();) {
-    const std::size_t n = line[i] == '\t' ? 1 : io::printable_length(line, i);
-    if (n == 0) return i;
-    i += n;
-  }
-  return std::string::npos;
-}
 }  // namespace
 
 const std::vector<double>& MeasurementTable::column(const std::string& name) const {
@@ -58,7 +48,7 @@ MeasurementTable read_measurement_csv(const std::string& path) {
     ++lineno;
     if (lineno == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line = line.substr(3);  // UTF-8 byte-order mark
     std::string s = trim(line);
-    if (const std::size_t bad = first_non_text(s); bad != std::string::npos) {
+    if (const std::size_t bad = io::first_non_text(s); bad != std::string::npos) {
       char byte[8];
       std::snprintf(byte, sizeof byte, "\\x%02X", static_cast<unsigned>(static_cast<unsigned char>(s[bad])));
       throw InputError(path, "line " + std::to_string(lineno), s,

@@ -36,8 +36,22 @@ std::size_t printable_length(const std::string& text, std::size_t i) {
   if (n == 0 || i + n > text.size()) return 0;
   for (std::size_t k = 1; k < n; ++k)
     if ((static_cast<unsigned char>(text[i + k]) & 0xC0) != 0x80) return 0;
-  if (b == 0xC2 && static_cast<unsigned char>(text[i + 1]) < 0xA0) return 0;  // U+0080..U+009F: C1 controls (U+009B is a terminal's CSI)
+  const auto b1 = static_cast<unsigned char>(text[i + 1]);
+  if (b == 0xC2 && b1 < 0xA0) return 0;  // U+0080..U+009F: C1 controls (U+009B is a terminal's CSI)
+  // RFC 3629: no overlong forms (E0 80..9F, F0 80..8F), no surrogates (ED A0..BF), nothing past
+  // U+10FFFF (F4 90..BF).
+  if ((b == 0xE0 && b1 < 0xA0) || (b == 0xED && b1 > 0x9F) || (b == 0xF0 && b1 < 0x90) || (b == 0xF4 && b1 > 0x8F)) return 0;
   return n;
+}
+
+std::size_t first_non_text(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    const std::size_t n = (c == '\t' || c == '\n' || c == '\r') ? 1 : printable_length(text, i);
+    if (n == 0) return i;
+    i += n;
+  }
+  return std::string::npos;
 }
 
 std::string one_line(const std::string& text, std::size_t max_chars) {

@@ -26,6 +26,9 @@ std::string one_line(const std::string& text, std::size_t max_chars = 200);
 // The length in bytes of the valid UTF-8 character at text[i] (1 for printable ASCII); 0 for a
 // control character or a byte that starts no valid UTF-8 character.
 std::size_t printable_length(const std::string& text, std::size_t i);
+// The first byte of text that is no text: a control character other than tab, CR and LF, or a
+// byte of no valid UTF-8 character (RFC 3629; a binary file); npos when there is none.
+std::size_t first_non_text(const std::string& text);
 // The text without leading and trailing blanks (spaces, tabs, CR, LF).
 std::string trim(const std::string& text);
 // Shortest round-trip text for a number, as written in an error message.

@@ -15,6 +15,9 @@ TEST(InputErrorText, QuotesControlBytesAndInvalidUtf8) {
   EXPECT_EQ(one_line("\x89PNG"), "\\x89PNG");
   EXPECT_EQ(one_line("\xE2\x82"), "\\xE2\\x82");  // a character cut short
   EXPECT_EQ(one_line("\xC2\x9B" "1m"), "\\xC2\\x9B1m");  // U+009B, a terminal's CSI
+  EXPECT_EQ(one_line("\xED\xA0\x80"), "\\xED\\xA0\\x80");  // a UTF-16 surrogate, no character
+  EXPECT_EQ(one_line("\xE0\x80\xAF"), "\\xE0\\x80\\xAF");  // an overlong '/'
+  EXPECT_EQ(one_line("\xF4\x90\x80\x80"), "\\xF4\\x90\\x80\\x80");  // past U+10FFFF
   EXPECT_EQ(one_line("§7.1, 45°, \xE2\x82\xAC"), "§7.1, 45°, €");
   EXPECT_EQ(one_line("two\nlines\t and  blanks "), "two lines and blanks");
 }
