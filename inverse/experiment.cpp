@@ -46,9 +46,16 @@ class CurveExperiment final : public MaterialPointExperiment<CurveExperiment> {
     condition(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
   }
   int num_residuals() const override { return static_cast<int>(s_.xs.size()); }
-  ExperimentCurve axes() const override { return {s_.x, s_.y, s_.x_unit, s_.y_unit, {}, {}, {}}; }
+  ExperimentCurve axes() const override {
+    ExperimentCurve c{s_.x, s_.y, s_.x_unit, s_.y_unit, {}, {}, {}, {}, {}};
+    c.x_words = scene::curve_column_words(s_.scene.setup.kind, s_.x);
+    c.y_words = scene::curve_column_words(s_.scene.setup.kind, s_.y);
+    return c;
+  }
   ExperimentCurve compare(const ParameterPoint& p) const override {
-    ExperimentCurve c{s_.x, s_.y, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
+    ExperimentCurve c = axes();
+    c.x = s_.xs;
+    c.measured = s_.ys;
     std::vector<double> sim(s_.xs.size());
     std::vector<double> r(s_.xs.size());
     if (eval(p.material, r.data(), &sim)) c.simulated = sim;
@@ -109,9 +116,9 @@ class ScalarExperiment final : public MaterialPointExperiment<ScalarExperiment> 
     noise_given_ = s_.noise > 0;
   }
   int num_residuals() const override { return 1; }
-  ExperimentCurve axes() const override { return {"", s_.observable, "", "", {}, {}, {}}; }
+  ExperimentCurve axes() const override { return {"", s_.observable, "", "", {}, {}, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
-    ExperimentCurve c{"", s_.observable, "", "", {0.0}, {s_.value}, {}};
+    ExperimentCurve c{"", s_.observable, "", "", {0.0}, {s_.value}, {}, {}, {}};
     double r = 0.0, sim = 0.0;
     if (eval(p.material, &r, &sim)) c.simulated = {sim};
     return c;
@@ -145,9 +152,9 @@ class ScalarTableExperiment final : public MaterialPointExperiment<ScalarTableEx
     condition(s_.ys, s_.noise, s_.noise_relative, s_.weight, s_.point_weights);
   }
   int num_residuals() const override { return static_cast<int>(s_.ys.size()); }
-  ExperimentCurve axes() const override { return {s_.x, s_.observable, s_.x_unit, s_.y_unit, {}, {}, {}}; }
+  ExperimentCurve axes() const override { return {s_.x, s_.observable, s_.x_unit, s_.y_unit, {}, {}, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
-    ExperimentCurve c{s_.x, s_.observable, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}};
+    ExperimentCurve c{s_.x, s_.observable, s_.x_unit, s_.y_unit, s_.xs, s_.ys, {}, {}, {}};
     std::vector<double> r(s_.ys.size()), sim(s_.ys.size());
     if (eval(p.material, r.data(), &sim)) c.simulated = sim;
     return c;

@@ -24,6 +24,7 @@ using Jet = ceres::Jet<double, kJetSize>;
 struct ExperimentCurve {
   std::string x_name, y_name, x_unit, y_unit;
   std::vector<double> x, measured, simulated;
+  std::string x_words, y_words;  // what the axes show, e.g. "shear strain γ"; "": the names
 };
 
 class Experiment {

@@ -91,9 +91,9 @@ class FeScalarExperiment final : public FeExperiment {
     scale_ = s_.noise > 0 ? s_.noise : (s_.value != 0.0 ? std::abs(s_.value) : 1.0);
   }
   int num_residuals() const override { return 1; }
-  ExperimentCurve axes() const override { return {"", s_.observable->name, "", s_.observable->unit, {}, {}, {}}; }
+  ExperimentCurve axes() const override { return {"", s_.observable->name, "", s_.observable->unit, {}, {}, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
-    ExperimentCurve c{"", s_.observable->name, "", s_.observable->unit, {0.0}, {s_.value}, {}};
+    ExperimentCurve c{"", s_.observable->name, "", s_.observable->unit, {0.0}, {s_.value}, {}, {}, {}};
     double r = 0.0, sim = 0.0;
     if (eval(p, &r, &sim)) c.simulated = {sim};
     return c;
@@ -128,9 +128,9 @@ class CurveFeExperiment : public FeExperiment {
     sqrt_w_ = k.sqrt_weights;
   }
   int num_residuals() const override { return static_cast<int>(c_.xs.size()); }
-  ExperimentCurve axes() const override { return {c_.x, c_.y, c_.x_unit, c_.y_unit, {}, {}, {}}; }
+  ExperimentCurve axes() const override { return {c_.x, c_.y, c_.x_unit, c_.y_unit, {}, {}, {}, {}, {}}; }
   ExperimentCurve compare(const ParameterPoint& p) const override {
-    ExperimentCurve c{c_.x, c_.y, c_.x_unit, c_.y_unit, c_.xs, c_.ys, {}};
+    ExperimentCurve c{c_.x, c_.y, c_.x_unit, c_.y_unit, c_.xs, c_.ys, {}, {}, {}};
     std::vector<double> r(c_.xs.size()), sim(c_.xs.size());
     if (eval(p, r.data(), &sim)) c.simulated = sim;
     return c;

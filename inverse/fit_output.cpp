@@ -97,6 +97,8 @@ std::vector<FitRecord::Experiment> record_experiments(const FitProblem& fp, cons
     x.y = axes.y_name;
     x.x_unit = axes.x_unit;
     x.y_unit = axes.y_unit;
+    x.x_words = axes.x_words;
+    x.y_words = axes.y_words;
     x.data_file = "experiments/" + c.name + ".csv";
     x.information_share = c.information_share;
     if (i < r.experiment_runs.size()) {

@@ -79,6 +79,8 @@ json experiment_json(const FitRecord::Experiment& e, const std::vector<FitRecord
           {"scale", number_or_null(e.scale)}, {"weight", number_or_null(e.weight)}, {"x", e.x}, {"y", e.y}, {"x_unit", e.x_unit},
           {"y_unit", e.y_unit}, {"data_file", e.data_file}};
   if (e.noise_given) ej["noise_given"] = *e.noise_given;
+  if (!e.x_words.empty()) ej["x_words"] = e.x_words;
+  if (!e.y_words.empty()) ej["y_words"] = e.y_words;
   if (!e.information_share.empty()) {
     json shares = json::object();
     for (std::size_t k = 0; k < e.information_share.size() && k < parameters.size(); ++k)
@@ -381,6 +383,8 @@ void read_experiments(const Reader& r, const json& j, FitRecord& rec) {
     e.y = r.text(ej, "y", at);
     e.x_unit = r.text(ej, "x_unit", at);
     e.y_unit = r.text(ej, "y_unit", at);
+    if (member(ej, "x_words")) e.x_words = r.text(ej, "x_words", at);
+    if (member(ej, "y_words")) e.y_words = r.text(ej, "y_words", at);
     e.data_file = r.text(ej, "data_file", at);
     e.points = static_cast<int>(r.whole(ej, "points", at).value_or(0));
     e.cost = r.number(ej, "cost", at);

@@ -79,6 +79,7 @@ struct FitRecord {
     std::optional<bool> noise_given;  // whether scale is a stated noise
     double weight = 1.0;
     std::string x, y, x_unit, y_unit;
+    std::string x_words, y_words;  // what the axes show ("shear strain γ"); "": from x and y
     std::string data_file;  // relative to DIR, e.g. experiments/NAME.csv
     // Forward runs (absent from a fit.json of an older spifit): evaluations of the residuals;
     // FE experiments: the scene runs they asked for first and those runs' summed wall seconds.

@@ -157,9 +157,8 @@ void add_experiments(Document& d, const FitReportContent& c) {
   for (std::size_t i = 0; i < c.record.experiments.size(); ++i) {
     const auto& x = c.record.experiments[i];
     const auto& v = c.verdict.experiments[i];
-    std::string obs = x.y.empty() ? "n/a" : x.y;
-    if (!x.y_unit.empty() && x.y_unit != "-") obs += " [" + x.y_unit + "]";
-    if (!is_scalar(x) && !x.x.empty()) obs += " vs " + axis_label(x.x, x.x_unit, "x");
+    std::string obs = x.y.empty() ? "n/a" : experiment_axis_label(x, false, "");
+    if (!is_scalar(x) && !x.x.empty()) obs += " vs " + experiment_axis_label(x, true, "x");
     const CellStyle vstyle = v.level == 2 ? CellStyle::bad : v.level == 1 ? CellStyle::warn : CellStyle::good;
     t.rows.push_back({cell(x.name), cell(x.kind), cell(std::to_string(x.points)), cell(obs), cell(conditioning_text(x, v.conditioning)),
                       cell(fmt(x.weight, 4)), cell(fmt(x.cost, 4)), cell(format_percent(v.share_cost), bad_if(v.level == 2)),

@@ -44,6 +44,8 @@ std::string experiment_axis_label(const FitRecord::Experiment& e, bool abscissa,
   for (const Words& w : kWords) {
     if (e.kind == w.kind && name == w.name) shown = w.words;
   }
+  const std::string& words = abscissa ? e.x_words : e.y_words;
+  if (!words.empty()) shown = words;
   return axis_label(shown, abscissa ? e.x_unit : e.y_unit, abscissa ? "x" : "y");
 }
 

@@ -174,6 +174,8 @@ TEST(FitFile, MeasurementUnitsAreConvertedOrRejected) {
   }
   EXPECT_EQ(b->axes().x_unit, "-");
   EXPECT_EQ(b->axes().y_unit, "MPa");
+  EXPECT_EQ(b->axes().x_words, "strain ε");  // a tensile scene; shear scenes show γ and τ
+  EXPECT_EQ(b->axes().y_words, "true stress σ");
   const std::string odd = write("odd.csv", "strain [furlong],stress [MPa]\n0.01,60\n0.02,70\n");
   expect_error(base_fit(kParam, curve(odd)), "column strain", "does not convert to a fraction");
   const std::string ksi = write("ksi.csv", "strain [-],stress [ksi]\n0.01,60\n0.02,70\n");

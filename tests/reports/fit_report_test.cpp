@@ -391,6 +391,8 @@ TEST(FitReportConflict, RealConflictOnHillN) {
   ASSERT_EQ(row.size(), 2u);
   EXPECT_NEAR(std::stod(row[1].substr(row[1].find_first_not_of('*'))), result.per_experiment.at(0).values.at(0), 1e-3);
   EXPECT_NE(html_table(html, "per-experiment").find("<td>shear_00</td>"), std::string::npos);
+  // Simple shear is labelled with its own quantities, not an axial strain and stress.
+  EXPECT_EQ(md_row(md, "shear_00").at(3), "shear stress τ [MPa] vs shear strain γ");
   std::string why;
   EXPECT_TRUE(html_well_formed(html, &why)) << why;
 }

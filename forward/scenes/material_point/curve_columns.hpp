@@ -38,6 +38,24 @@ inline const char* curve_column_unit(const std::string& name) {
   return "-";
 }
 
+// The words an axis shows for a column of curve.csv: simple shear (shear, bauschinger) is
+// driven by the engineering shear strain gamma_lw and answers with the shear stress tau = sig_lw;
+// the other kinds by an axial strain and its true stress. "" for a name that is no column.
+inline std::string curve_column_words(MaterialPointKind kind, const std::string& name) {
+  const bool shear = kind == MaterialPointKind::shear || kind == MaterialPointKind::bauschinger;
+  if (name == "increment") return "increment";
+  if (name == "strain") return shear ? "shear strain γ" : "strain ε";
+  if (name == "cumulative_strain") return shear ? "cumulative shear strain Σ|Δγ|" : "cumulative strain Σ|Δε|";
+  if (name == "stress") return shear ? "shear stress τ" : "true stress σ";
+  if (name == "stress_kirchhoff") return shear ? "Kirchhoff shear stress τ" : "Kirchhoff stress";
+  if (name == "eps_ww") return "width strain ε_ww";
+  if (name == "gamma_lw") return "shear strain γ_lw";
+  if (name == "eps_zz") return "thickness strain ε_zz";
+  if (name == "sig_xx" || name == "sig_yy" || name == "sig_xy") return "σ_" + name.substr(4) + " (material axes)";
+  if (name == "eqps") return "equivalent plastic strain";
+  return "";
+}
+
 inline const char* curve_abscissa_names() { return "increment, strain, cumulative_strain"; }
 inline const char* curve_response_names() {
   return "stress, stress_kirchhoff, eps_ww, gamma_lw, eps_zz, sig_xx, sig_yy, sig_xy, eqps";
