@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 #include <numbers>
+#include <vector>
 
 namespace spifit::mesh {
 
@@ -32,6 +33,17 @@ MeshQuality mesh_quality(const Mesh& m, double thickness) {
     q.total_area += m.signed_area(e);
   }
   return q;
+}
+
+double median_edge_length(const Mesh& m) {
+  std::vector<double> edges;
+  edges.reserve(4 * static_cast<std::size_t>(m.num_elements()));
+  for (int e = 0; e < m.num_elements(); ++e)
+    for (int c = 0; c < 4; ++c) edges.push_back((m.nodes[m.quads[e][(c + 1) % 4]] - m.nodes[m.quads[e][c]]).norm());
+  if (edges.empty()) return 0.0;
+  const auto mid = edges.begin() + static_cast<std::ptrdiff_t>(edges.size() / 2);
+  std::nth_element(edges.begin(), mid, edges.end());
+  return *mid;
 }
 
 std::string describe_mesh_quality(const MeshQuality& q) {

@@ -18,6 +18,9 @@ struct MeshQuality {
 };
 
 MeshQuality mesh_quality(const Mesh& m, double thickness);
+// The median length of the elements' edges [mm] (0 for an empty mesh): the element size of a
+// mostly uniform mesh, e.g. the period of the force ripple as the tool crosses elements.
+double median_edge_length(const Mesh& m);
 std::string describe_mesh_quality(const MeshQuality& q);
 
 }  // namespace spifit::mesh

@@ -4,7 +4,8 @@ namespace spifit::scene {
 
 nlohmann::json vector_json(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 
-void add_fe_run_summary(nlohmann::json& j, const FeRunOutcome& run, const ToolForceHistory& force, const model::ModelEnergies& en,
+void add_fe_run_summary(nlohmann::json& j, const FeRunOutcome& run, const ToolForceHistory& force, const ForceRipple& ripple,
+                        const model::ModelEnergies& en,
                         const std::string& energies_units) {
   const solver::NewtonCounters& c = run.counters;
   j["increments"] = c.increments;
@@ -25,6 +26,12 @@ void add_fe_run_summary(nlohmann::json& j, const FeRunOutcome& run, const ToolFo
   j["final_force"] = vector_json(force.final_force());
   j["max_penetration"] = force.max_penetration();
   j["max_surface_penetration"] = force.max_surface_penetration();
+  // Steady windows looked at: 0 when the increments are too coarse to resolve a ripple.
+  j["force_ripple"] = {{"amplitude_over_peak_force", ripple.amplitude},
+                       {"component", std::string(1, "xyz"[ripple.component])},
+                       {"travel", ripple.travel},
+                       {"window", ripple.window},
+                       {"windows", ripple.windows}};
   j["energies"] = {{"external_work", en.external_work},
                    {"elastic", en.elastic},
                    {"plastic", en.plastic},

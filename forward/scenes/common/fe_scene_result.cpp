@@ -5,7 +5,7 @@
 namespace spifit::scene {
 
 void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, const contact::ContactOptions& contact,
-                         double thickness) {
+                         double thickness, double element_size) {
   run = std::move(outcome);
   status = run.status;
   message = run.message;
@@ -13,9 +13,10 @@ void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const 
   force = force_log.history();
   energies = energy_log.table();
   final_energies = energy_log.last();
+  ripple = force_ripple(force.samples(), element_size);
   for (const std::string& w :
        {contact::ShellContact::resolution_warning(force.max_penetration(), force.max_surface_penetration(), contact.points),
-        contact::ShellContact::penetration_warning(force.max_penetration(), thickness, contact.penalty)})
+        contact::ShellContact::penetration_warning(force.max_penetration(), thickness, contact.penalty), ripple_warning(ripple)})
     if (!w.empty()) warnings.push_back(w);
 }
 

@@ -8,6 +8,7 @@
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/fe_run.hpp"
 #include "forward/scenes/common/force_log.hpp"
+#include "forward/scenes/common/force_ripple.hpp"
 #include "forward/scenes/common/scene_result.hpp"
 #include "forward/scenes/common/tool_force_history.hpp"
 
@@ -19,12 +20,14 @@ class FeSceneResult : public SceneResult {
   ToolForceHistory force;
   io::Series energies;
   model::ModelEnergies final_energies;
+  ForceRipple ripple;  // over one element length (element_size of take)
 
-  // After the run: its outcome (status, message, wall time), the force and energy logs, and
-  // warnings when the tool sank deeper into the tool-side surface than its contact points felt
-  // or deeper into the sheet than the penalty should let it (ShellContact's warnings).
+  // After the run: its outcome (status, message, wall time), the force and energy logs, the
+  // force ripple, and warnings when the tool sank deeper into the tool-side surface than its
+  // contact points felt or deeper into the sheet than the penalty should let it (ShellContact's
+  // warnings), or when the force ripples (ripple_warning).
   void take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, const contact::ContactOptions& contact,
-            double thickness);
+            double thickness, double element_size);
 };
 
 }  // namespace spifit::scene

@@ -15,7 +15,7 @@ Eigen::Vector3d ConeResult::final_polar_force() const {
 nlohmann::json ConeResult::to_json() const {
   nlohmann::json j = inputs;
   add_status(j);
-  add_fe_run_summary(j, run, force, final_energies, "N mm (= mJ), the modelled pie only");
+  add_fe_run_summary(j, run, force, ripple, final_energies, "N mm (= mJ), the modelled pie only");
   j["contours_total"] = contours_total;
   j["contours_completed"] = run.marks_reached;
   j["peak_polar_force"] = vector_json(peak_polar);

@@ -2,6 +2,7 @@
 // contour path as the load, observers (docs/design/cone.md).
 #include "forward/scenes/cone/cone_run.hpp"
 
+#include "forward/mesh/mesh_quality.hpp"
 #include "forward/model/cyclic_symmetry.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
@@ -173,7 +174,7 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   r.name = scene.name;
   r.elements = run.model().num_elements();
   r.contours_total = static_cast<int>(track.contours().size());
-  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness);
+  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.model().mesh()));
   for (const ForceSample& s : polar_samples(r.force))
     for (int i = 0; i < 3; ++i)
       if (std::abs(s.polar(i)) > std::abs(r.peak_polar(i))) r.peak_polar(i) = s.polar(i);

@@ -10,7 +10,7 @@ namespace spifit::scene {
 nlohmann::json FormingResult::to_json() const {
   nlohmann::json j = inputs;
   add_status(j);
-  add_fe_run_summary(j, run, force, final_energies, "N mm (= mJ), the modelled sheet only (a half model: half the sheet)");
+  add_fe_run_summary(j, run, force, ripple, final_energies, "N mm (= mJ), the modelled sheet only (a half model: half the sheet)");
   j["sections"] = nlohmann::json::array();
   for (const auto& s : sections) j["sections"].push_back({{"point", s.point}, {"file", "sections/section_" + s.point + ".csv"}});
   j["units"] = {{"force", "N, by the sheet on the tool"}, {"length", "mm"}, {"time", "s (travel / feed)"}};

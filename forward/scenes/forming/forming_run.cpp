@@ -1,5 +1,6 @@
 #include "forward/scenes/forming/forming_run.hpp"
 
+#include "forward/mesh/mesh_quality.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
@@ -136,7 +137,7 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   r.half = scene.half;
   r.warnings = run.model().warnings();
   if (const std::string w = path_edge_warning(run.setup().tool_path, scene); !w.empty()) r.warnings.push_back(w);
-  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness);
+  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.model().mesh()));
   r.sections = sections.sections();
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;

@@ -68,7 +68,7 @@ class StripPressResult final : public scene::SceneResult {
   nlohmann::json to_json() const override {
     nlohmann::json j{{"scene", name}, {"kind", "strip_press"}, {"mid_deflection", mid_deflection}};
     add_status(j);
-    scene::add_fe_run_summary(j, run, force, {}, "N mm");
+    scene::add_fe_run_summary(j, run, force, {}, {}, "N mm");
     return j;
   }
   std::string brief_report() const override {
