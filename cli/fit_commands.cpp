@@ -18,6 +18,7 @@
 #include "reports/card_export.hpp"
 #include "reports/fit_report.hpp"
 #include "reports/run_report.hpp"
+#include "reports/sweep_directory.hpp"
 #include "reports/sweep_report.hpp"
 
 #include <atomic>
@@ -249,8 +250,8 @@ namespace spifit::cli {
 void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string dir; bool no_plots = false; };
   auto o = std::make_shared<Opts>();
-  auto* cmd = app.add_subcommand("report", "Re-render report.md, report.html and plots of a fit output directory or of an FE run's (also a partial one)");
-  cmd->add_option("DIR", o->dir, "output directory of spifit fit or of spifit run (indent, indent_line, line, cone)")->required();
+  auto* cmd = app.add_subcommand("report", "Re-render report.md, report.html and plots of a fit's, a sweep's or an FE run's output directory (also a partial run)");
+  cmd->add_option("DIR", o->dir, "output directory of spifit fit, spifit sweep or spifit run (indent, indent_line, line, cone)")->required();
   cmd->add_flag("--no-plots", o->no_plots, "skip the gnuplot plots");
   cmd->callback([o, &g, &exit_code] {
     reports::ReportOptions ro;
@@ -258,6 +259,14 @@ void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     // Opened before rendering: what is there and not in its manifest stays out of it.
     std::optional<io::OutputDirectory> dir;
     if (std::filesystem::is_directory(o->dir)) dir = io::OutputDirectory::existing(o->dir);
+    if (!std::filesystem::exists(std::filesystem::path(o->dir) / "fit.json") && reports::is_sweep_directory(o->dir)) {
+      const auto r = reports::rerender_sweep_report(o->dir, ro.plots);
+      if (dir) dir->record();
+      for (const auto& w : r.warnings) std::cerr << "spifit: warning: " << w << "\n";
+      if (!g.quiet) std::cout << "wrote " << r.markdown.string() << " and " << r.html.string() << "\n";
+      exit_code = 0;
+      return;
+    }
     if (!std::filesystem::exists(std::filesystem::path(o->dir) / "fit.json") && reports::is_fe_run_directory(o->dir)) {
       const auto r = reports::render_run_report(o->dir, ro);
       if (dir) dir->record();
@@ -341,15 +350,20 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     if (spec.sensitivities) dir.write_file("sensitivities.csv", inverse::sensitivities_csv(r));
     std::vector<std::string> messages;
     for (const auto& p : r.points) messages.push_back(p.message);
-    for (const auto& w : reports::render_sweep_report(dir.path(), spec.name, sweep_table(spec, r), messages).warnings)
+    const reports::SweepTable table = sweep_table(spec, r);
+    for (const auto& w : reports::render_sweep_report(dir.path(), spec.name, table, messages).warnings)
       std::cerr << "spifit: warning: " << w << "\n";
     dir.record();  // report.md, report.html, plots/ in the manifest
     int failed = 0;
     for (const auto& p : r.points) failed += p.ok ? 0 : 1;
     watch.stop();  // the final summary is this one
     heartbeat.stop();
+    // The table's description and the failures' messages: what `spifit report DIR` reads back.
     dir.write_file("summary.json", nlohmann::json{{"status", "ok"}, {"kind", "sweep"}, {"sweep", spec.name}, {"points", r.points.size()},
-                                                  {"failed_points", failed}, {"wall_seconds", r.wall_seconds}}
+                                                  {"failed_points", failed}, {"wall_seconds", r.wall_seconds},
+                                                  {"inputs", table.inputs}, {"input_units", table.input_units},
+                                                  {"metrics", table.metrics}, {"metric_units", table.metric_units},
+                                                  {"messages", messages}}
                                        .dump(2) + "\n");
     if (!g.quiet) {
       std::printf("sweep %s: %zu points (%d failed) in %.3f s -> %s/sweep.csv\n", spec.name.c_str(), r.points.size(), failed, r.wall_seconds,

@@ -202,5 +202,21 @@ TEST(ConeSweepCli, FailingPointIsReportedNotFatal) {
   EXPECT_EQ(rows[1][4], passed["newton_iterations"].get<double>());
   EXPECT_EQ(rows[1][5], 1.0);
   EXPECT_EQ(rows[1][7], 1.0);
+
+  // `spifit report DIR` renders the same report from sweep.csv and summary.json, the failed
+  // point's message and NaN metrics included; a sweep summary without its table is named.
+  const std::string md = spifit::test::slurp(out / "report.md"), html = spifit::test::slurp(out / "report.html");
+  EXPECT_NE(md.find(message.substr(0, 40)), std::string::npos) << md;
+  fs::remove(out / "report.md");
+  const auto again = spifit::test::run_spifit("report --no-plots " + out.string());
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_EQ(spifit::test::slurp(out / "report.md"), md);
+  EXPECT_EQ(spifit::test::slurp(out / "report.html"), html);
+  auto old_summary = summary;
+  old_summary.erase("metrics");
+  std::ofstream(out / "summary.json") << old_summary.dump(2);
+  const auto bad = spifit::test::run_spifit("report " + out.string());
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("summary.json: metrics: missing"), std::string::npos) << bad.err;
   fs::remove_all(dir);
 }

@@ -1,12 +1,14 @@
 // The documentation's promises that a test can keep: every short command of README.md's
-// "A five-minute tour" runs with exit code 0 (commands marked "# long" are skipped; outputs go
-// to a temporary directory instead of out/), and every relative Markdown link of README.md and
-// docs/ points to a file that exists.
+// "A five-minute tour" and of every ```sh block of docs/guide/ runs with exit code 0 (commands
+// whose comment says "long" are skipped; outputs go to a temporary directory instead of out/,
+// one per page, the commands of a page in order), and every relative Markdown link of README.md
+// and docs/ points to a file that exists.
 #include "tests/cli/cli_support.hpp"
 #include "forward/io/text_file.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -30,9 +32,58 @@ std::vector<std::string> tour_commands(const std::string& readme) {
   return lines;
 }
 
+// The lines of every ```sh block of a page.
+std::vector<std::string> sh_block_lines(const std::string& page) {
+  std::vector<std::string> lines;
+  for (auto open = page.find("```sh\n"); open != std::string::npos; open = page.find("```sh\n", open + 6)) {
+    const auto close = page.find("\n```", open + 6);
+    std::istringstream in(page.substr(open + 6, close - open - 6));
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    open = close;
+  }
+  return lines;
+}
+
 std::string replace_all(std::string s, const std::string& from, const std::string& to) {
   for (auto p = s.find(from); p != std::string::npos; p = s.find(from, p + to.size())) s.replace(p, from.size(), to);
   return s;
+}
+
+struct Ran {
+  int run = 0, skipped = 0;
+};
+
+// Runs the spifit commands among lines ("build/cli/spifit ARGS" or "spifit ARGS", a comment
+// after " #") from the repository root, out/ replaced by the directory out; where names the page.
+Ran run_commands(const std::vector<std::string>& lines, const fs::path& out, const std::string& where) {
+  Ran n;
+  const fs::path source(SPIFIT_SOURCE_DIR);
+  fs::remove_all(out);
+  fs::create_directories(out);
+  const fs::path cwd = fs::current_path();
+  fs::current_path(source);  // the pages' relative paths are from the repository root
+  for (const auto& line : lines) {
+    std::string args;
+    for (const std::string exe : {"build/cli/spifit ", "spifit "})
+      if (args.empty() && line.rfind(exe, 0) == 0) args = line.substr(exe.size());
+    if (args.empty()) continue;  // output lines ("# ..."), scripts and blank lines
+    const auto hash = args.find(" #");
+    if (hash != std::string::npos && args.find("long", hash) != std::string::npos) {
+      ++n.skipped;
+      continue;
+    }
+    args = args.substr(0, hash);
+    std::string target = " ";  // (built by appends: GCC 12 warns falsely on " " + string&&)
+    target += out.string();
+    target += '/';
+    args = replace_all(args, " out/", target);
+    const auto r = spifit::test::run_spifit("-q " + args);
+    EXPECT_EQ(r.code, 0) << where << ": spifit " << args << "\n" << r.err;
+    ++n.run;
+  }
+  fs::current_path(cwd);
+  fs::remove_all(out);
+  return n;
 }
 
 }  // namespace
@@ -40,34 +91,26 @@ std::string replace_all(std::string s, const std::string& from, const std::strin
 TEST(ReadmeTour, EveryShortCommandExitsWithZero) {
   const fs::path source(SPIFIT_SOURCE_DIR);
   const auto lines = tour_commands(spifit::io::read_text_file((source / "README.md").string()));
-  const fs::path out = spifit::test::temp_path("readme_tour");
-  fs::remove_all(out);
-  fs::create_directories(out);
-  const std::string exe = "build/cli/spifit ";
-  const fs::path cwd = fs::current_path();
-  fs::current_path(source);  // the tour's relative paths are from the repository root
+  const Ran n = run_commands(lines, spifit::test::temp_path("readme_tour"), "README tour");
+  EXPECT_GE(n.run, 8) << "the tour's commands were not found in README.md";
+  EXPECT_GE(n.skipped, 1) << "the tour marks its long commands with \"# long\"";
+}
+
+TEST(GuideCommands, EveryShortCommandExitsWithZero) {
+  const fs::path source(SPIFIT_SOURCE_DIR);
+  std::vector<fs::path> pages;
+  for (const auto& e : fs::directory_iterator(source / "docs" / "guide"))
+    if (e.path().extension() == ".md") pages.push_back(e.path());
+  std::sort(pages.begin(), pages.end());
   int run = 0, skipped = 0;
-  for (const auto& line : lines) {
-    if (line.rfind(exe, 0) != 0) continue;  // output lines (#   -> ...) and blank lines
-    const auto hash = line.find(" #");
-    const std::string comment = hash == std::string::npos ? "" : line.substr(hash);
-    if (comment.find("long") != std::string::npos) {
-      ++skipped;
-      continue;
-    }
-    std::string args = line.substr(exe.size(), hash == std::string::npos ? std::string::npos : hash - exe.size());
-    std::string target = " ";  // (built by appends: GCC 12 warns falsely on " " + string&&)
-    target += out.string();
-    target += '/';
-    args = replace_all(args, " out/", target);
-    const auto r = spifit::test::run_spifit("-q " + args);
-    EXPECT_EQ(r.code, 0) << "README tour: spifit " << args << "\n" << r.err;
-    ++run;
+  for (const auto& page : pages) {
+    const auto lines = sh_block_lines(spifit::io::read_text_file(page.string()));
+    const Ran n = run_commands(lines, spifit::test::temp_path("guide_" + page.stem().string()), "docs/guide/" + page.filename().string());
+    run += n.run;
+    skipped += n.skipped;
   }
-  fs::current_path(cwd);
-  EXPECT_GE(run, 8) << "the tour's commands were not found in README.md";
-  EXPECT_GE(skipped, 1) << "the tour marks its long commands with \"# long\"";
-  fs::remove_all(out);
+  EXPECT_GE(run, 12) << "the guide's commands were not found";
+  EXPECT_GE(skipped, 5);
 }
 
 TEST(DocsLinks, EveryRelativeLinkPointsToAFile) {
