@@ -1,6 +1,7 @@
 // `spifit fit` and `spifit synth`: thin wrappers over inverse/.
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
+#include "cli/mpi_session.hpp"
 #include "cli/run_signals.hpp"
 
 #include "forward/material/material_inputs.hpp"
@@ -12,6 +13,7 @@
 #include "inverse/run_fit.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/evaluation_cache.hpp"
+#include "inverse/fe_evaluation_job.hpp"
 #include "inverse/fit_output.hpp"
 #include "inverse/sweep.hpp"
 #include "inverse/synthetic.hpp"
@@ -92,6 +94,11 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file);
+    if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out
+      if (problem.scene_runs) mpi::serve(inverse::fe_evaluation_handler(problem));
+      exit_code = 0;
+      return;
+    }
     const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, problem.input_files, g.quiet);
     if (problem.scene_runs) {
       // The FE evaluations, kept as they finish (DIR/runs/evaluations.jsonl) for --resume.
@@ -100,6 +107,10 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       if (o->resume && !g.quiet) std::cout << "resuming: " << cache->loaded() << " FE evaluations read back\n";
       problem.scene_runs->keep_evaluations(std::move(cache));
       dir.record();  // runs/ in the manifest
+      if (auto pool = mpi::pool()) {
+        problem.scene_runs->use_pool(pool);
+        if (!g.quiet) std::cout << "MPI: FE evaluations on " << pool->workers() << " worker rank(s)\n";
+      }
     } else if (o->resume) {
       throw io::InputError(o->file, "experiment", "", "--resume continues fits with FE experiments (the others take seconds)");
     }
@@ -120,7 +131,8 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       return j;
     });
     heartbeat.write();  // once the signals are handled
-    const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    if (problem.scene_runs && problem.scene_runs->pool()) threads = std::max(threads, problem.scene_runs->pool()->workers());
     const auto result = failed_on_error(heartbeat, watch, [&] { return inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart}); });
     inverse::write_fit_outputs(problem, result, dir);
     write_card_exports(result.card, dir);
@@ -322,6 +334,11 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
   cmd->callback([o, &g, &exit_code] {
     const auto spec = inverse::read_sweep_file(o->file);
+    if (mpi::is_worker()) {  // another rank of an MPI job: the points rank 0 hands out
+      if (!spec.kind->parallel_sweeps) mpi::serve(inverse::sweep_point_handler(spec, o->out));
+      exit_code = 0;
+      return;
+    }
     const auto dir = prepare_output(o->out, o->force, inverse::sweep_input_files(spec), g.quiet);
     // The running summary with pid, host and a heartbeat; SIGINT/SIGTERM end the sweep at once
     // with status "interrupted" (the points that finished are in DIR/points/).
@@ -340,6 +357,8 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     inverse::SweepRunOptions ro;
     ro.threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     ro.out = &dir;
+    const auto pool = spec.kind->parallel_sweeps ? nullptr : mpi::pool();  // material points: milliseconds, here
+    ro.pool = pool.get();
     const bool quiet = g.quiet;
     ro.progress = [done, quiet](const scene::ProgressEvent& e) {
       ++*done;  // one event per forward run (serial sweeps)

@@ -2,11 +2,13 @@
 // Exit codes: 0 ok, 1 failure (numerical), 2 usage or input error (one line on stderr); a run
 // ended by SIGINT or SIGTERM: 128 + the signal (130, 143; docs/reference/file-formats.md, "Run status").
 #include "cli/commands.hpp"
+#include "cli/mpi_session.hpp"
 #include "forward/io/input_error.hpp"
 #include "cli/run_signals.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 
 #include <iostream>
+#include <memory>
 #include <omp.h>
 
 namespace {
@@ -42,11 +44,41 @@ const CLI::Validator kThreads(
     },
     "0.." + std::to_string(kMaxThreads));
 
+// The subcommand named on the command line ("" if none): the first word that is no option nor
+// the value of --threads.
+std::string subcommand_of(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--threads") {
+      ++i;
+      continue;
+    }
+    if (!a.empty() && a[0] != '-') return a;
+  }
+  return "";
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   spifit::runtime::ensure_passive_omp_wait(argv);
   spifit::cli::start_signal_thread();  // before any other thread (OpenMP, Ceres) exists
+  std::unique_ptr<spifit::cli::mpi::Session> mpi;
+  try {
+    mpi = std::make_unique<spifit::cli::mpi::Session>(&argc, &argv);
+  } catch (const std::exception& e) {
+    std::cerr << "spifit: " << e.what() << "\n";
+    return 2;
+  }
+  if (spifit::cli::mpi::size() > 1) {
+    const std::string command = subcommand_of(argc, argv);
+    if (command != "fit" && command != "sweep") {
+      if (!spifit::cli::mpi::is_worker())
+        std::cerr << "spifit: " << (command.empty() ? std::string("this command") : "spifit " + command)
+                  << " runs in one process: under mpirun only fit and sweep spread their runs over the ranks\n";
+      return 2;
+    }
+  }
   CLI::App app{"spifit " SPIFIT_VERSION " - material parameter identification for Single Point Incremental Forming"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("spifit ") + SPIFIT_VERSION);

@@ -41,6 +41,12 @@ class Experiment {
   // With Jets (material parameters only); an experiment without supports_jets() returns false.
   virtual bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const = 0;
   virtual bool supports_jets() const { return true; }
+  // How many evaluations of this experiment may usefully run at once beyond this process's
+  // threads: the workers of the FE runs' pool (0: none).
+  virtual int parallel_evaluations() const { return 0; }
+  // FE experiments: the scene file whose runs it reads ("" for material points); experiments on
+  // one scene file share each run.
+  virtual std::string scene_file() const { return ""; }
   // Measured vs simulated at p (for reports); empty simulated values if the run failed.
   virtual ExperimentCurve compare(const ParameterPoint& p) const = 0;
   // Names and units of the compared quantities, without running anything.

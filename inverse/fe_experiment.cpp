@@ -2,6 +2,7 @@
 
 #include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/forming/forming_result.hpp"
+#include "inverse/fe_evaluation_job.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -57,6 +58,8 @@ class FeExperiment : public Experiment {
   }
   bool residuals(const material::MaterialParams<Jet>&, Jet*) const override { return false; }
   bool supports_jets() const override { return false; }
+  int parallel_evaluations() const override { return runs_->pool() ? runs_->pool()->workers() : 0; }
+  std::string scene_file() const override { return scene_->file(); }
   // The residuals at p: kept from an earlier (killed) fit when the runs keep evaluations, else
   // computed (and kept).
   bool residuals(const ParameterPoint& p, double* r) const final {
@@ -69,13 +72,39 @@ class FeExperiment : public Experiment {
         return e->ok;
       }
     }
-    const bool ok = compute(p, r);
+    const bool ok = runs_->pool() ? compute_elsewhere(p, r) : compute(p, r);
     if (cache) cache->add(name_, key, {ok, ok ? std::vector<double>(r, r + num_residuals()) : std::vector<double>{}});
     return ok;
   }
 
  protected:
   virtual bool compute(const ParameterPoint& p, double* r) const = 0;
+  // On a worker of the runs' pool: the same numbers compute() gives, computed there, with those
+  // of the other experiments on this scene file (one job per scene file and point).
+  bool compute_elsewhere(const ParameterPoint& p, double* r) const {
+    FeEvaluationAnswer a;
+    try {
+      a = decode_fe_answer(runs_->shared_answer(scene_->file() + " " + point_key(p), [&] {
+        std::string bytes = runs_->pool()->run(fe_evaluation_job(name_, p));
+        const FeEvaluationAnswer first = decode_fe_answer(bytes);
+        runs_->add_remote(first.runs, first.failures);  // once per answer
+        return bytes;
+      }));
+    } catch (const std::exception& e) {
+      a.error = std::string("no answer: ") + e.what();
+    }
+    const FeEvaluationAnswer::Residuals* mine = nullptr;
+    for (const auto& e : a.experiments)
+      if (e.experiment == name_) mine = &e;
+    if (!a.error.empty() || !mine) {  // a failed evaluation, named among the fit's failures
+      const std::string why = a.error.empty() ? "the answer has no residuals of " + name_ : a.error;
+      runs_->add_remote({}, {{scene_->file(), describe_point(p, runs_->base()), "a worker could not evaluate " + name_ + ": " + why, false}});
+      return false;
+    }
+    if (!mine->ok || static_cast<int>(mine->values.size()) != num_residuals()) return false;
+    std::copy(mine->values.begin(), mine->values.end(), r);
+    return true;
+  }
   std::shared_ptr<const scene::SceneResult> run_at(const ParameterPoint& p) const {
     auto r = runs_->result(*scene_, p, name_);
     return r && r->ok() ? r : nullptr;

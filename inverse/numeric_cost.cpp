@@ -32,7 +32,9 @@ bool NumericDiffExperimentCost::Evaluate(double const* const* xs, double* residu
   }
   std::vector<std::vector<double>> rp(p, std::vector<double>(m)), rm(p, std::vector<double>(m));
   std::vector<char> okp(p, 1), okm(p, 1);
-#pragma omp parallel for schedule(dynamic)
+  // With a pool of worker processes, as many runs at once as it has workers.
+  const int width = std::max(omp_get_max_threads(), e_->parallel_evaluations());
+#pragma omp parallel for schedule(dynamic) num_threads(width)
   for (int job = 0; job < 2 * p; ++job) {
     const int k = job / 2;
     const bool plus = job % 2 == 0;

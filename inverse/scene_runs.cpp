@@ -137,6 +137,42 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
   return fail(failure.message);
 }
 
+void SceneRuns::add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures) const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  runs_ += static_cast<long>(runs.size());
+  log_.insert(log_.end(), runs.begin(), runs.end());
+  failures_.insert(failures_.end(), failures.begin(), failures.end());
+}
+
+std::string SceneRuns::shared_answer(const std::string& key, const std::function<std::string()>& ask) const {
+  std::promise<std::string> promise;
+  std::shared_future<std::string> entry;
+  bool mine = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (auto it = answers_.find(key); it != answers_.end()) {
+      entry = it->second;
+    } else {
+      entry = promise.get_future().share();
+      answers_.emplace(key, entry);
+      answer_order_.push_back(key);
+      while (answer_order_.size() > kCachedRuns) {
+        answers_.erase(answer_order_.front());
+        answer_order_.pop_front();
+      }
+      mine = true;
+    }
+  }
+  if (mine) {
+    try {
+      promise.set_value(ask());
+    } catch (...) {
+      promise.set_exception(std::current_exception());
+    }
+  }
+  return entry.get();
+}
+
 long SceneRuns::runs() const {
   std::lock_guard<std::mutex> lock(mutex_);
   return runs_;

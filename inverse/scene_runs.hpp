@@ -7,9 +7,11 @@
 // experiments report a failed evaluation, which the optimisers survive.
 #include "forward/scenes/common/scene.hpp"
 #include "inverse/evaluation_cache.hpp"
+#include "inverse/job_pool.hpp"
 #include "inverse/parameter_point.hpp"
 
 #include <deque>
+#include <functional>
 #include <future>
 #include <map>
 #include <memory>
@@ -52,6 +54,17 @@ class SceneRuns {
   void keep_evaluations(std::shared_ptr<EvaluationCache> cache) { evaluations_ = std::move(cache); }
   EvaluationCache* evaluations() const { return evaluations_.get(); }
 
+  // Other processes that evaluate the FE experiments (null: this one does, fe_evaluation_job.hpp):
+  // their runs and failures come back with each answer and are added here (add_remote).
+  void use_pool(std::shared_ptr<JobPool> pool) { pool_ = std::move(pool); }
+  JobPool* pool() const { return pool_.get(); }
+  void add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures) const;
+  // The pool's answer for key (a scene file and a point): ask() runs once per key, however many
+  // experiments on that scene want it and however many threads ask at once, as result() runs a
+  // scene once.
+  std::string shared_answer(const std::string& key, const std::function<std::string()>& ask) const;
+  const material::MaterialParams<double>& base() const { return base_; }
+
   long runs() const;                   // forward runs made (retries included)
   std::vector<Failure> failures() const;  // in the order they happened
   std::vector<Run> run_log() const;       // every run made, in the order they ended
@@ -62,10 +75,13 @@ class SceneRuns {
   material::MaterialParams<double> base_;
   double time_limit_ = 0.0;
   std::shared_ptr<EvaluationCache> evaluations_;
+  std::shared_ptr<JobPool> pool_;
   mutable std::mutex mutex_;
   mutable std::map<std::string, Entry> cache_;
   mutable std::deque<std::string> order_;  // keys, oldest first (the cache keeps the newest)
   mutable std::vector<Failure> failures_;
+  mutable std::map<std::string, std::shared_future<std::string>> answers_;
+  mutable std::deque<std::string> answer_order_;
   mutable std::vector<Run> log_;
   mutable long runs_ = 0;
 };

@@ -3,6 +3,7 @@
 
 #include "forward/io/csv_writer.hpp"
 #include "forward/scenes/common/run_files.hpp"
+#include "inverse/job_message.hpp"
 
 #include <omp.h>
 
@@ -10,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace spifit::inverse {
@@ -39,8 +42,10 @@ std::vector<const scene::Observable*> observables_of(const SweepSpec& s) {
 }
 
 // One run of the scene with the inputs at `values`; its outputs in DIR/sub/ when dir is given.
+// record: list DIR's new entries in its manifest (not on a worker process of an MPI job: the
+// sweep's own process lists them at the end).
 SweepPoint run_point(const SweepSpec& s, const std::vector<const scene::Observable*>& observables, const std::vector<double>& values,
-                     const io::OutputDirectory* dir, const std::string& sub) {
+                     const io::OutputDirectory* dir, const std::string& sub, bool record = true) {
   const auto t0 = std::chrono::steady_clock::now();
   SweepPoint p;
   p.inputs = values;
@@ -53,7 +58,7 @@ SweepPoint run_point(const SweepSpec& s, const std::vector<const scene::Observab
     std::unique_ptr<scene::SceneResult> r;
     if (dir) {
       const auto out = io::OutputDirectory::prepare((dir->path() / sub).string(), false);
-      dir->record();  // points/ in the sweep directory's manifest
+      if (record) dir->record();  // points/ in the sweep directory's manifest
       r = sc->run(scene::RunFiles(out), {});
     } else {
       r = sc->run(scene::RunFiles(), {});
@@ -96,55 +101,120 @@ std::string point_dir(std::size_t i, std::size_t n) {
   return buf;
 }
 
-std::vector<SweepPoint> run_grid(const SweepSpec& s, const std::vector<const scene::Observable*>& obs, const SweepRunOptions& o) {
-  const auto grid = sweep_grid(s);
-  std::vector<SweepPoint> points(grid.size());
-  if (s.kind->parallel_sweeps) {
-    const int n = static_cast<int>(grid.size());
+std::string point_job(const std::vector<double>& values, const std::string& sub) {
+  MessageWriter w;
+  w.numbers(values).text(sub);
+  return w.bytes();
+}
+
+std::string point_answer(const SweepPoint& p) {
+  MessageWriter w;
+  w.numbers(p.inputs).numbers(p.metrics).integer(p.ok ? 1 : 0).text(p.message).number(p.wall_seconds);
+  return w.bytes();
+}
+
+SweepPoint read_point_answer(const std::string& bytes) {
+  MessageReader r(bytes);
+  SweepPoint p;
+  p.inputs = r.numbers();
+  p.metrics = r.numbers();
+  p.ok = r.integer() != 0;
+  p.message = r.text();
+  p.wall_seconds = r.number();
+  return p;
+}
+
+// A run of the sweep: values and, for FE scenes, the subdirectory of its outputs.
+struct PointRun {
+  std::string label;  // for the progress line
+  std::vector<double> values;
+  std::string sub;
+};
+
+// The runs, here one after another or on the workers of o.pool side by side; the points in the
+// order of runs whatever the order they finish in.
+std::vector<SweepPoint> run_points(const SweepSpec& s, const std::vector<const scene::Observable*>& obs, const SweepRunOptions& o,
+                                   const std::vector<PointRun>& runs) {
+  std::vector<SweepPoint> points(runs.size());
+  const io::OutputDirectory* dir = s.kind->parallel_sweeps ? nullptr : o.out;
+  if (s.kind->parallel_sweeps) {  // milliseconds each: side by side here, no progress lines
+    const int n = static_cast<int>(runs.size());
 #pragma omp parallel for schedule(dynamic) num_threads(std::max(1, o.threads))
-    for (int i = 0; i < n; ++i) points[static_cast<std::size_t>(i)] = run_point(s, obs, grid[static_cast<std::size_t>(i)], nullptr, {});
+    for (int i = 0; i < n; ++i) points[static_cast<std::size_t>(i)] = run_point(s, obs, runs[static_cast<std::size_t>(i)].values, nullptr, {});
     return points;
   }
-  for (std::size_t i = 0; i < grid.size(); ++i) {
-    points[i] = run_point(s, obs, grid[i], o.out, point_dir(i, grid.size()));
-    report(o, "point " + std::to_string(i + 1) + "/" + std::to_string(grid.size()), s, points[i]);
+  if (!o.pool) {
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      points[i] = run_point(s, obs, runs[i].values, dir, runs[i].sub);
+      report(o, runs[i].label, s, points[i]);
+    }
+    return points;
   }
+  const int n = static_cast<int>(runs.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(std::max(1, o.pool->workers()))
+  for (int i = 0; i < n; ++i) {
+    const auto& run = runs[static_cast<std::size_t>(i)];
+    SweepPoint p;
+    try {
+      p = read_point_answer(o.pool->run(point_job(run.values, run.sub)));
+    } catch (const std::exception& e) {
+      p.inputs = run.values;
+      p.metrics.assign(s.metrics.size(), kNaN);
+      p.message = std::string("no answer from the worker: ") + e.what();
+    }
+    points[static_cast<std::size_t>(i)] = p;
+#pragma omp critical(spifit_sweep_progress)
+    report(o, run.label, s, p);
+  }
+  if (dir) dir->record();  // points/ and sensitivities/, written by the workers
   return points;
+}
+
+std::vector<SweepPoint> run_grid(const SweepSpec& s, const std::vector<const scene::Observable*>& obs, const SweepRunOptions& o) {
+  const auto grid = sweep_grid(s);
+  std::vector<PointRun> runs;
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    runs.push_back({"point " + std::to_string(i + 1) + "/" + std::to_string(grid.size()), grid[i], point_dir(i, grid.size())});
+  return run_points(s, obs, o, runs);
 }
 
 // Central differences of ln(metric) in ln(input) at the scene's own values (base, base (1 +- h)).
 std::vector<Sensitivity> run_sensitivities(const SweepSpec& s, const std::vector<const scene::Observable*>& obs,
                                            const SweepRunOptions& o) {
-  const io::OutputDirectory* dir = s.kind->parallel_sweeps ? nullptr : o.out;
   std::vector<double> base;
   bool any = false;
   for (const auto& in : s.inputs) {
     base.push_back(s.scene->input(in.name));
     any = any || (!in.integer && base.back() != 0.0);
   }
-  std::vector<Sensitivity> r;
+  // Integer inputs have no relative step; a zero base has no logarithm: NaN, no runs.
+  auto skip = [&](std::size_t k) { return s.inputs[k].integer || base[k] == 0.0; };
+  std::vector<PointRun> runs;
+  const bool with_base = any || s.kind->parallel_sweeps;  // the base metric is reported even with no step to take
+  if (with_base) runs.push_back({"sensitivity base", base, "sensitivities/base"});
+  for (std::size_t k = 0; k < s.inputs.size(); ++k) {
+    if (skip(k)) continue;
+    auto up = base, dn = base;
+    up[k] *= 1.0 + s.relative_step;
+    dn[k] *= 1.0 - s.relative_step;
+    runs.push_back({"sensitivity " + s.inputs[k].name + " up", up, "sensitivities/" + s.inputs[k].name + "_up"});
+    runs.push_back({"sensitivity " + s.inputs[k].name + " down", dn, "sensitivities/" + s.inputs[k].name + "_down"});
+  }
+  const std::vector<SweepPoint> done = run_points(s, obs, o, runs);
+  std::size_t next = 0;
   SweepPoint b;
   b.metrics.assign(s.metrics.size(), kNaN);
-  if (any || s.kind->parallel_sweeps) {  // the base metric is reported even with no step to take
-    b = run_point(s, obs, base, dir, "sensitivities/base");
-    report(o, "sensitivity base", s, b);
-  }
+  if (with_base) b = done[next++];
+  std::vector<Sensitivity> r;
   for (std::size_t k = 0; k < s.inputs.size(); ++k) {
-    // Integer inputs have no relative step; a zero base has no logarithm: NaN, no runs.
-    const bool skip = s.inputs[k].integer || base[k] == 0.0;
     SweepPoint pu, pd;
-    if (!skip) {
-      auto up = base, dn = base;
-      up[k] *= 1.0 + s.relative_step;
-      dn[k] *= 1.0 - s.relative_step;
-      pu = run_point(s, obs, up, dir, "sensitivities/" + s.inputs[k].name + "_up");
-      report(o, "sensitivity " + s.inputs[k].name + " up", s, pu);
-      pd = run_point(s, obs, dn, dir, "sensitivities/" + s.inputs[k].name + "_down");
-      report(o, "sensitivity " + s.inputs[k].name + " down", s, pd);
+    if (!skip(k)) {
+      pu = done[next++];
+      pd = done[next++];
     }
     for (std::size_t m = 0; m < s.metrics.size(); ++m) {
       Sensitivity sv{s.inputs[k].name, s.metrics[m], base[k], b.metrics[m], kNaN};
-      if (!skip) sv.value = log_sensitivity(base[k], pu.metrics[m], pd.metrics[m], s.relative_step);
+      if (!skip(k)) sv.value = log_sensitivity(base[k], pu.metrics[m], pd.metrics[m], s.relative_step);
       r.push_back(sv);
     }
   }
@@ -182,6 +252,25 @@ SweepResult run_sweep(const SweepSpec& s, const SweepRunOptions& o) {
   if (s.sensitivities) r.sensitivities = run_sensitivities(s, obs, o);
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
+}
+
+JobHandler sweep_point_handler(const SweepSpec& s, const std::string& out) {
+  auto dir = std::make_shared<std::optional<io::OutputDirectory>>();
+  return [&s, out, dir](const std::string& job) {
+    SweepPoint p;
+    try {
+      MessageReader r(job);
+      const std::vector<double> values = r.numbers();
+      const std::string sub = r.text();
+      if (!*dir && !out.empty()) *dir = io::OutputDirectory::existing(out);
+      p = run_point(s, observables_of(s), values, dir->has_value() ? &**dir : nullptr, sub, false);
+    } catch (const std::exception& e) {
+      p.ok = false;
+      p.message = e.what();
+      p.metrics.assign(s.metrics.size(), kNaN);
+    }
+    return point_answer(p);
+  };
 }
 
 std::string sweep_csv(const SweepSpec& s, const SweepResult& r) {

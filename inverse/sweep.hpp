@@ -10,6 +10,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/common/progress.hpp"
 #include "forward/scenes/common/scene.hpp"
+#include "inverse/job_pool.hpp"
 
 #include <memory>
 #include <string>
@@ -63,8 +64,14 @@ struct SweepRunOptions {
   int threads = 1;                           // material points side by side (FE runs: OpenMP's default inside)
   const io::OutputDirectory* out = nullptr;  // FE scenes: DIR/points/NNN/ (none: runs in memory)
   scene::ProgressSink progress;              // one line per point
+  // FE scenes: other processes that run the points side by side (an MPI job; null: this one,
+  // one point after another). The points come back in grid order.
+  JobPool* pool = nullptr;
 };
 SweepResult run_sweep(const SweepSpec& spec, const SweepRunOptions& options);
+// The worker's side of a pool: runs a point into DIR/points/NNN of the sweep's output directory
+// out (prepared by the sweep's own process; "": in memory), not touching its manifest.
+JobHandler sweep_point_handler(const SweepSpec& spec, const std::string& out);
 
 // The grid in run order: Cartesian product of the inputs' values, last input fastest.
 std::vector<std::vector<double>> sweep_grid(const SweepSpec& spec);

@@ -7,7 +7,7 @@ set -euo pipefail
 packages=(
   build-essential cmake
   libeigen3-dev libceres-dev libnlopt-cxx-dev libsuitesparse-dev libopenblas0-openmp libomp-dev
-  libcli11-dev libtoml11-dev nlohmann-json3-dev
+  libcli11-dev libtoml11-dev nlohmann-json3-dev libopenmpi-dev openmpi-bin
   libgtest-dev libgmock-dev libbenchmark-dev
   gnuplot-nox calculix-ccx
 )

@@ -1,0 +1,38 @@
+#pragma once
+// A fit's FE evaluation as a job for another process (job_pool.hpp): an experiment's name and
+// the parameter point (the card's parameters and the scene inputs, exact bits). The answer holds
+// the residuals of every experiment on that experiment's scene file at the point (they share the
+// run, as in one process) and the forward runs (and failures) made, which the fit's own
+// SceneRuns adds to its log.
+#include "inverse/parameter_point.hpp"
+#include "inverse/scene_runs.hpp"
+
+#include <string>
+#include <vector>
+
+namespace spifit::inverse {
+
+struct FitProblem;
+
+struct FeEvaluationAnswer {
+  struct Residuals {
+    std::string experiment;
+    bool ok = false;
+    std::vector<double> values;
+  };
+  std::vector<Residuals> experiments;  // in the fit file's order
+  std::vector<SceneRuns::Run> runs;
+  std::vector<SceneRuns::Failure> failures;
+  std::string error;  // the job could not be evaluated at all (an unknown experiment: a bug)
+};
+
+std::string fe_evaluation_job(const std::string& experiment, const ParameterPoint& p);
+std::string encode_answer(const FeEvaluationAnswer& a);
+FeEvaluationAnswer decode_fe_answer(const std::string& bytes);
+
+// The worker's side: evaluates the experiments of `problem` (read from the same fit file as rank
+// 0's) on the job's experiment's scene file at its point, on this process's own SceneRuns (no
+// cache, no pool).
+JobHandler fe_evaluation_handler(const FitProblem& problem);
+
+}  // namespace spifit::inverse
