@@ -20,6 +20,7 @@ void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_inputs_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 // `spifit status DIR` (status_command.cpp).
 void add_status_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
+void add_job_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_scan_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, const std::string& command_line);
 

@@ -1,6 +1,7 @@
 // `spifit fit` and `spifit synth`: thin wrappers over inverse/.
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
+#include "cli/job_process.hpp"
 #include "cli/mpi_session.hpp"
 #include "cli/run_signals.hpp"
 
@@ -77,6 +78,20 @@ void write_card_exports(const material::MaterialCard& card, const io::OutputDire
 
 }  // namespace
 
+namespace {
+
+// The command line of a worker rank's job process: quiet, the rank's --threads.
+std::vector<std::string> job_args(const GlobalOptions& g, std::vector<std::string> command) {
+  std::vector<std::string> args{"-q"};
+  if (g.threads > 0) args.insert(args.end(), {"--threads", std::to_string(g.threads)});
+  args.insert(args.end(), command.begin(), command.end());
+  return args;
+}
+
+void note_on_stderr(const std::string& why) { std::cerr << "spifit: rank " << mpi::rank() << ": " << why << "\n"; }
+
+}  // namespace
+
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   struct Opts { std::string file, out, algorithm; bool force = false, resume = false; unsigned seed = 42; int multistart = 0; };
   auto o = std::make_shared<Opts>();
@@ -94,8 +109,14 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file);
-    if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out
-      if (problem.scene_runs) mpi::serve(inverse::fe_evaluation_handler(problem));
+    if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out, each in a process of its own
+      if (problem.scene_runs) {
+        // A job may hold a run and its retry with half the increment: 2.5 run limits and a minute.
+        const double limit = problem.settings.run_time_limit;
+        mpi::serve(jobs_in_child_processes(job_args(g, {"job", "--fit", o->file}), limit > 0 ? 2.5 * limit + 60.0 : 0.0,
+                                           [](const std::string&, const std::string& why) { return inverse::failed_fe_answer(why); },
+                                           note_on_stderr));
+      }
       exit_code = 0;
       return;
     }
@@ -335,8 +356,11 @@ void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
   cmd->callback([o, &g, &exit_code] {
     const auto spec = inverse::read_sweep_file(o->file);
-    if (mpi::is_worker()) {  // another rank of an MPI job: the points rank 0 hands out
-      if (!spec.kind->parallel_sweeps) mpi::serve(inverse::sweep_point_handler(spec, o->out));
+    if (mpi::is_worker()) {  // another rank of an MPI job: the points rank 0 hands out, each in a process of its own
+      if (!spec.kind->parallel_sweeps)
+        mpi::serve(jobs_in_child_processes(
+            job_args(g, {"job", "--sweep", o->file, "--out", o->out}), 0.0,
+            [&spec](const std::string& job, const std::string& why) { return inverse::failed_point_answer(spec, job, why); }, note_on_stderr));
       exit_code = 0;
       return;
     }

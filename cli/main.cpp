@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
   spifit::cli::start_signal_thread();  // before any other thread (OpenMP, Ceres) exists
   std::unique_ptr<spifit::cli::mpi::Session> mpi;
   try {
-    mpi = std::make_unique<spifit::cli::mpi::Session>(&argc, &argv);
+    // A job's process (started by a worker rank, with the rank's environment) is no rank.
+    if (subcommand_of(argc, argv) != "job") mpi = std::make_unique<spifit::cli::mpi::Session>(&argc, &argv);
   } catch (const std::exception& e) {
     std::cerr << "spifit: " << e.what() << "\n";
     return 2;
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
   spifit::cli::add_sweep_command(app, g, exit_code);
   spifit::cli::add_report_command(app, g, exit_code);
   spifit::cli::add_status_command(app, g, exit_code);
+  spifit::cli::add_job_command(app, g, exit_code);
   spifit::cli::add_scan_command(app, g, exit_code);
   spifit::cli::add_inputs_command(app, g, exit_code);
   std::string command_line = "spifit";

@@ -84,6 +84,12 @@ FeEvaluationAnswer decode_fe_answer(const std::string& bytes) {
   return a;
 }
 
+std::string failed_fe_answer(const std::string& why) {
+  FeEvaluationAnswer a;
+  a.error = why;
+  return encode_answer(a);
+}
+
 JobHandler fe_evaluation_handler(const FitProblem& problem) {
   return [&problem](const std::string& job) {
     FeEvaluationAnswer a;

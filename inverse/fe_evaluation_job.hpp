@@ -29,6 +29,9 @@ struct FeEvaluationAnswer {
 std::string fe_evaluation_job(const std::string& experiment, const ParameterPoint& p);
 std::string encode_answer(const FeEvaluationAnswer& a);
 FeEvaluationAnswer decode_fe_answer(const std::string& bytes);
+// The answer of a job that could not be evaluated (why: e.g. its process died twice): a failed
+// evaluation, listed among the fit's failures.
+std::string failed_fe_answer(const std::string& why);
 
 // The worker's side: evaluates the experiments of `problem` (read from the same fit file as rank
 // 0's) on the job's experiment's scene file at its point, on this process's own SceneRuns (no

@@ -273,6 +273,19 @@ JobHandler sweep_point_handler(const SweepSpec& s, const std::string& out) {
   };
 }
 
+std::string failed_point_answer(const SweepSpec& s, const std::string& job, const std::string& why) {
+  SweepPoint p;
+  try {
+    MessageReader r(job);
+    p.inputs = r.numbers();
+  } catch (const std::exception&) {
+  }
+  p.ok = false;
+  p.message = why;
+  p.metrics.assign(s.metrics.size(), kNaN);
+  return point_answer(p);
+}
+
 std::string sweep_csv(const SweepSpec& s, const SweepResult& r) {
   std::vector<std::string> cols;
   for (const auto& in : s.inputs) cols.push_back(in.name);

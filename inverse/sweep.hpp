@@ -72,6 +72,9 @@ SweepResult run_sweep(const SweepSpec& spec, const SweepRunOptions& options);
 // The worker's side of a pool: runs a point into DIR/points/NNN of the sweep's output directory
 // out (prepared by the sweep's own process; "": in memory), not touching its manifest.
 JobHandler sweep_point_handler(const SweepSpec& spec, const std::string& out);
+// The answer of a point job that could not be run (why: e.g. its process died twice): a failed
+// point with the job's inputs.
+std::string failed_point_answer(const SweepSpec& spec, const std::string& job, const std::string& why);
 
 // The grid in run order: Cartesian product of the inputs' values, last input fastest.
 std::vector<std::vector<double>> sweep_grid(const SweepSpec& spec);

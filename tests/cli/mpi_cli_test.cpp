@@ -147,6 +147,54 @@ TEST_F(MpiFit, AKilledFitResumesToTheSameCard) {
   EXPECT_EQ(spifit::test::slurp(out / "card.toml"), spifit::test::slurp(dir_ / "serial" / "card.toml"));
 }
 
+// The pid of a `spifit job --fit FIT` process (a worker rank's forward run), or 0.
+pid_t job_process_of(const fs::path& fit) {
+  const std::string needle = std::string("job") + '\0' + "--fit" + '\0' + fit.string();
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    const std::string cmdline = spifit::test::slurp(e.path() / "cmdline");
+    if (cmdline.find(needle) != std::string::npos) return static_cast<pid_t>(std::stol(name));
+  }
+  return 0;
+}
+
+// A forward run's process killed (SIGKILL) while a worker waits for it: the worker runs the job
+// once more, says so on stderr, and the fit ends as the serial one (docs/guide/parallel-runs.md).
+TEST_F(MpiFit, AKilledRunProcessDoesNotEndTheFit) {
+  const fs::path out = dir_ / "run_killed", err = dir_ / "run_killed.err";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string cmd = std::string(kEnv) + "exec " + SPIFIT_MPIEXEC + kLaunch + SPIFIT_EXE + " -q fit " + fit_.string() + " --out " +
+                            out.string() + " >/dev/null 2>" + err.string();
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  pid_t victim = 0;
+  int status = 0;
+  bool finished = false;
+  while (!victim && std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) {
+      finished = true;
+      break;
+    }
+    if (fs::exists(out / "runs" / "evaluations.jsonl") && spifit::test::slurp(out / "runs" / "evaluations.jsonl").size() > 200)
+      victim = job_process_of(fit_);
+    if (!victim) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_FALSE(finished) << "the fit ended before a run could be killed";
+  ASSERT_GT(victim, 0);
+  ::kill(victim, SIGKILL);
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "mpiexec ended by a signal";
+  EXPECT_EQ(WEXITSTATUS(status), 0) << spifit::test::slurp(err);
+  const std::string said = spifit::test::slurp(err);
+  EXPECT_NE(said.find("the process of a forward run ended (killed by signal 9): running it once more"), std::string::npos) << said;
+  EXPECT_EQ(spifit::test::slurp(out / "card.toml"), spifit::test::slurp(dir_ / "serial" / "card.toml"));
+}
+
 // An FE sweep over the contact penalty with its sensitivities: the points run on the two worker
 // ranks side by side and come back in grid order.
 TEST(MpiSweep, GivesTheSerialPointsInGridOrder) {

@@ -1,0 +1,128 @@
+#include "cli/job_process.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+namespace spifit::cli {
+
+namespace {
+
+std::string first_line(const std::filesystem::path& file) {
+  std::ifstream f(file);
+  std::string line;
+  std::getline(f, line);
+  return line;
+}
+
+}  // namespace
+
+ChildOutcome run_child(const std::vector<std::string>& args, const std::string& input, double kill_after_seconds) {
+  // Everything the child needs is prepared before fork: it only calls async-signal-safe functions.
+  std::vector<std::string> words{"spifit"};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  static std::atomic<long> count{0};
+  const std::filesystem::path err =
+      std::filesystem::temp_directory_path() / ("spifit_job_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".err");
+  const std::string err_name = err.string();
+  int to_child[2], from_child[2];
+  if (::pipe(to_child) != 0) return {false, "", "cannot make a pipe"};
+  if (::pipe(from_child) != 0) {
+    ::close(to_child[0]);
+    ::close(to_child[1]);
+    return {false, "", "cannot make a pipe"};
+  }
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) return {false, "", "cannot start a process (fork failed)"};
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
+    sigset_t none;  // the default signal mask (spifit blocks SIGINT and SIGTERM in its threads)
+    sigemptyset(&none);
+    ::sigprocmask(SIG_SETMASK, &none, nullptr);
+    const int e = ::open(err_name.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    ::dup2(to_child[0], 0);
+    ::dup2(from_child[1], 1);
+    if (e >= 0) ::dup2(e, 2);
+    ::close(to_child[1]);
+    ::close(from_child[0]);
+    ::execv("/proc/self/exe", argv.data());
+    ::_exit(127);
+  }
+  ::close(to_child[0]);
+  ::close(from_child[1]);
+  // The job is small (a point): written at once, within the pipe's buffer.
+  std::size_t written = 0;
+  while (written < input.size()) {
+    const ssize_t n = ::write(to_child[1], input.data() + written, input.size() - written);
+    if (n <= 0) break;
+    written += static_cast<std::size_t>(n);
+  }
+  ::close(to_child[1]);
+  ChildOutcome out;
+  const auto t0 = std::chrono::steady_clock::now();
+  bool killed = false;
+  char buf[65536];
+  for (;;) {
+    pollfd p{from_child[0], POLLIN, 0};
+    const int ready = ::poll(&p, 1, 100);
+    if (ready > 0) {
+      const ssize_t n = ::read(from_child[0], buf, sizeof buf);
+      if (n > 0) {
+        out.output.append(buf, static_cast<std::size_t>(n));
+        continue;
+      }
+      if (n == 0) break;  // EOF: the child closed its stdout (ended)
+    }
+    if (kill_after_seconds > 0 && !killed &&
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > kill_after_seconds) {
+      ::kill(pid, SIGKILL);
+      killed = true;
+    }
+  }
+  ::close(from_child[0]);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  const std::string said = first_line(err);
+  std::error_code ec;
+  std::filesystem::remove(err, ec);
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+    out.ok = true;
+    return out;
+  }
+  if (killed) out.why = "stopped after " + std::to_string(static_cast<long>(kill_after_seconds)) + " s";
+  else if (WIFSIGNALED(status)) out.why = "killed by signal " + std::to_string(WTERMSIG(status));
+  else out.why = "exit status " + std::to_string(WEXITSTATUS(status));
+  if (!said.empty()) out.why += ": " + said;
+  return out;
+}
+
+inverse::JobHandler jobs_in_child_processes(std::vector<std::string> args, double kill_after_seconds,
+                                            std::function<std::string(const std::string&, const std::string&)> failed,
+                                            std::function<void(const std::string&)> note) {
+  return [args = std::move(args), kill_after_seconds, failed = std::move(failed), note = std::move(note)](const std::string& job) {
+    std::string why;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      const ChildOutcome c = run_child(args, job, kill_after_seconds);
+      if (c.ok) return c.output;
+      why += (why.empty() ? "" : "; again: ") + c.why;
+      if (note) note("the process of a forward run ended (" + c.why + ")" + (attempt == 0 ? ": running it once more" : ": a failed run"));
+    }
+    return failed(job, "the process of the run ended twice: " + why);
+  };
+}
+
+}  // namespace spifit::cli
