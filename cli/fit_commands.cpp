@@ -90,6 +90,31 @@ std::vector<std::string> job_args(const GlobalOptions& g, std::vector<std::strin
 
 void note_on_stderr(const std::string& why) { std::cerr << "spifit: rank " << mpi::rank() << ": " << why << "\n"; }
 
+// The FE runs of a fit on rank 0 (or in one process): their evaluations kept as they finish
+// (DIR/runs/evaluations.jsonl) for --resume, and the workers of an MPI job.
+void prepare_fe_runs(const inverse::FitProblem& problem, const io::OutputDirectory& dir, bool resume, bool quiet) {
+  auto cache = std::make_shared<inverse::EvaluationCache>(dir.path() / "runs" / "evaluations.jsonl",
+                                                         inverse::files_signature(problem.input_files), resume);
+  if (resume && !quiet) std::cout << "resuming: " << cache->loaded() << " FE evaluations read back\n";
+  problem.scene_runs->keep_evaluations(std::move(cache));
+  dir.record();  // runs/ in the manifest
+  if (auto pool = mpi::pool()) {
+    problem.scene_runs->use_pool(pool);
+    if (!quiet) std::cout << "MPI: FE evaluations on " << pool->workers() << " worker rank(s)\n";
+  }
+}
+
+// A worker rank of an MPI fit: answers FE evaluations, each in a process of its own, until rank
+// 0 stops it. A job may hold a run and its retry with half the increment: its process is stopped
+// after 2.5 run time limits and a minute.
+void serve_fit_jobs(const inverse::FitProblem& problem, const GlobalOptions& g, const std::string& fit_file) {
+  if (!problem.scene_runs) return;
+  const double limit = problem.settings.run_time_limit;
+  mpi::serve(jobs_in_child_processes(job_args(g, {"job", "--fit", fit_file}), limit > 0 ? 2.5 * limit + 60.0 : 0.0,
+                                     [](const std::string&, const std::string& why) { return inverse::failed_fe_answer(why); },
+                                     note_on_stderr));
+}
+
 }  // namespace
 
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
@@ -109,29 +134,14 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file);
-    if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out, each in a process of its own
-      if (problem.scene_runs) {
-        // A job may hold a run and its retry with half the increment: 2.5 run limits and a minute.
-        const double limit = problem.settings.run_time_limit;
-        mpi::serve(jobs_in_child_processes(job_args(g, {"job", "--fit", o->file}), limit > 0 ? 2.5 * limit + 60.0 : 0.0,
-                                           [](const std::string&, const std::string& why) { return inverse::failed_fe_answer(why); },
-                                           note_on_stderr));
-      }
+    if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out
+      serve_fit_jobs(problem, g, o->file);
       exit_code = 0;
       return;
     }
     const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, problem.input_files, g.quiet);
     if (problem.scene_runs) {
-      // The FE evaluations, kept as they finish (DIR/runs/evaluations.jsonl) for --resume.
-      auto cache = std::make_shared<inverse::EvaluationCache>(dir.path() / "runs" / "evaluations.jsonl",
-                                                             inverse::files_signature(problem.input_files), o->resume);
-      if (o->resume && !g.quiet) std::cout << "resuming: " << cache->loaded() << " FE evaluations read back\n";
-      problem.scene_runs->keep_evaluations(std::move(cache));
-      dir.record();  // runs/ in the manifest
-      if (auto pool = mpi::pool()) {
-        problem.scene_runs->use_pool(pool);
-        if (!g.quiet) std::cout << "MPI: FE evaluations on " << pool->workers() << " worker rank(s)\n";
-      }
+      prepare_fe_runs(problem, dir, o->resume, g.quiet);
     } else if (o->resume) {
       throw io::InputError(o->file, "experiment", "", "--resume continues fits with FE experiments (the others take seconds)");
     }

@@ -24,29 +24,28 @@ std::string first_line(const std::filesystem::path& file) {
   return line;
 }
 
-}  // namespace
+struct Child {
+  pid_t pid = -1;
+  int out = -1;  // read end of its stdout
+};
 
-ChildOutcome run_child(const std::vector<std::string>& args, const std::string& input, double kill_after_seconds) {
+// Starts this executable with args, input written to its stdin, stderr to err_name.
+Child start_child(const std::vector<std::string>& args, const std::string& input, const std::string& err_name) {
   // Everything the child needs is prepared before fork: it only calls async-signal-safe functions.
   std::vector<std::string> words{"spifit"};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
   for (auto& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
-  static std::atomic<long> count{0};
-  const std::filesystem::path err =
-      std::filesystem::temp_directory_path() / ("spifit_job_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".err");
-  const std::string err_name = err.string();
   int to_child[2], from_child[2];
-  if (::pipe(to_child) != 0) return {false, "", "cannot make a pipe"};
+  if (::pipe(to_child) != 0) return {};
   if (::pipe(from_child) != 0) {
     ::close(to_child[0]);
     ::close(to_child[1]);
-    return {false, "", "cannot make a pipe"};
+    return {};
   }
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
-  if (pid < 0) return {false, "", "cannot start a process (fork failed)"};
   if (pid == 0) {
     ::prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (::getppid() != parent) ::_exit(125);  // the parent died before prctl
@@ -64,6 +63,11 @@ ChildOutcome run_child(const std::vector<std::string>& args, const std::string& 
   }
   ::close(to_child[0]);
   ::close(from_child[1]);
+  if (pid < 0) {
+    ::close(to_child[1]);
+    ::close(from_child[0]);
+    return {};
+  }
   // The job is small (a point): written at once, within the pipe's buffer.
   std::size_t written = 0;
   while (written < input.size()) {
@@ -72,15 +76,25 @@ ChildOutcome run_child(const std::vector<std::string>& args, const std::string& 
     written += static_cast<std::size_t>(n);
   }
   ::close(to_child[1]);
+  return {pid, from_child[0]};
+}
+
+}  // namespace
+
+ChildOutcome run_child(const std::vector<std::string>& args, const std::string& input, double kill_after_seconds) {
+  static std::atomic<long> count{0};
+  const std::filesystem::path err =
+      std::filesystem::temp_directory_path() / ("spifit_job_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".err");
+  const Child child = start_child(args, input, err.string());
+  if (child.pid < 0) return {false, "", "cannot start a process for the run"};
   ChildOutcome out;
   const auto t0 = std::chrono::steady_clock::now();
   bool killed = false;
   char buf[65536];
   for (;;) {
-    pollfd p{from_child[0], POLLIN, 0};
-    const int ready = ::poll(&p, 1, 100);
-    if (ready > 0) {
-      const ssize_t n = ::read(from_child[0], buf, sizeof buf);
+    pollfd p{child.out, POLLIN, 0};
+    if (::poll(&p, 1, 100) > 0) {
+      const ssize_t n = ::read(child.out, buf, sizeof buf);
       if (n > 0) {
         out.output.append(buf, static_cast<std::size_t>(n));
         continue;
@@ -89,13 +103,13 @@ ChildOutcome run_child(const std::vector<std::string>& args, const std::string& 
     }
     if (kill_after_seconds > 0 && !killed &&
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() > kill_after_seconds) {
-      ::kill(pid, SIGKILL);
+      ::kill(child.pid, SIGKILL);
       killed = true;
     }
   }
-  ::close(from_child[0]);
+  ::close(child.out);
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  ::waitpid(child.pid, &status, 0);
   const std::string said = first_line(err);
   std::error_code ec;
   std::filesystem::remove(err, ec);
