@@ -20,6 +20,40 @@ constexpr std::size_t kCachedRuns = 256;
 // The scene file and the point.
 std::string key_of(const scene::Scene& scene, const ParameterPoint& p) { return scene.file() + " " + point_key(p); }
 
+// The value for key, made by make() once however many threads ask at once; the newest kCachedRuns
+// keys are kept (a dropped entry still being made lives on in its readers). An exception of
+// make() reaches every reader of the key.
+template <typename T, typename Make>
+T once_per_key(std::mutex& mutex, std::map<std::string, std::shared_future<T>>& entries, std::deque<std::string>& order,
+               const std::string& key, Make&& make) {
+  std::promise<T> promise;
+  std::shared_future<T> entry;
+  bool mine = false;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = entries.find(key); it != entries.end()) {
+      entry = it->second;
+    } else {
+      entry = promise.get_future().share();
+      entries.emplace(key, entry);
+      order.push_back(key);
+      while (order.size() > kCachedRuns) {
+        entries.erase(order.front());
+        order.pop_front();
+      }
+      mine = true;
+    }
+  }
+  if (mine) {
+    try {
+      promise.set_value(make());
+    } catch (...) {
+      promise.set_exception(std::current_exception());
+    }
+  }
+  return entry.get();
+}
+
 }  // namespace
 
 std::string point_key(const ParameterPoint& p) {
@@ -50,27 +84,7 @@ std::string describe_point(const ParameterPoint& p, const material::MaterialPara
 }
 
 std::shared_ptr<const scene::SceneResult> SceneRuns::result(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const {
-  const std::string key = key_of(scene, p);
-  std::promise<std::shared_ptr<const scene::SceneResult>> promise;
-  Entry entry;
-  bool mine = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (auto it = cache_.find(key); it != cache_.end()) {
-      entry = it->second;
-    } else {
-      entry = promise.get_future().share();
-      cache_.emplace(key, entry);
-      order_.push_back(key);
-      while (order_.size() > kCachedRuns) {  // a dropped entry still being run lives on in its readers
-        cache_.erase(order_.front());
-        order_.pop_front();
-      }
-      mine = true;
-    }
-  }
-  if (mine) promise.set_value(run(scene, p, experiment));
-  return entry.get();
+  return once_per_key(mutex_, cache_, order_, key_of(scene, p), [&] { return run(scene, p, experiment); });
 }
 
 std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const {
@@ -145,32 +159,7 @@ void SceneRuns::add_remote(const std::vector<Run>& runs, const std::vector<Failu
 }
 
 std::string SceneRuns::shared_answer(const std::string& key, const std::function<std::string()>& ask) const {
-  std::promise<std::string> promise;
-  std::shared_future<std::string> entry;
-  bool mine = false;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (auto it = answers_.find(key); it != answers_.end()) {
-      entry = it->second;
-    } else {
-      entry = promise.get_future().share();
-      answers_.emplace(key, entry);
-      answer_order_.push_back(key);
-      while (answer_order_.size() > kCachedRuns) {
-        answers_.erase(answer_order_.front());
-        answer_order_.pop_front();
-      }
-      mine = true;
-    }
-  }
-  if (mine) {
-    try {
-      promise.set_value(ask());
-    } catch (...) {
-      promise.set_exception(std::current_exception());
-    }
-  }
-  return entry.get();
+  return once_per_key(mutex_, answers_, answer_order_, key, ask);
 }
 
 long SceneRuns::runs() const {
