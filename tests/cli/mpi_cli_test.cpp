@@ -195,6 +195,55 @@ TEST_F(MpiFit, AKilledRunProcessDoesNotEndTheFit) {
   EXPECT_EQ(spifit::test::slurp(out / "card.toml"), spifit::test::slurp(dir_ / "serial" / "card.toml"));
 }
 
+// The pid of the rank `rank` of an MPI `spifit ... fit FIT` (not of its runs' processes), or 0.
+pid_t rank_process_of(const fs::path& fit, int rank) {
+  const std::string needle = std::string("fit") + '\0' + fit.string(), env = "OMPI_COMM_WORLD_RANK=" + std::to_string(rank) + '\0';
+  for (const auto& e : fs::directory_iterator("/proc")) {
+    const std::string name = e.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (spifit::test::slurp(e.path() / "cmdline").find(needle) == std::string::npos) continue;
+    if (spifit::test::slurp(e.path() / "environ").find(env) != std::string::npos) return static_cast<pid_t>(std::stol(name));
+  }
+  return 0;
+}
+
+// A worker rank killed (SIGKILL) mid-fit under `mpirun --mca orte_enable_recovery 1`: rank 0
+// counts it dead once it has been silent for SPIFIT_MPI_DEAD_AFTER (6 s here), runs its job on
+// the other worker, and the fit ends as the serial one with exit 0 (docs/guide/parallel-runs.md).
+TEST_F(MpiFit, ADeadRankDoesNotEndTheFit) {
+  const fs::path out = dir_ / "rank_killed", err = dir_ / "rank_killed.err";
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string cmd = std::string(kEnv) + "SPIFIT_MPI_DEAD_AFTER=6 exec " + SPIFIT_MPIEXEC + " --mca orte_enable_recovery 1" + kLaunch +
+                            SPIFIT_EXE + " -q fit " + fit_.string() + " --out " + out.string() + " >/dev/null 2>" + err.string();
+    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  pid_t victim = 0;
+  int status = 0;
+  bool finished = false;
+  while (!victim && std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) {
+      finished = true;
+      break;
+    }
+    if (fs::exists(out / "runs" / "evaluations.jsonl") && spifit::test::slurp(out / "runs" / "evaluations.jsonl").size() > 200)
+      victim = rank_process_of(fit_, 2);
+    if (!victim) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_FALSE(finished) << "the fit ended before a rank could be killed";
+  ASSERT_GT(victim, 0);
+  ::kill(victim, SIGKILL);
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status)) << "mpiexec ended by a signal";
+  const std::string said = spifit::test::slurp(err);
+  EXPECT_EQ(WEXITSTATUS(status), 0) << said;
+  EXPECT_NE(said.find("spifit: rank 2 has not answered for 6 s: counted as dead"), std::string::npos) << said;
+  EXPECT_EQ(spifit::test::slurp(out / "card.toml"), spifit::test::slurp(dir_ / "serial" / "card.toml"));
+}
+
 // An FE sweep over the contact penalty with its sensitivities: the points run on the two worker
 // ranks side by side and come back in grid order.
 TEST(MpiSweep, GivesTheSerialPointsInGridOrder) {
