@@ -1,5 +1,5 @@
 // Time of the bundled AA3003-O identification (goal: fit Hill + Swift to 3 tensile + 1
-// shear curve in < 1 s on 2 cores, docs/results/benchmarks.md, "Identification: fit_classic"), with
+// shear curve in < 1 s on 2 cores, docs/results/benchmarks.md, "Material points and fit_classic"), with
 // its iterations, forward runs and the largest relative deviation of the fitted values from
 // the generating card C.2 (data are synthetic); without and with the per-experiment conflict
 // check that fit files of material points run by default (each experiment fitted alone after).

@@ -1,5 +1,5 @@
 // Time of one 200-increment tensile curve (goal < 1 ms, docs/results/benchmarks.md,
-// "Material-point tensile curve") and its error against the closed-form Hill 1948 + Swift
+// "Material points and fit_classic") and its error against the closed-form Hill 1948 + Swift
 // solution, printed as counters.
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_card.hpp"

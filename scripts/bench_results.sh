@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Runs the short benchmarks (about two minutes on 2 cores: the indent scenes, the material-point
+# Runs the short benchmarks (about 25 s on 2 cores: the indent scenes, the material-point
 # and fit_classic timings) with JSON output under out/bench/ and regenerates the table between
 # the bench_table markers of docs/results/benchmarks.md from it (scripts/bench_table.py).
 # Needs a build with benchmarks (bash scripts/build.sh). Run it on an idle machine.

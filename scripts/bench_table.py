@@ -18,7 +18,8 @@ BEGIN, END = "<!-- bench_table: begin -->", "<!-- bench_table: end -->"
 # Counters shown, in this order, with their labels.
 SHOWN = [("ref_error", "error vs reference"), ("max_rel_error", "largest relative error"), ("elements", "elements"),
          ("increments", "increments"), ("newton_its", "Newton iterations"), ("newton_iters", "Newton iterations"),
-         ("substeps", "sub-steps"), ("contours", "contours")]
+         ("substeps", "sub-steps"), ("contours", "contours"), ("forward_runs", "forward runs"),
+         ("max_rel_dev_from_C2", "largest deviation from card C.2")]
 
 
 def fmt(v):
