@@ -159,38 +159,48 @@ pid_t job_process_of(const fs::path& fit) {
   return 0;
 }
 
-// A forward run's process killed (SIGKILL) while a worker waits for it: the worker runs the job
-// once more, says so on stderr, and the fit ends as the serial one (docs/guide/parallel-runs.md).
-TEST_F(MpiFit, AKilledRunProcessDoesNotEndTheFit) {
-  const fs::path out = dir_ / "run_killed", err = dir_ / "run_killed.err";
+// An MPI fit of fit into out (stderr to err), launched with `launch` before mpiexec's own
+// options (environment, MCA options); once it has kept a few evaluations, the process victim()
+// finds is killed with SIGKILL and the fit is waited for. Whether a victim was killed, and how
+// mpiexec ended.
+struct KilledFit {
+  bool killed = false;
+  int status = 0;
+};
+template <typename Victim>
+KilledFit kill_in_mpi_fit(const fs::path& fit, const fs::path& out, const fs::path& err, const std::string& env,
+                          const std::string& mca, Victim victim) {
+  KilledFit k;
   const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
+  if (pid < 0) return k;
   if (pid == 0) {
-    const std::string cmd = std::string(kEnv) + "exec " + SPIFIT_MPIEXEC + kLaunch + SPIFIT_EXE + " -q fit " + fit_.string() + " --out " +
-                            out.string() + " >/dev/null 2>" + err.string();
+    const std::string cmd = std::string(kEnv) + env + " exec " + SPIFIT_MPIEXEC + mca + kLaunch + SPIFIT_EXE + " -q fit " + fit.string() +
+                            " --out " + out.string() + " >/dev/null 2>" + err.string();
     ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
     ::_exit(127);
   }
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  pid_t victim = 0;
-  int status = 0;
-  bool finished = false;
-  while (!victim && std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) {
-      finished = true;
-      break;
-    }
+  pid_t target = 0;
+  while (!target && std::chrono::steady_clock::now() < deadline) {
+    if (::waitpid(pid, &k.status, WNOHANG) == pid) return k;  // ended before a kill
     if (fs::exists(out / "runs" / "evaluations.jsonl") && spifit::test::slurp(out / "runs" / "evaluations.jsonl").size() > 200)
-      victim = job_process_of(fit_);
-    if (!victim) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+      target = victim();
+    if (!target) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  ASSERT_FALSE(finished) << "the fit ended before a run could be killed";
-  ASSERT_GT(victim, 0);
-  ::kill(victim, SIGKILL);
-  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-  ASSERT_TRUE(WIFEXITED(status)) << "mpiexec ended by a signal";
-  EXPECT_EQ(WEXITSTATUS(status), 0) << spifit::test::slurp(err);
+  if (target) k.killed = ::kill(target, SIGKILL) == 0;
+  ::waitpid(pid, &k.status, 0);
+  return k;
+}
+
+// A forward run's process killed (SIGKILL) while a worker waits for it: the worker runs the job
+// once more, says so on stderr, and the fit ends as the serial one (docs/guide/parallel-runs.md).
+TEST_F(MpiFit, AKilledRunProcessDoesNotEndTheFit) {
+  const fs::path out = dir_ / "run_killed", err = dir_ / "run_killed.err";
+  const KilledFit k = kill_in_mpi_fit(fit_, out, err, "", "", [] { return job_process_of(fit_); });
+  ASSERT_TRUE(k.killed) << "no run's process was killed";
+  ASSERT_TRUE(WIFEXITED(k.status)) << "mpiexec ended by a signal";
   const std::string said = spifit::test::slurp(err);
+  EXPECT_EQ(WEXITSTATUS(k.status), 0) << said;
   EXPECT_NE(said.find("the process of a forward run ended (killed by signal 9): running it once more"), std::string::npos) << said;
   EXPECT_EQ(spifit::test::slurp(out / "card.toml"), spifit::test::slurp(dir_ / "serial" / "card.toml"));
 }
@@ -212,34 +222,12 @@ pid_t rank_process_of(const fs::path& fit, int rank) {
 // the other worker, and the fit ends as the serial one with exit 0 (docs/guide/parallel-runs.md).
 TEST_F(MpiFit, ADeadRankDoesNotEndTheFit) {
   const fs::path out = dir_ / "rank_killed", err = dir_ / "rank_killed.err";
-  const pid_t pid = ::fork();
-  ASSERT_GE(pid, 0);
-  if (pid == 0) {
-    const std::string cmd = std::string(kEnv) + "SPIFIT_MPI_DEAD_AFTER=6 exec " + SPIFIT_MPIEXEC + " --mca orte_enable_recovery 1" + kLaunch +
-                            SPIFIT_EXE + " -q fit " + fit_.string() + " --out " + out.string() + " >/dev/null 2>" + err.string();
-    ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-    ::_exit(127);
-  }
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  pid_t victim = 0;
-  int status = 0;
-  bool finished = false;
-  while (!victim && std::chrono::steady_clock::now() < deadline) {
-    if (::waitpid(pid, &status, WNOHANG) == pid) {
-      finished = true;
-      break;
-    }
-    if (fs::exists(out / "runs" / "evaluations.jsonl") && spifit::test::slurp(out / "runs" / "evaluations.jsonl").size() > 200)
-      victim = rank_process_of(fit_, 2);
-    if (!victim) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  ASSERT_FALSE(finished) << "the fit ended before a rank could be killed";
-  ASSERT_GT(victim, 0);
-  ::kill(victim, SIGKILL);
-  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
-  ASSERT_TRUE(WIFEXITED(status)) << "mpiexec ended by a signal";
+  const KilledFit k = kill_in_mpi_fit(fit_, out, err, "SPIFIT_MPI_DEAD_AFTER=6", " --mca orte_enable_recovery 1",
+                                      [] { return rank_process_of(fit_, 2); });
+  ASSERT_TRUE(k.killed) << "rank 2 was not killed";
+  ASSERT_TRUE(WIFEXITED(k.status)) << "mpiexec ended by a signal";
   const std::string said = spifit::test::slurp(err);
-  EXPECT_EQ(WEXITSTATUS(status), 0) << said;
+  EXPECT_EQ(WEXITSTATUS(k.status), 0) << said;
   EXPECT_NE(said.find("spifit: rank 2 has not answered for 6 s: counted as dead"), std::string::npos) << said;
   EXPECT_EQ(spifit::test::slurp(out / "card.toml"), spifit::test::slurp(dir_ / "serial" / "card.toml"));
 }
