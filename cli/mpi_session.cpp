@@ -37,14 +37,6 @@ bool launched_by_mpi() {
 
 }  // namespace
 
-bool built_with_mpi() {
-#ifdef SPIFIT_HAVE_MPI
-  return true;
-#else
-  return false;
-#endif
-}
-
 int rank() { return g_rank; }
 int size() { return g_size; }
 

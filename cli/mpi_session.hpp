@@ -4,9 +4,10 @@
 // 1.. read the same fit or sweep file and answer jobs until rank 0 stops them. Without an MPI
 // launcher (or in a build without Open MPI) this is one process: rank 0 of 1, no pool.
 //
-// Messages: rank 0 -> worker: a job or "stop"; worker -> rank 0: the job's answer. Only one
-// thread of rank 0 (the pool's) calls MPI while the pool lives; both sides poll with a short sleep
-// instead of blocking in MPI, so that an idle rank leaves its core to the runs.
+// Messages: rank 0 -> worker: a job or "stop"; worker -> rank 0: the job's answer, and "alive"
+// every 2 s while it runs one (rank 0 counts a rank silent for 30 s as dead and gives its job to
+// another). Only one thread of rank 0 (the pool's) calls MPI while the pool lives; both sides poll
+// with a short sleep instead of blocking in MPI, so that an idle rank leaves its core to the runs.
 #include "inverse/job_pool.hpp"
 
 #include <memory>
@@ -23,7 +24,6 @@ void finish();
 int rank();
 int size();
 inline bool is_worker() { return rank() > 0; }
-bool built_with_mpi();
 
 // Rank 0 of a job of more than one process: a pool of the other ranks (the same one on every
 // call); null otherwise.
