@@ -23,7 +23,8 @@ std::string unknown_subcommand(const CLI::App& app) {
   for (const std::string& word : app.remaining(true)) {
     if (word.empty() || word[0] == '-') continue;
     std::string names;
-    for (const CLI::App* s : a->get_subcommands([](const CLI::App*) { return true; })) names += (names.empty() ? "" : ", ") + s->get_name();
+    for (const CLI::App* s : a->get_subcommands([](const CLI::App*) { return true; }))
+      if (!s->get_group().empty()) names += (names.empty() ? "" : ", ") + s->get_name();  // hidden ones (job) not
     const std::string command = a == &app ? "" : a->get_name() + " ";
     return "unknown " + command + "subcommand " + word + " (subcommands: " + names + ")";
   }
