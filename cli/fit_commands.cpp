@@ -162,8 +162,9 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       return j;
     });
     heartbeat.write();  // once the signals are handled
-    // Under MPI too: Ceres's threads are --threads (its cost sums depend on their number), while
-    // the FE evaluations of a Jacobian go to the workers all at once (parallel_evaluations).
+    // Under MPI too Ceres gets --threads threads, as in one process (fits with other thread
+    // counts agree to about 1e-10, not to the bit); the FE evaluations of a Jacobian go to the
+    // workers all at once (parallel_evaluations).
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
     const auto result = failed_on_error(heartbeat, watch, [&] { return inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart}); });
     inverse::write_fit_outputs(problem, result, dir);
