@@ -70,12 +70,20 @@ bool any_nonzero(const std::vector<double>& v) {
   return std::any_of(v.begin(), v.end(), [](double x) { return std::isfinite(x) && std::abs(x) > 1e-9; });
 }
 
-PlotSpec force_plot(const RunContent& c) {
+// A plot with its file stem, title and axis labels.
+PlotSpec titled(const std::string& stem, const std::string& title, const std::string& xlabel, const std::string& ylabel) {
   PlotSpec p;
-  p.stem = "run_force";
+  p.stem = stem;
+  p.title = title;
+  p.xlabel = xlabel;
+  p.ylabel = ylabel;
+  return p;
+}
+
+PlotSpec force_plot(const RunContent& c) {
+  PlotSpec p = titled("run_force", "Tool force (by the sheet on the tool)", "tool travel [mm]", "force [N]");
   const std::string kind = c.summary.value("kind", "");
   std::vector<double> x = travel(c);
-  p.xlabel = "tool travel [mm]";
   if (kind == "indent") {  // tool-tip depth below the first touch
     const std::vector<double> z = c.force.column("tool_z");
     const double z0 = c.summary.contains("tool") ? number_at(c.summary["tool"], "radius", 0.0) + 0.5 * number_at(c.summary["model"], "thickness", 0.0)
@@ -83,8 +91,6 @@ PlotSpec force_plot(const RunContent& c) {
     for (std::size_t i = 0; i < x.size() && i < z.size(); ++i) x[i] = z0 - z[i];
     p.xlabel = "tool-tip depth [mm]";
   }
-  p.title = "Tool force (by the sheet on the tool)";
-  p.ylabel = "force [N]";
   p.key_outside = true;
   const bool cone = kind == "cone";
   for (const char* name : cone ? std::vector<const char*>{"Fr", "Ftheta", "Fz"} : std::vector<const char*>{"Fx", "Fy", "Fz"}) {
@@ -99,11 +105,7 @@ PlotSpec force_plot(const RunContent& c) {
 // the order run; series titles by column.
 PlotSpec per_contour_plot(const OutputTable& t, const std::string& stem, const std::string& title, const std::string& ylabel,
                           const std::vector<std::pair<std::string, std::string>>& columns) {
-  PlotSpec p;
-  p.stem = stem;
-  p.title = title;
-  p.xlabel = "contour (in the order run)";
-  p.ylabel = ylabel;
+  PlotSpec p = titled(stem, title, "contour (in the order run)", ylabel);
   p.integer_x = true;
   p.key_outside = true;
   std::vector<double> x;
@@ -121,11 +123,7 @@ PlotSpec contour_plot(const RunContent& c) {
 }
 
 PlotSpec section_plot(const RunContent& c, const char* column, const std::string& label, const std::string& stem) {
-  PlotSpec p;
-  p.stem = stem;
-  p.title = "Section y = 0 (mid-surface): " + label;
-  p.xlabel = "x [mm]";
-  p.ylabel = label + " [mm]";
+  PlotSpec p = titled(stem, "Section y = 0 (mid-surface): " + label, "x [mm]", label + " [mm]");
   p.key_outside = true;
   for (const auto& [point, t] : c.sections) p.series.push_back({"at " + point, t.column("x"), t.column(column), Series::Style::line, ""});
   return p;
@@ -137,11 +135,7 @@ PlotSpec cone_depth_plot(const RunContent& c) {
 }
 
 PlotSpec energy_plot(const RunContent& c) {
-  PlotSpec p;
-  p.stem = "run_energies";
-  p.title = "Energy account";
-  p.xlabel = "tool travel [mm]";
-  p.ylabel = "energy [N mm]";
+  PlotSpec p = titled("run_energies", "Energy account", "tool travel [mm]", "energy [N mm]");
   p.key_outside = true;
   const std::vector<double> x = c.energies.column("travel");
   for (const char* name : {"external_work", "elastic", "plastic", "friction_dissipation", "contact_stored", "balance_error"}) {
@@ -156,11 +150,7 @@ PlotSpec energy_plot(const RunContent& c) {
 }
 
 PlotSpec iterations_plot(const RunContent& c) {
-  PlotSpec p;
-  p.stem = "run_iterations";
-  p.title = "Newton iterations per increment";
-  p.xlabel = "tool travel [mm]";
-  p.ylabel = "iterations";
+  PlotSpec p = titled("run_iterations", "Newton iterations per increment", "tool travel [mm]", "iterations");
   p.key = false;
   p.series.push_back({"iterations", travel(c), c.force.column("iterations"), Series::Style::points, ""});
   return p;
