@@ -2,13 +2,9 @@
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/text_file.hpp"
+#include "reports/output_table.hpp"
 
 #include <nlohmann/json.hpp>
-
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
-#include <sstream>
 
 namespace spifit::reports {
 
@@ -34,13 +30,6 @@ std::vector<std::string> strings(const json& j, const std::string& key, const fs
   return out;
 }
 
-std::vector<std::string> split(const std::string& line) {
-  std::vector<std::string> cells;
-  std::stringstream ss(line);
-  for (std::string c; std::getline(ss, c, ',');) cells.push_back(io::trim(c));
-  return cells;
-}
-
 }  // namespace
 
 bool is_sweep_directory(const fs::path& dir) {
@@ -64,33 +53,26 @@ SweepReportSummary rerender_sweep_report(const fs::path& dir, bool plots) {
   t.metric_units = strings(j, "metric_units", summary);
   const std::vector<std::string> messages = j.contains("messages") ? strings(j, "messages", summary) : std::vector<std::string>{};
 
-  std::istringstream in(io::read_text_file(csv.string()));
-  std::string line;
-  std::getline(in, line);
+  // sweep.csv: the inputs, the metrics, wall_seconds and ok, as summary.json describes them.
+  OutputTable csv_table;
+  std::string why;
+  if (!read_output_table(csv, &csv_table, &why)) throw io::InputError(csv.string(), "", "", why);
   std::vector<std::string> expected = t.inputs;
   expected.insert(expected.end(), t.metrics.begin(), t.metrics.end());
   expected.push_back("wall_seconds");
   expected.push_back("ok");
-  if (split(line) != expected) throw io::InputError(csv.string(), "line 1", line, "not the header the sweep's summary.json describes");
-  for (int lineno = 2; std::getline(in, line); ++lineno) {
-    if (io::trim(line).empty()) continue;
-    const auto cells = split(line);
-    if (cells.size() != expected.size())
-      throw io::InputError(csv.string(), "line " + std::to_string(lineno), line, std::to_string(expected.size()) + " columns expected");
-    std::vector<double> v;
-    for (const auto& c : cells) {
-      char* end = nullptr;
-      errno = 0;
-      const double x = std::strtod(c.c_str(), &end);
-      if (c.empty() || *end != '\0') throw io::InputError(csv.string(), "line " + std::to_string(lineno), c, "not a number");
-      v.push_back(x);
-    }
-    const auto mid = v.begin() + static_cast<std::ptrdiff_t>(t.inputs.size());
-    const auto metrics_end = mid + static_cast<std::ptrdiff_t>(t.metrics.size());
-    t.input_values.emplace_back(v.begin(), mid);
-    t.metric_values.emplace_back(mid, metrics_end);
-    t.wall_seconds.push_back(v[v.size() - 2]);
-    t.ok.push_back(v.back() != 0.0);
+  if (csv_table.names != expected) throw io::InputError(csv.string(), "line 1", "", "not the columns the sweep's summary.json describes");
+  auto column = [&](const std::string& name) { return csv_table.column(name); };
+  std::vector<std::vector<double>> inputs, metrics;
+  for (const auto& n : t.inputs) inputs.push_back(column(n));
+  for (const auto& n : t.metrics) metrics.push_back(column(n));
+  t.wall_seconds = column("wall_seconds");
+  for (double ok : column("ok")) t.ok.push_back(ok != 0.0);
+  for (std::size_t i = 0; i < csv_table.rows(); ++i) {
+    t.input_values.emplace_back();
+    t.metric_values.emplace_back();
+    for (const auto& c : inputs) t.input_values.back().push_back(c[i]);
+    for (const auto& c : metrics) t.metric_values.back().push_back(c[i]);
   }
   return render_sweep_report(dir, j.value("sweep", dir.filename().string()), t, messages, plots);
 }
