@@ -1,8 +1,8 @@
 #include "inverse/fe_evaluation_job.hpp"
 
+#include "forward/io/binary_archive.hpp"
 #include "forward/material/material_inputs.hpp"
 #include "inverse/fit_file.hpp"
-#include "inverse/job_message.hpp"
 
 #include <stdexcept>
 
@@ -10,25 +10,33 @@ namespace spifit::inverse {
 
 namespace {
 
-void write_point(MessageWriter& w, const ParameterPoint& p) {
+// Jobs and answers as binary archives (exact bits, a checksum, and the kind and version: a worker
+// of another spifit version is refused, not misread).
+constexpr const char* kJobKind = "fe-evaluation-job";
+constexpr const char* kAnswerKind = "fe-evaluation-answer";
+constexpr std::uint32_t kVersion = 1;
+
+void write_point(io::BinaryWriter& w, const ParameterPoint& p) {
   std::vector<double> m;
   for (const auto& in : material::material_inputs()) m.push_back(material::material_field(p.material, in.field));
-  w.numbers(m);
-  w.integer(static_cast<std::int64_t>(p.scene.size()));
-  for (const auto& [name, v] : p.scene) w.text(name).number(v);
+  w.f64s(m);
+  w.i64(static_cast<std::int64_t>(p.scene.size()));
+  for (const auto& [name, v] : p.scene) {
+    w.string(name);
+    w.f64(v);
+  }
 }
 
-ParameterPoint read_point(MessageReader& r, const material::MaterialParams<double>& base) {
+ParameterPoint read_point(io::BinaryReader& r, const material::MaterialParams<double>& base) {
   ParameterPoint p;
   p.material = base;
   const auto& inputs = material::material_inputs();
-  const std::vector<double> m = r.numbers();
-  if (m.size() != inputs.size()) throw std::runtime_error("job message: a point of another spifit version");
+  const std::vector<double> m = r.f64s();
+  if (m.size() != inputs.size()) throw std::runtime_error("job: a point of another spifit version");
   for (std::size_t i = 0; i < m.size(); ++i) material::material_field(p.material, inputs[i].field) = m[i];
-  const std::int64_t n = r.integer();
-  for (std::int64_t i = 0; i < n; ++i) {
-    std::string name = r.text();
-    p.scene.emplace_back(std::move(name), r.number());
+  for (std::int64_t i = 0, n = r.i64(); i < n; ++i) {
+    std::string name = r.string();
+    p.scene.emplace_back(std::move(name), r.f64());
   }
   return p;
 }
@@ -36,51 +44,68 @@ ParameterPoint read_point(MessageReader& r, const material::MaterialParams<doubl
 }  // namespace
 
 std::string fe_evaluation_job(const std::string& experiment, const ParameterPoint& p) {
-  MessageWriter w;
-  w.text(experiment);
+  io::BinaryWriter w(kJobKind, kVersion);
+  w.string(experiment);
   write_point(w, p);
-  return w.bytes();
+  return w.finish();
 }
 
 std::string encode_answer(const FeEvaluationAnswer& a) {
-  MessageWriter w;
-  w.text(a.error).integer(static_cast<std::int64_t>(a.experiments.size()));
-  for (const auto& e : a.experiments) w.text(e.experiment).integer(e.ok ? 1 : 0).numbers(e.values);
-  w.integer(static_cast<std::int64_t>(a.runs.size()));
-  for (const auto& r : a.runs) w.text(r.scene).text(r.experiment).number(r.seconds).integer(r.retry ? 1 : 0).integer(r.ok ? 1 : 0);
-  w.integer(static_cast<std::int64_t>(a.failures.size()));
-  for (const auto& f : a.failures) w.text(f.scene).text(f.point).text(f.message).integer(f.recovered ? 1 : 0);
-  return w.bytes();
+  io::BinaryWriter w(kAnswerKind, kVersion);
+  w.string(a.error);
+  w.i64(static_cast<std::int64_t>(a.experiments.size()));
+  for (const auto& e : a.experiments) {
+    w.string(e.experiment);
+    w.boolean(e.ok);
+    w.f64s(e.values);
+  }
+  w.i64(static_cast<std::int64_t>(a.runs.size()));
+  for (const auto& r : a.runs) {
+    w.string(r.scene);
+    w.string(r.experiment);
+    w.f64(r.seconds);
+    w.boolean(r.retry);
+    w.boolean(r.ok);
+  }
+  w.i64(static_cast<std::int64_t>(a.failures.size()));
+  for (const auto& f : a.failures) {
+    w.string(f.scene);
+    w.string(f.point);
+    w.string(f.message);
+    w.boolean(f.recovered);
+  }
+  return w.finish();
 }
 
 FeEvaluationAnswer decode_fe_answer(const std::string& bytes) {
-  MessageReader r(bytes);
+  io::BinaryReader r(bytes, kAnswerKind, kVersion);
   FeEvaluationAnswer a;
-  a.error = r.text();
-  for (std::int64_t i = 0, n = r.integer(); i < n; ++i) {
+  a.error = r.string();
+  for (std::int64_t i = 0, n = r.i64(); i < n; ++i) {
     FeEvaluationAnswer::Residuals e;
-    e.experiment = r.text();
-    e.ok = r.integer() != 0;
-    e.values = r.numbers();
+    e.experiment = r.string();
+    e.ok = r.boolean();
+    e.values = r.f64s();
     a.experiments.push_back(std::move(e));
   }
-  for (std::int64_t i = 0, n = r.integer(); i < n; ++i) {
+  for (std::int64_t i = 0, n = r.i64(); i < n; ++i) {
     SceneRuns::Run run;
-    run.scene = r.text();
-    run.experiment = r.text();
-    run.seconds = r.number();
-    run.retry = r.integer() != 0;
-    run.ok = r.integer() != 0;
+    run.scene = r.string();
+    run.experiment = r.string();
+    run.seconds = r.f64();
+    run.retry = r.boolean();
+    run.ok = r.boolean();
     a.runs.push_back(run);
   }
-  for (std::int64_t i = 0, n = r.integer(); i < n; ++i) {
+  for (std::int64_t i = 0, n = r.i64(); i < n; ++i) {
     SceneRuns::Failure f;
-    f.scene = r.text();
-    f.point = r.text();
-    f.message = r.text();
-    f.recovered = r.integer() != 0;
+    f.scene = r.string();
+    f.point = r.string();
+    f.message = r.string();
+    f.recovered = r.boolean();
     a.failures.push_back(f);
   }
+  r.finish();
   return a;
 }
 
@@ -94,8 +119,8 @@ JobHandler fe_evaluation_handler(const FitProblem& problem) {
   return [&problem](const std::string& job) {
     FeEvaluationAnswer a;
     try {
-      MessageReader r(job);
-      const std::string name = r.text();
+      io::BinaryReader r(job, kJobKind, kVersion);
+      const std::string name = r.string();
       const SceneRuns& runs = *problem.scene_runs;
       const ParameterPoint p = read_point(r, runs.base());
       const Experiment* asked = nullptr;

@@ -1,9 +1,9 @@
 // The sweep engine: grid points and sensitivity runs of any scene kind (sweep.hpp).
 #include "inverse/sweep.hpp"
 
+#include "forward/io/binary_archive.hpp"
 #include "forward/io/csv_writer.hpp"
 #include "forward/scenes/common/run_files.hpp"
-#include "inverse/job_message.hpp"
 
 #include <omp.h>
 
@@ -101,26 +101,37 @@ std::string point_dir(std::size_t i, std::size_t n) {
   return buf;
 }
 
+// A point's job and answer as binary archives (exact bits, checked kind and version).
+constexpr const char* kPointJobKind = "sweep-point-job";
+constexpr const char* kPointAnswerKind = "sweep-point-answer";
+constexpr std::uint32_t kPointVersion = 1;
+
 std::string point_job(const std::vector<double>& values, const std::string& sub) {
-  MessageWriter w;
-  w.numbers(values).text(sub);
-  return w.bytes();
+  io::BinaryWriter w(kPointJobKind, kPointVersion);
+  w.f64s(values);
+  w.string(sub);
+  return w.finish();
 }
 
 std::string point_answer(const SweepPoint& p) {
-  MessageWriter w;
-  w.numbers(p.inputs).numbers(p.metrics).integer(p.ok ? 1 : 0).text(p.message).number(p.wall_seconds);
-  return w.bytes();
+  io::BinaryWriter w(kPointAnswerKind, kPointVersion);
+  w.f64s(p.inputs);
+  w.f64s(p.metrics);
+  w.boolean(p.ok);
+  w.string(p.message);
+  w.f64(p.wall_seconds);
+  return w.finish();
 }
 
 SweepPoint read_point_answer(const std::string& bytes) {
-  MessageReader r(bytes);
+  io::BinaryReader r(bytes, kPointAnswerKind, kPointVersion);
   SweepPoint p;
-  p.inputs = r.numbers();
-  p.metrics = r.numbers();
-  p.ok = r.integer() != 0;
-  p.message = r.text();
-  p.wall_seconds = r.number();
+  p.inputs = r.f64s();
+  p.metrics = r.f64s();
+  p.ok = r.boolean();
+  p.message = r.string();
+  p.wall_seconds = r.f64();
+  r.finish();
   return p;
 }
 
@@ -259,9 +270,9 @@ JobHandler sweep_point_handler(const SweepSpec& s, const std::string& out) {
   return [&s, out, dir](const std::string& job) {
     SweepPoint p;
     try {
-      MessageReader r(job);
-      const std::vector<double> values = r.numbers();
-      const std::string sub = r.text();
+      io::BinaryReader r(job, kPointJobKind, kPointVersion);
+      const std::vector<double> values = r.f64s();
+      const std::string sub = r.string();
       if (!*dir && !out.empty()) *dir = io::OutputDirectory::existing(out);
       p = run_point(s, observables_of(s), values, dir->has_value() ? &**dir : nullptr, sub, false);
     } catch (const std::exception& e) {
@@ -276,8 +287,8 @@ JobHandler sweep_point_handler(const SweepSpec& s, const std::string& out) {
 std::string failed_point_answer(const SweepSpec& s, const std::string& job, const std::string& why) {
   SweepPoint p;
   try {
-    MessageReader r(job);
-    p.inputs = r.numbers();
+    io::BinaryReader r(job, kPointJobKind, kPointVersion);
+    p.inputs = r.f64s();
   } catch (const std::exception&) {
   }
   p.ok = false;

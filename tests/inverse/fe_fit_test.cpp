@@ -3,6 +3,7 @@
 // a twin experiment that recovers the friction coefficient of the tiny line test.
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/scene_registry.hpp"
+#include "inverse/fe_evaluation_job.hpp"
 #include "inverse/fe_experiment.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/numeric_cost.hpp"
@@ -16,6 +17,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -398,3 +400,28 @@ TEST(FeFit, TinyConeFrictionFromContourMeans) {
 }
 
 }  // namespace
+
+// The answer of an FE evaluation job (MPI workers, fe_evaluation_job.hpp) comes back with the
+// exact bits of every residual, -0 and the smallest subnormal included; bytes that are no answer
+// (an empty reply, a job in the answer's place) are refused, not misread.
+TEST(FeEvaluationJob, AnswersKeepEveryBitAndForeignBytesAreRefused) {
+  inverse::FeEvaluationAnswer a;
+  a.experiments.push_back({"drag", true, {0.1 + 0.2, -0.0, 4.9406564584124654e-324, -1e300}});
+  a.experiments.push_back({"press", false, {}});
+  a.runs.push_back({"line.toml", "drag", 0.25, true, false});
+  a.failures.push_back({"line.toml", "contact.friction=0.5", "diverged", true});
+  const inverse::FeEvaluationAnswer b = inverse::decode_fe_answer(inverse::encode_answer(a));
+  ASSERT_EQ(b.experiments.size(), 2u);
+  EXPECT_EQ(b.experiments[0].experiment, "drag");
+  ASSERT_EQ(b.experiments[0].values.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(std::memcmp(&b.experiments[0].values[i], &a.experiments[0].values[i], sizeof(double)), 0) << i;
+  EXPECT_FALSE(b.experiments[1].ok);
+  ASSERT_EQ(b.runs.size(), 1u);
+  EXPECT_TRUE(b.runs[0].retry);
+  ASSERT_EQ(b.failures.size(), 1u);
+  EXPECT_EQ(b.failures[0].message, "diverged");
+  EXPECT_THROW(inverse::decode_fe_answer(""), std::runtime_error);
+  EXPECT_THROW(inverse::decode_fe_answer(inverse::fe_evaluation_job("drag", {})), std::runtime_error);
+  EXPECT_EQ(inverse::decode_fe_answer(inverse::failed_fe_answer("killed by signal 9")).error, "killed by signal 9");
+}
