@@ -261,6 +261,7 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
     tp.gamma_ref = combine(tp.dN, X).dot(combine(tp.N, D));
   }
   sections_.assign(4, ShellSection(law, rule, thickness));
+  for (ShellSection& sec : sections_) sec.set_layer_tangents(options_.layer_tangents);
 }
 
 ShellQ4::TransverseShear ShellQ4::transverse_shear(const NodeVectors& x, const NodeVectors& d) const {

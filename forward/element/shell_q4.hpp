@@ -42,6 +42,9 @@ struct ShellOptions {
   // the membrane patch test and the rank (the normal strains still see the hourglass modes).
   bool centre_membrane_shear = true;
   Eigen::Vector3d material_axis = Eigen::Vector3d::UnitX();  // rolling direction
+  // false: residuals alone skip the layers' consistent tangents (ShellSection::set_layer_tangents;
+  // explicit runs assemble no tangent).
+  bool layer_tangents = true;
 };
 
 using Vec24 = Eigen::Matrix<double, 24, 1>;

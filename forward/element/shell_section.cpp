@@ -53,7 +53,8 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
     // The consistent tangent even for a residual alone: commit() keeps it for the next
     // increment's start (below), so a converged iterate assembled without the element tangent
     // (NewtonSolver::increment) leaves the same state as one assembled with it.
-    const material::UpdateResult r = points_[l].update(d_eps, &ct);
+    const bool with_ct = keep_tangents_ || tangent != nullptr;
+    const material::UpdateResult r = points_[l].update(d_eps, with_ct ? &ct : nullptr);
     if (!r.ok()) {
       status.ok = false;
       status.layer = static_cast<int>(l);
@@ -63,8 +64,10 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
     }
     // Start of an increment (no strain change beyond round-off): the last converged
     // consistent tangent instead of the elastic one.
-    if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_[l].cwiseAbs().maxCoeff())) ct = tangent_[l];
-    tangent_trial_[l] = ct;
+    if (with_ct) {
+      if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_[l].cwiseAbs().maxCoeff())) ct = tangent_[l];
+      tangent_trial_[l] = ct;
+    }
     const Vec3& t = points_[l].trial().stress;
     const Vec3 s = ls.first.transpose() * t;
     if (resultant) {

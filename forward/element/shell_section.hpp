@@ -55,6 +55,9 @@ class ShellSection {
   SectionStatus update(const Vec3& e, const Vec3& kappa, Vec6* resultant, Mat6* tangent);
   void commit();
   void revert();
+  // false: a residual alone leaves the layers' consistent tangents out (explicit runs, where no
+  // tangent is ever assembled); the committed tangent is then stale. true by default.
+  void set_layer_tangents(bool keep) { keep_tangents_ = keep; }
   // Committed state for checkpoints (forward/io/binary_archive.hpp), bit-exact: thickness,
   // membrane strain, and per layer the material state, log strain and consistent tangent.
   // load_state resets the trial state to it; io::ArchiveError on a layer-count mismatch.
@@ -73,6 +76,7 @@ class ShellSection {
  private:
   const ThicknessRule* rule_;
   double h0_, h_;
+  bool keep_tangents_ = true;
   Eigen::Matrix3d compliance_;  // inverse of the law's plane-stress elastic matrix
   std::vector<material::MaterialPoint<double, 3>> points_;
   std::vector<Vec3> eps_, eps_trial_;  // layer log strains (committed, trial)

@@ -18,9 +18,10 @@ class ShellModel;
 struct ModelEnergies {
   double external_work = 0.0, elastic = 0.0, plastic = 0.0, transverse_shear = 0.0;
   double contact_stored = 0.0, friction_dissipation = 0.0, contact_offset_release = 0.0, kinetic = 0.0;
+  double damping = 0.0;  // work of an explicit run's damping forces (0 for implicit runs)
   double internal() const { return elastic + plastic + transverse_shear; }
   double balance_error() const {
-    return external_work - internal() - contact_stored - friction_dissipation - contact_offset_release - kinetic;
+    return external_work - internal() - contact_stored - friction_dissipation - contact_offset_release - kinetic - damping;
   }
 };
 

@@ -14,8 +14,10 @@ namespace spifit::scene {
 
 class EnergyLog : public RunObserver {
  public:
-  // comment: the first line of energies.csv, "# ..." without the newline.
-  EnergyLog(std::string comment, const RunFiles& files);
+  // comment: the first line of energies.csv, "# ..." without the newline. dynamic: an explicit
+  // run's log, with the kinetic energy and the damping's work as two more columns before the
+  // balance error.
+  EnergyLog(std::string comment, const RunFiles& files, bool dynamic = false);
   const io::Series& table() const { return table_; }
   // The account after the last increment (all zero before the first).
   const model::ModelEnergies& last() const { return last_; }
@@ -31,6 +33,7 @@ class EnergyLog : public RunObserver {
   const RunFiles& files_;
   io::Series table_;
   model::ModelEnergies last_;
+  bool dynamic_ = false;
 };
 
 }  // namespace spifit::scene

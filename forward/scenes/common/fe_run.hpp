@@ -17,6 +17,7 @@
 #include "forward/scenes/common/run_observer.hpp"
 #include "forward/scenes/common/run_status.hpp"
 #include "forward/solver/dof_constraints.hpp"
+#include "forward/solver/explicit_options.hpp"
 #include "forward/solver/newton_solver.hpp"
 #include "forward/toolpath/tool_path.hpp"
 
@@ -25,6 +26,7 @@
 #include <atomic>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +59,11 @@ struct FeRunSetup {
   // Supports and ties on the model's DOFs, finalised (the model's rotation frames set in it).
   std::function<solver::DofConstraints(model::ShellModel&)> constraints;
   solver::NewtonOptions newton;
+  // The explicit scheme instead of the Newton solver (fe_run_explicit.cpp): its options, and the
+  // sheet's density [t/mm^3]. Output points every newton.initial_increment of the load factor
+  // and at the marks; no checkpoints.
+  std::optional<solver::ExplicitOptions> explicit_scheme;
+  double density = 2.7e-9;
   std::vector<Mark> marks;  // by increasing travel
   FeOutputOptions output;
   bool progress_every_increment = false;  // a progress line per increment (else marks only)
@@ -100,6 +107,9 @@ struct FeRunOutcome {
   int resumed_at_mark = -1;               // marks reached at the checkpoint a resumed run started from
   CheckpointRecord checkpoints;
   double wall_seconds = 0.0;
+  // Explicit runs: steps, time step, mass scaling and what it added, the time-step bound's
+  // element (summary.json "explicit"); null for implicit runs.
+  nlohmann::json dynamics;
   bool ok() const { return status == RunStatus::ok; }
 };
 
@@ -140,7 +150,8 @@ class FeRun {
   std::unique_ptr<solver::DofConstraints> constraints_;
   std::unique_ptr<solver::NewtonSolver> solver_;
   std::vector<std::unique_ptr<RunObserver>> observers_;
-  class Stepper;  // the per-increment bookkeeping (fe_run.cpp)
+  class Stepper;  // the per-increment bookkeeping (fe_run_stepper.hpp)
+  FeRunOutcome run_explicit(const nlohmann::json& head);
 };
 
 }  // namespace spifit::scene

@@ -50,6 +50,10 @@ void add_fe_run_summary(nlohmann::json& j, const FeRunOutcome& run, const ToolFo
                       {"bytes", run.checkpoints.bytes},
                       {"write_seconds", run.checkpoints.write_seconds}};
   if (run.resumed_at_mark >= 0) j["resumed_at_mark"] = run.resumed_at_mark;
+  if (!run.dynamics.is_null()) {
+    j["explicit"] = run.dynamics;
+    j["energies"]["damping"] = en.damping;
+  }
 }
 
 }  // namespace spifit::scene

@@ -12,7 +12,8 @@ void ForceLog::after_increment(const IncrementView& v) {
   s.travel = v.travel;
   s.time = v.time;
   s.centre = v.tool.tool().centre;
-  const Eigen::Vector3d f = v.tool.force();
+  // An explicit run's force: filtered over the output interval (the instantaneous one rings).
+  const Eigen::Vector3d f = v.dynamics ? v.dynamics->filtered_tool_force : v.tool.force();
   s.force = format_.whole ? format_.whole(f) : f;
   s.penetration = v.tool.summary().max_penetration;
   s.surface_penetration = v.tool.surface_penetration(v.model);

@@ -6,6 +6,8 @@
 #include "forward/scenes/common/progress.hpp"
 #include "forward/solver/newton_solver.hpp"
 
+#include <Eigen/Core>
+
 #include <string>
 
 namespace spifit::io {
@@ -29,6 +31,19 @@ struct Mark {
   int index = 0;        // position in the scene's list of marks
 };
 
+// What an explicit run adds at an output point (the "increments" of an explicit run are its
+// output intervals): the steps, the kinetic energy and the damping's work, and the tool force
+// filtered over the interval (the instantaneous force of an explicit run rings with the
+// sheet's vibrations; fe_run_explicit.cpp, IntervalForceFit).
+struct DynamicsView {
+  int steps = 0;               // in this interval
+  long total_steps = 0;
+  double time_step = 0.0;      // s
+  double kinetic = 0.0;        // N mm
+  double damping_work = 0.0;   // N mm, so far
+  Eigen::Vector3d filtered_tool_force = Eigen::Vector3d::Zero();  // BY the sheet ON the tool at the output point [N]
+};
+
 // The committed state after an increment, as observers see it.
 struct IncrementView {
   const solver::IncrementReport& report;
@@ -40,6 +55,7 @@ struct IncrementView {
   const model::ShellModel& model;
   const model::ToolContact& tool;
   const ProgressSink& progress;
+  const DynamicsView* dynamics;  // explicit runs; null for implicit ones
 };
 
 // Why an observer is asked to write its files: after an increment, a second or more after its

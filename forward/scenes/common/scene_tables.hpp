@@ -63,9 +63,9 @@ solver::NewtonOptions tool_newton_options(const Scene& s, double length) {
   return o;
 }
 
-// The [solver] fields of a tool scene as summary.json shows them.
+// The Newton keys of [solver] (tool_solver_json).
 template <typename Scene>
-nlohmann::json tool_solver_json(const Scene& s) {
+nlohmann::json tool_newton_json(const Scene& s) {
   return {{"travel_per_increment", s.travel_per_increment},
           {"max_iterations", s.max_iterations},
           {"line_search", s.line_search},
@@ -77,6 +77,31 @@ nlohmann::json tool_solver_json(const Scene& s) {
           {"stabilisation", s.stabilisation},
           {"tangent", to_string(s.tangent)},
           {"symmetrised_tangent", symmetrised_tangent(s.tangent, s.contact.friction)}};
+}
+
+// The explicit scheme's options of a tool scene, none for an implicit one.
+template <typename Scene>
+std::optional<solver::ExplicitOptions> tool_explicit_options(const Scene& s) {
+  if (!s.explicit_scheme) return std::nullopt;
+  return s.explicit_options;
+}
+
+// The [solver] fields of a tool scene as summary.json shows them.
+template <typename Scene>
+nlohmann::json tool_solver_json(const Scene& s) {
+  nlohmann::json j = tool_newton_json(s);
+  j["scheme"] = s.explicit_scheme ? "explicit" : "implicit";
+  if (s.explicit_scheme) {
+    const solver::ExplicitOptions& o = s.explicit_options;
+    j["mass_scaling"] = o.mass_scaling;
+    j["rotational_mass_scaling"] = o.rotational_scaling;
+    j["target_time_step"] = o.target_time_step;
+    j["time_scaling"] = o.time_scaling;
+    j["damping"] = o.damping;
+    j["time_step_safety"] = o.safety;
+    j["max_steps"] = o.max_steps;
+  }
+  return j;
 }
 
 // The output options of a tool scene (any type with the [output] fields of tool_scene_inputs.hpp).

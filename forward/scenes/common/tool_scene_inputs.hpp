@@ -33,6 +33,35 @@ void add_contact_inputs(io::InputTable<Scene>& t) {
           }});
 }
 
+// The explicit scheme's keys of [solver] (solver::ExplicitOptions) on the fields explicit_scheme
+// and explicit_options.
+template <typename Scene>
+void add_explicit_inputs(io::InputTable<Scene>& t) {
+  using io::Range;
+  t.text({"solver.scheme", {}, "", {}, {"implicit", "explicit"},
+          "time integration: static Newton increments (implicit) or central differences with a lumped mass (explicit)", false},
+         {[](const Scene& s) -> std::string { return s.explicit_scheme ? "explicit" : "implicit"; },
+          [](Scene& s, const std::string& v) {
+            s.explicit_scheme = v == "explicit";
+            return true;
+          }});
+  t.real({"solver.mass_scaling", {}, "", Range::positive(), {}, "explicit: density factor of every element (the stable step grows with its square root)", true},
+         [](Scene& s) -> double& { return s.explicit_options.mass_scaling; });
+  t.real({"solver.rotational_mass_scaling", {}, "", Range::positive(), {}, "explicit: extra factor on the rotational inertia", true},
+         [](Scene& s) -> double& { return s.explicit_options.rotational_scaling; });
+  t.real({"solver.target_time_step", {}, "s", Range::non_negative(), {},
+          "explicit: selective mass scaling of the elements whose stable step is below this (0: off)", true},
+         [](Scene& s) -> double& { return s.explicit_options.target_time_step; });
+  t.real({"solver.time_scaling", {}, "", Range::positive(), {}, "explicit: the tool runs this many times faster than its feed", true},
+         [](Scene& s) -> double& { return s.explicit_options.time_scaling; });
+  t.real({"solver.damping", {}, "1/s", Range::non_negative(), {}, "explicit: mass-proportional damping coefficient", true},
+         [](Scene& s) -> double& { return s.explicit_options.damping; });
+  t.real({"solver.time_step_safety", {}, "", Range{0.0, 1.0, true, false}, {}, "explicit: time step over the smallest element bound", false},
+         [](Scene& s) -> double& { return s.explicit_options.safety; });
+  t.real({"solver.max_steps", {}, "", Range::at_least(1.0), {}, "explicit: a run needing more steps stops at start-up", false},
+         [](Scene& s) -> double& { return s.explicit_options.max_steps; });
+}
+
 template <typename Scene>
 void add_solver_inputs(io::InputTable<Scene>& t) {
   using io::Range;
@@ -69,6 +98,7 @@ void add_solver_inputs(io::InputTable<Scene>& t) {
             [](Scene& s) -> bool& { return s.estimate_next_correction; });
   t.real({"solver.stabilisation", {}, "", Range::closed(0.0, 1.0), {}, "damping of an increment failing at the minimum increment (0: off)", false},
          [](Scene& s) -> double& { return s.stabilisation; });
+  add_explicit_inputs(t);
 }
 
 // [tool] radius, feed, spin on the fields `radius`, feed and spin.

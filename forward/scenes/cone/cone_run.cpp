@@ -131,6 +131,8 @@ FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
     f.marks.push_back({c.end, "stage " + std::to_string(c.stage) + " contour " + std::to_string(c.contour), static_cast<int>(k)});
   }
   f.output = tool_output_options(scene);
+  f.explicit_scheme = tool_explicit_options(scene);
+  f.density = scene.card.density;
   return f;
 }
 
@@ -163,8 +165,10 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   auto& contours = run.add_observer(std::make_unique<ConeContourLog>(scene.name, track, force, run.files()));
   auto& energy = run.add_observer(std::make_unique<EnergyLog>(
       "# spifit cone scene " + scene.name + ": energy account of the (pie) model after each increment (model::ModelEnergies), N mm; "
-      "external work = the tool's and its copies' work on the sheet (trapezoidal rule); kinetic energy 0 (static implicit); "
-      "balance_error = external_work - the other columns", run.files()));
+      "external work = the tool's and its copies' work on the sheet (trapezoidal rule); " +
+      std::string(scene.explicit_scheme ? "explicit: kinetic energy and damping work in their columns; "
+                                        : "kinetic energy 0 (static implicit); ") +
+      "balance_error = external_work - the other columns", run.files(), scene.explicit_scheme));
   auto& observables = run.add_observer(std::make_unique<ConeObservableLog>(scene, run.model(), track, run.files()));
   run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
 

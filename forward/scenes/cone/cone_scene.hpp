@@ -11,6 +11,7 @@
 #include "forward/model/shell_model.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
 #include "forward/scenes/cone/cone_observables.hpp"
+#include "forward/solver/explicit_options.hpp"
 #include "forward/solver/newton_solver.hpp"
 #include "forward/toolpath/cone_path.hpp"
 
@@ -74,6 +75,9 @@ struct ConeScene {
   double stabilisation = 0.0;
   std::optional<solver::LinearSolverKind> linear_solver;
   FrictionTangent tangent = FrictionTangent::automatic;  // [solver] tangent (scene_tables.hpp)
+  // [solver] scheme = "explicit" and its keys (tool_scene_inputs.hpp, add_explicit_inputs).
+  bool explicit_scheme = false;
+  solver::ExplicitOptions explicit_options;
   // Output.
   int vtu_every = 0;
   int checkpoint_every = 1;  // completed contours between checkpoints (DIR/checkpoint/state.bin); 0: none

@@ -57,6 +57,8 @@ FeRunSetup forming_setup(const FormingScene& s) {
   for (const Mark& m : f.marks)
     if (m.travel < length) f.newton.restarts.push_back(m.travel / length);
   f.output = tool_output_options(s);
+  f.explicit_scheme = tool_explicit_options(s);
+  f.density = s.card.density;
   f.progress_every_increment = true;
   return f;
 }
@@ -122,8 +124,9 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   auto& force = run.add_observer(std::make_unique<ForceLog>(force_format(scene), run.files()));
   auto& energy = run.add_observer(std::make_unique<EnergyLog>(
       "# spifit " + scene.kind + " scene " + scene.name + ": energy account of the model after each increment (model::ModelEnergies), N mm; "
-      "external work = the tool's work on the sheet (trapezoidal rule; a half model: on the half); kinetic energy 0 (static implicit); "
-      "balance_error = external_work - the other columns", run.files()));
+      "external work = the tool's work on the sheet (trapezoidal rule; a half model: on the half); " +
+      std::string(scene.explicit_scheme ? "explicit: kinetic energy and damping work in their columns; " : "kinetic energy 0 (static implicit); ") +
+      "balance_error = external_work - the other columns", run.files(), scene.explicit_scheme));
   auto& sections = run.add_observer(std::make_unique<PathSectionLog>(scene.sections, scene.name, run.files()));
   run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
 

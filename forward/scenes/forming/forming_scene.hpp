@@ -8,6 +8,7 @@
 #include "forward/material/material_card.hpp"
 #include "forward/mesh/mesh.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
+#include "forward/solver/explicit_options.hpp"
 #include "forward/solver/newton_solver.hpp"
 
 #include <optional>
@@ -52,6 +53,9 @@ struct FormingScene {
   double stabilisation = 0.0;             // NewtonOptions: damping of an increment failing at the minimum increment
   std::optional<solver::LinearSolverKind> linear_solver;
   FrictionTangent tangent = FrictionTangent::automatic;  // [solver] tangent (scene_tables.hpp)
+  // [solver] scheme = "explicit" and its keys (tool_scene_inputs.hpp, add_explicit_inputs).
+  bool explicit_scheme = false;
+  solver::ExplicitOptions explicit_options;
   // Output.
   int vtu_every = 0;
   std::vector<std::string> sections;  // path point names where the y = 0 section is written

@@ -1,0 +1,138 @@
+#include "forward/model/explicit_mass.hpp"
+
+#include "forward/model/shell_model.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace spifit::model {
+namespace {
+
+// Two unit vectors normal to d (the rotations that bend; the third, about d, is drilling).
+Eigen::Matrix<double, 3, 2> bending_axes(const Eigen::Vector3d& d) {
+  const Eigen::Vector3d a = std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  const Eigen::Vector3d t1 = d.cross(a).normalized();
+  Eigen::Matrix<double, 3, 2> b;
+  b.col(0) = t1;
+  b.col(1) = d.cross(t1);
+  return b;
+}
+
+// Largest frequency squared of element e: its tangent on the 5 non-drilling DOFs per node over
+// its own lumped mass (translational m, rotational inertia i per node).
+double element_omega_squared(ShellModel& model, int e, double m, double i) {
+  Eigen::VectorXd re;
+  Eigen::MatrixXd ke;
+  const solver::ElementEvaluation ev = model.evaluate_element(e, &re, &ke);
+  if (!ev.ok) throw std::invalid_argument("explicit mass: " + ev.where + ": " + ev.reason);
+  const auto& q = model.mesh().quads[static_cast<std::size_t>(e)];
+  Eigen::Matrix<double, 24, 20> p = Eigen::Matrix<double, 24, 20>::Zero();
+  for (int a = 0; a < 4; ++a) {
+    const int n = q[static_cast<std::size_t>(a)];
+    p.block<3, 3>(6 * a, 5 * a).setIdentity();
+    if (model.has_rotation_frame(n)) {
+      p.block<2, 2>(6 * a + 3, 5 * a + 3).setIdentity();  // frame components t1, t2; the third is the normal
+    } else {
+      p.block<3, 2>(6 * a + 3, 5 * a + 3) = bending_axes(model.director(n));
+    }
+  }
+  Eigen::Matrix<double, 20, 20> k = p.transpose() * ke * p;
+  Eigen::Matrix<double, 20, 1> w;
+  for (int a = 0; a < 4; ++a) {
+    w.segment<3>(5 * a).setConstant(1.0 / std::sqrt(m));
+    w.segment<2>(5 * a + 3).setConstant(1.0 / std::sqrt(i));
+  }
+  const Eigen::Matrix<double, 20, 20> s = w.asDiagonal() * (0.5 * (k + k.transpose())) * w.asDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, 20, 20>> eig(s, Eigen::EigenvaluesOnly);
+  return std::max(0.0, eig.eigenvalues().maxCoeff());
+}
+
+}  // namespace
+
+double element_length(const ShellModel& model, int e) {
+  const auto& q = model.mesh().quads[static_cast<std::size_t>(e)];
+  const auto& x = model.positions();
+  const Eigen::Vector3d& a = x[static_cast<std::size_t>(q[0])];
+  const Eigen::Vector3d& b = x[static_cast<std::size_t>(q[1])];
+  const Eigen::Vector3d& c = x[static_cast<std::size_t>(q[2])];
+  const Eigen::Vector3d& d = x[static_cast<std::size_t>(q[3])];
+  const double area = 0.5 * (c - a).cross(d - b).norm();
+  return area / std::max((c - a).norm(), (d - b).norm());
+}
+
+std::string describe_element(const ShellModel& model, int e) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int n : model.mesh().quads[static_cast<std::size_t>(e)]) c += 0.25 * model.position(n);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "element %d (centre %.4g, %.4g, %.4g mm; length %.4g mm, thickness %.4g mm)", e, c.x(), c.y(), c.z(),
+                element_length(model, e), model.element_thickness(e));
+  return buf;
+}
+
+ExplicitMass explicit_mass(ShellModel& model, const ExplicitMassInputs& in) {
+  if (!(in.density > 0.0 && std::isfinite(in.density))) throw std::invalid_argument("explicit mass: density must be > 0");
+  if (const std::string why = in.options.validate(); !why.empty()) throw std::invalid_argument("explicit scheme: " + why);
+  const solver::ExplicitOptions& o = in.options;
+  const int ne = model.num_elements();
+  ExplicitMass out;
+  out.diagonal = Eigen::VectorXd::Zero(model.num_dofs());
+  out.element_step.assign(static_cast<std::size_t>(ne), 0.0);
+  out.element_length.assign(static_cast<std::size_t>(ne), 0.0);
+  out.element_factor.assign(static_cast<std::size_t>(ne), o.mass_scaling);
+  std::vector<double> unscaled(static_cast<std::size_t>(ne), 0.0);
+  const double t = model.initial_thickness();
+  model.revert();  // evaluate at the committed state
+  for (int e = 0; e < ne; ++e) {
+    const double area = model.element(e).reference_area();
+    const double m = in.density * t * area / 4.0;                                       // eq. 6.61, per node
+    const double i = o.rotational_scaling * m * std::max(t * t / 12.0, area / 18.0);    // eq. 6.62
+    const double omega2 = element_omega_squared(model, e, m, i) + in.contact_stiffness / (in.density * t);
+    unscaled[static_cast<std::size_t>(e)] = omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
+    out.element_length[static_cast<std::size_t>(e)] = element_length(model, e);
+  }
+  model.revert();
+  double smallest = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < ne; ++e) {
+    const auto k = static_cast<std::size_t>(e);
+    double f = o.mass_scaling;
+    const double step = unscaled[k] * std::sqrt(f);
+    if (o.target_time_step > 0.0 && step < o.target_time_step) {
+      f *= (o.target_time_step / step) * (o.target_time_step / step);
+      ++out.scaled_elements;
+    }
+    out.element_factor[k] = f;
+    out.element_step[k] = unscaled[k] * std::sqrt(f);
+    if (out.element_step[k] < smallest) {
+      smallest = out.element_step[k];
+      out.smallest_element = e;
+    }
+    const double area = model.element(e).reference_area();
+    const double m = in.density * t * area / 4.0;
+    const double i = o.rotational_scaling * m * std::max(t * t / 12.0, area / 18.0);
+    out.mass += 4.0 * m;
+    out.added_mass += 4.0 * m * (f - 1.0);
+    for (int n : model.mesh().quads[k]) {
+      for (int c = 0; c < 3; ++c) out.diagonal(ShellModel::dof(n, c)) += f * m;
+      for (int c = 3; c < 6; ++c) out.diagonal(ShellModel::dof(n, c)) += f * i;
+    }
+  }
+  out.smallest_unscaled_step = unscaled[static_cast<std::size_t>(out.smallest_element)];
+  out.time_step = o.safety * smallest;
+  return out;
+}
+
+double current_time_step(const ShellModel& model, const ExplicitMass& mass, double safety) {
+  double step = std::numeric_limits<double>::infinity();
+  for (int e = 0; e < model.num_elements(); ++e) {
+    const auto k = static_cast<std::size_t>(e);
+    step = std::min(step, mass.element_step[k] * element_length(model, e) / mass.element_length[k]);
+  }
+  return safety * step;
+}
+
+}  // namespace spifit::model

@@ -1,0 +1,88 @@
+#pragma once
+// Explicit dynamics (docs/design/explicit.md; thesis §5.1): central differences in the
+// velocity-Verlet form of thesis eqs. 5.2-5.5 with a diagonal mass matrix,
+//   v(n+1/2) = v(n) + dt/2 a(n),   u(n+1) = u(n) + dt v(n+1/2),
+//   a(n+1) = M^-1 (f_ext - f_int)(u(n+1)) - c v(n+1/2),   v(n+1) = v(n+1/2) + dt/2 a(n+1),
+// on the reduced unknowns of the constraints (tied DOFs share their masters' velocity; the
+// reduced mass is diag(T^T M T)), over the same NonlinearProblem the Newton solver uses: every
+// step moves the load factor (the tool), evaluates the element residuals at the new
+// configuration (integrated from the last step's states, which are committed every step) and
+// commits. The load factor runs from lambda_start to lambda_end over `duration` seconds; the
+// run stops exactly at every output point and calls back there.
+#include "forward/solver/dof_constraints.hpp"
+#include "forward/solver/explicit_options.hpp"
+#include "forward/solver/nonlinear_problem.hpp"
+
+#include <Eigen/Core>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace spifit::solver {
+
+// The state at an output point.
+struct ExplicitInterval {
+  int index = 0;               // output points so far, this one included
+  double lambda = 0.0;         // load factor reached
+  double lambda_before = 0.0;  // at the previous output point
+  int steps = 0;               // steps since the previous output point
+  long total_steps = 0;
+  double time = 0.0;           // simulated time [s]
+  double time_step = 0.0;      // the steps' size in this interval [s]
+  double kinetic = 0.0;        // 1/2 v M v [N mm]
+  double damping_work = 0.0;   // work of the damping forces so far [N mm]
+};
+
+struct ExplicitSummary {
+  bool completed = false;      // reached lambda_end
+  double lambda = 0.0;
+  std::string message;         // why it stopped early (where and when)
+  long steps = 0, cut_steps = 0;
+  double time = 0.0;
+  double min_step = 0.0, max_step = 0.0;
+};
+
+struct ExplicitSchedule {
+  double lambda_start = 0.0, lambda_end = 1.0;
+  double duration = 1.0;          // simulated seconds for lambda 0 -> 1
+  double output_interval = 0.1;   // of the load factor between output points
+  std::vector<double> stops;      // further load factors that are output points (marks)
+};
+
+class ExplicitSolver {
+ public:
+  // mass: per DOF of the problem (translations and rotations). std::invalid_argument when a
+  // reduced unknown gets no mass, or the options are invalid.
+  ExplicitSolver(NonlinearProblem& problem, const DofConstraints& constraints, const Eigen::VectorXd& mass, ExplicitOptions options);
+
+  // Reduced velocities (initial conditions of tests; zero by default).
+  Eigen::VectorXd& velocity() { return v_; }
+  const Eigen::VectorXd& reduced_mass() const { return m_; }
+  double kinetic_energy() const { return 0.5 * v_.dot(m_.cwiseProduct(v_)); }
+
+  // Current stable step [s] (re-estimated every options.recheck_every steps; the steps of an
+  // interval are never longer than the bound at its start).
+  using StepBound = std::function<double()>;
+  // After every committed step, with its size [s].
+  using AfterStep = std::function<void(double dt)>;
+  // At every output point; false stops the run.
+  using Callback = std::function<bool(const ExplicitInterval&)>;
+  ExplicitSummary run(const ExplicitSchedule& schedule, const StepBound& bound, const AfterStep& after_step, const Callback& callback);
+
+ private:
+  NonlinearProblem& problem_;
+  const DofConstraints& constraints_;
+  ExplicitOptions options_;
+  Eigen::VectorXd m_, v_, a_;     // reduced mass, velocity, acceleration
+  std::vector<Eigen::VectorXd> re_;
+  std::vector<ElementEvaluation> ev_;
+  double damping_work_ = 0.0;
+  // Residual (internal - external) reduced at the problem's trial configuration and lambda;
+  // false with the failure when an element fails.
+  bool residual(double lambda, Eigen::VectorXd* r, ElementEvaluation* failure);
+  // One step of dt from lambda0 to lambda1: false (problem reverted) when an element fails.
+  bool step(double dt, double lambda0, double lambda1, ElementEvaluation* failure);
+};
+
+}  // namespace spifit::solver
