@@ -27,6 +27,11 @@ struct ContactOptions {
   // facet kinks the tool meets when it slides over element edges.
   enum class Surface { flat, phong };
   Surface surface = Surface::flat;
+  // How the explicit scheme makes the contact: this penalty (penalty), or the Moving Spherical
+  // Tool's forces chosen for zero penetration and exact Coulomb friction (mst, thesis §5.3;
+  // model/moving_sphere_contact.hpp). Implicit runs take penalty only.
+  enum class Method { penalty, mst };
+  Method method = Method::penalty;
   std::string validate() const;      // empty when valid
 };
 

@@ -10,17 +10,24 @@ struct AtanhRatio {
   double f, df, d2f;
 };
 
-AtanhRatio atanh_ratio(double y) {
+// 1 / (2k + 1), k = 0 .. 16.
+constexpr double kSeries[17] = {1.0,        1.0 / 3.0,  1.0 / 5.0,  1.0 / 7.0,  1.0 / 9.0,  1.0 / 11.0, 1.0 / 13.0, 1.0 / 15.0, 1.0 / 17.0,
+                                1.0 / 19.0, 1.0 / 21.0, 1.0 / 23.0, 1.0 / 25.0, 1.0 / 27.0, 1.0 / 29.0, 1.0 / 31.0, 1.0 / 33.0};
+
+// derivatives: 0 (f alone), 1 (f, df) or 2 (f, df, d2f).
+AtanhRatio atanh_ratio(double y, int derivatives) {
   AtanhRatio r{};
   if (y < 0.05) {
-    // Series (Horner): the closed forms below cancel as y -> 0. 24 terms leave < 0.05^22 * 600.
-    constexpr int kTerms = 24;
+    // Series (Horner): the closed forms below cancel as y -> 0. The terms past the last kept
+    // one sum to below y^terms: 0.05^16 = 1.5e-21, (1e-3)^7 = 1e-21, (1e-6)^4 = 1e-24; the
+    // derivatives' truncations are within a factor 16 and 240 of that.
+    const int terms = y < 1e-6 ? 4 : y < 1e-3 ? 7 : 16;
     double f = 0.0, df = 0.0, d2f = 0.0;
-    for (int k = kTerms; k >= 0; --k) {
-      const double c = 1.0 / (2.0 * k + 1.0);
+    for (int k = terms; k >= 0; --k) {
+      const double c = kSeries[k];
       f = c + y * f;
-      if (k >= 1) df = k * c + y * df;
-      if (k >= 2) d2f = k * (k - 1) * c + y * d2f;
+      if (derivatives >= 1 && k >= 1) df = k * c + y * df;
+      if (derivatives >= 2 && k >= 2) d2f = k * (k - 1) * c + y * d2f;
     }
     r.f = f;
     r.df = df;
@@ -58,7 +65,7 @@ LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green, bool second)
   const double c11 = 1.0 + 2.0 * green(0), c22 = 1.0 + 2.0 * green(1), c12 = green(2);
   const double m = 0.5 * (c11 + c22), det = c11 * c22 - c12 * c12;
   const double y = 1.0 - det / (m * m);
-  const AtanhRatio f = atanh_ratio(y);
+  const AtanhRatio f = atanh_ratio(y, second ? 2 : 1);
   // y(m, D) and its derivatives (y_DD = 0).
   const double m2 = m * m, m3 = m2 * m;
   const double ym = 2.0 * det / m3, yd = -1.0 / m2, ymm = -6.0 * det / (m3 * m), ymd = 2.0 / m3;
@@ -91,6 +98,15 @@ LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green, bool second)
     out.second[static_cast<std::size_t>(i)] = s * (ha_i + cv[i] * hb + cross + cross.transpose());
   }
   return out;
+}
+
+Eigen::Vector3d log_strain_value(const Eigen::Vector3d& green) {
+  const double c11 = 1.0 + 2.0 * green(0), c22 = 1.0 + 2.0 * green(1), c12 = green(2);
+  const double m = 0.5 * (c11 + c22), det = c11 * c22 - c12 * c12;
+  const double y = 1.0 - det / (m * m);
+  const double f = atanh_ratio(y, 0).f;
+  const double a = 0.5 * std::log(det) - f, b = f / m;  // as in log_strain_with_derivatives: the same bits
+  return {0.5 * (a + b * c11), 0.5 * (a + b * c22), b * c12};
 }
 
 }  // namespace spifit::element

@@ -64,5 +64,7 @@ struct LogStrain {
 // Value and first and second derivatives in closed form (second = false: `second` left zero, for
 // a residual without tangent). Requires det C > 0 (checked by callers).
 LogStrain log_strain_with_derivatives(const Eigen::Vector3d& green, bool second = true);
+// The value alone, bit for bit that of log_strain_with_derivatives (the section's commit).
+Eigen::Vector3d log_strain_value(const Eigen::Vector3d& green);
 
 }  // namespace spifit::element

@@ -110,7 +110,7 @@ void ShellSection::commit() {
   if (h_new != h_) {
     h_ = h_new;
     for (std::size_t l = 0; l < points_.size(); ++l)
-      eps_[l] = eps_trial_[l] = log_strain_with_derivatives(e_trial_ + rule_->zeta[l] * 0.5 * h_ * kappa_trial_, false).value;
+      eps_[l] = eps_trial_[l] = log_strain_value(e_trial_ + rule_->zeta[l] * 0.5 * h_ * kappa_trial_);
   }
 }
 

@@ -95,6 +95,7 @@ void ToolContact::begin_increment(double lambda0, double lambda1) {
 }
 
 bool ToolContact::add(int e, const ElementConfiguration& c, element::Vec24* rp, element::Mat24* kp) {
+  if (passive_) return false;
   bool touched = false;
   for (std::size_t i = 0; i < tools_.size(); ++i)
     touched |= contact_->element(e, c.x, c.d, c.x0, c.d0, c.half_thickness, tools_[i], rp, kp, nullptr, static_cast<int>(i));

@@ -48,6 +48,9 @@ class ToolContact final : public ElementContribution {
   // element (ShellContact::surface_penetration) and never below the contact points' own.
   double surface_penetration(const ShellModel& model) const;
   double work() const { return work_; }  // the tools' work on the sheet so far [N mm]
+  // Passive: the tool moves and its geometry is there (surface_penetration) but it adds no
+  // force (the MST contact of an explicit run makes the contact instead).
+  void set_passive(bool passive) { passive_ = passive; }
 
   // ElementContribution
   std::string name() const override { return "tool_contact"; }
@@ -70,6 +73,7 @@ class ToolContact final : public ElementContribution {
   std::vector<double> copies_deg_;
   std::vector<Eigen::Matrix3d> rotations_{Eigen::Matrix3d::Identity()};  // one per tool: [0] = identity
   double work_ = 0.0;            // committed work of the tools on the sheet [N mm]
+  bool passive_ = false;
   double offset_release_ = 0.0;  // ModelEnergies::contact_offset_release [N mm]
   // Set by before_commit for after_commit: each tool's committed force, each element's thickness.
   std::vector<Eigen::Vector3d> force_before_;

@@ -73,6 +73,10 @@ bool ExplicitSolver::step(double dt, double lambda0, double lambda1, ElementEval
   problem_.accept_trial();
   problem_.commit(lambda1);
   a_ = -r.cwiseQuotient(m_) - options_.damping * vh;
+  if (contact_) {
+    const Eigen::VectorXd next = dt * (vh + dt * a_);  // the next step's increment without contact forces
+    a_ += constraints_.reduce(contact_(dt, lambda1 + (lambda1 - lambda0), next)).cwiseQuotient(m_);
+  }
   v_ = vh + 0.5 * dt * a_;
   damping_work_ += dt * options_.damping * vh.dot(m_.cwiseProduct(vh));
   return true;

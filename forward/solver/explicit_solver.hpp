@@ -70,6 +70,13 @@ class ExplicitSolver {
   using Callback = std::function<bool(const ExplicitInterval&)>;
   ExplicitSummary run(const ExplicitSchedule& schedule, const StepBound& bound, const AfterStep& after_step, const Callback& callback);
 
+  // Forces decided after each step for the next one (the Moving Spherical Tool contact, thesis
+  // §5.2): given the step size, the load factor the next step reaches and the reduced increment
+  // it would take without them, the forces on the model (full DOF vector), added to the
+  // acceleration of the step just taken. Set before run().
+  using ContactForces = std::function<Eigen::VectorXd(double dt, double lambda_next, const Eigen::VectorXd& next_increment)>;
+  void set_contact_forces(ContactForces f) { contact_ = std::move(f); }
+
  private:
   NonlinearProblem& problem_;
   const DofConstraints& constraints_;
@@ -78,6 +85,7 @@ class ExplicitSolver {
   std::vector<Eigen::VectorXd> re_;
   std::vector<ElementEvaluation> ev_;
   double damping_work_ = 0.0;
+  ContactForces contact_;
   // Residual (internal - external) reduced at the problem's trial configuration and lambda;
   // false with the failure when an element fails.
   bool residual(double lambda, Eigen::VectorXd* r, ElementEvaluation* failure);

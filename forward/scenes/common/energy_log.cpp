@@ -53,6 +53,7 @@ void EnergyLog::after_increment(const IncrementView& v) {
   if (v.dynamics) {
     last_.kinetic = v.dynamics->kinetic;
     last_.damping = v.dynamics->damping_work;
+    last_.external_work += v.dynamics->contact_work;
   }
   table_.add_row(energy_row(v.travel, last_, dynamic_));
 }

@@ -4,12 +4,14 @@
 // load factor, and the marks) with the tool force averaged over the interval.
 #include "forward/io/input_error.hpp"
 #include "forward/model/explicit_mass.hpp"
+#include "forward/model/moving_sphere_contact.hpp"
 #include "forward/scenes/common/fe_run.hpp"
 #include "forward/scenes/common/fe_run_stepper.hpp"
 #include "forward/solver/explicit_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace spifit::scene {
 namespace {
@@ -77,6 +79,17 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
     throw io::InputError(scene_file(setup_), "solver.mass_scaling", io::format_number(o.mass_scaling), buf);
   }
   solver::ExplicitSolver solver(*model_, *constraints_, mass.diagonal, o);
+  // The Moving Spherical Tool instead of the penalty: the tool stays for its geometry, without force.
+  std::unique_ptr<model::MovingSphereContact> mst;
+  if (setup_.contact.method == contact::ContactOptions::Method::mst) {
+    tool_->set_passive(true);
+    const toolpath::ToolPath& path = setup_.tool_path;
+    const LoadMap& map = setup_.load_map;
+    mst = std::make_unique<model::MovingSphereContact>(
+        *model_, *constraints_, solver.reduced_mass(), setup_.tool_radius, setup_.contact.friction,
+        [&path, &map](double lambda) { return path.at_distance(map.travel(lambda)); }, setup_.tool_copies_deg);
+    solver.set_contact_forces([&mst](double dt, double lambda_next, const Eigen::VectorXd& next) { return mst->forces(dt, lambda_next, next); });
+  }
 
   RunHeartbeat heartbeat(files_, head, control_.heartbeat_seconds);
   heartbeat.write();
@@ -90,14 +103,15 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
   for (const Mark& m : setup_.marks) schedule.stops.push_back(setup_.load_map.lambda(m.travel));
   IntervalForceFit fit;
   DynamicsView view;
-  const auto after_step = [&](double dt) { fit.add(dt, tool_->force()); };
+  const auto after_step = [&](double dt) { fit.add(dt, mst ? mst->tool_force() : tool_->force()); };
   const auto at_output = [&](const solver::ExplicitInterval& iv) {
     view.steps = iv.steps;
     view.total_steps = iv.total_steps;
     view.time_step = iv.time_step;
     view.kinetic = iv.kinetic;
     view.damping_work = iv.damping_work;
-    view.filtered_tool_force = fit.at_end(tool_->force());
+    view.filtered_tool_force = fit.at_end(mst ? mst->tool_force() : tool_->force());
+    view.contact_work = mst ? mst->statistics().work : 0.0;
     fit = IntervalForceFit{};
     solver::IncrementReport ir;
     ir.index = iv.index;
@@ -130,7 +144,18 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
                   {"smallest_unscaled_step", mass.smallest_unscaled_step},
                   {"kinetic", view.kinetic},
                   {"damping_work", view.damping_work},
-                  {"force_filter", "least-squares line through each output interval's steps, taken at the interval's end"}};
+                  {"force_filter", "least-squares line through each output interval's steps, taken at the interval's end"},
+                  {"contact", mst ? "mst" : "penalty"}};
+  if (mst) {
+    const model::MstStatistics& m = mst->statistics();
+    out.dynamics["mst"] = {{"solves", m.solves},
+                           {"state_iterations", m.iterations},
+                           {"unconverged_solves", m.unconverged},
+                           {"max_points", m.max_points},
+                           {"max_penetration", m.max_penetration},
+                           {"max_friction_over_mu_normal", m.max_friction_ratio},
+                           {"work_on_sheet", m.work}};
+  }
   return out;
 }
 

@@ -14,9 +14,11 @@ void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const 
   energies = energy_log.table();
   final_energies = energy_log.last();
   ripple = force_ripple(force.samples(), element_size);
+  // The penalty's contact points say nothing of the MST contact, which has none.
+  const bool penalty = contact.method == contact::ContactOptions::Method::penalty || run.dynamics.is_null();
   for (const std::string& w :
-       {contact::ShellContact::resolution_warning(force.max_penetration(), force.max_surface_penetration(), contact.points),
-        contact::ShellContact::penetration_warning(force.max_penetration(), thickness, contact.penalty), ripple_warning(ripple)})
+       {penalty ? contact::ShellContact::resolution_warning(force.max_penetration(), force.max_surface_penetration(), contact.points) : "",
+        penalty ? contact::ShellContact::penetration_warning(force.max_penetration(), thickness, contact.penalty) : "", ripple_warning(ripple)})
     if (!w.empty()) warnings.push_back(w);
 }
 

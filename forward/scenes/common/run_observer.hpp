@@ -41,6 +41,7 @@ struct DynamicsView {
   double time_step = 0.0;      // s
   double kinetic = 0.0;        // N mm
   double damping_work = 0.0;   // N mm, so far
+  double contact_work = 0.0;   // MST contact: the work of its forces on the sheet so far [N mm] (the external work)
   Eigen::Vector3d filtered_tool_force = Eigen::Vector3d::Zero();  // BY the sheet ON the tool at the output point [N]
 };
 

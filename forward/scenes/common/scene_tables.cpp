@@ -51,7 +51,8 @@ nlohmann::json contact_json(const contact::ContactOptions& c) {
   return {{"penalty", c.penalty},
           {"friction", c.friction},
           {"points", c.points},
-          {"surface", c.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"}};
+          {"surface", c.surface == contact::ContactOptions::Surface::phong ? "phong" : "flat"},
+          {"method", c.method == contact::ContactOptions::Method::mst ? "mst" : "penalty"}};
 }
 
 }  // namespace spifit::scene

@@ -79,6 +79,15 @@ nlohmann::json tool_newton_json(const Scene& s) {
           {"symmetrised_tangent", symmetrised_tangent(s.tangent, s.contact.friction)}};
 }
 
+// The check across [solver] and [contact] keys (empty: none): the MST contact needs the
+// explicit scheme.
+template <typename Scene>
+InputViolation scheme_violation(const Scene& s) {
+  if (s.contact.method == contact::ContactOptions::Method::mst && !s.explicit_scheme)
+    return {"contact.method", "\"mst\"", "the Moving Spherical Tool is a contact of the explicit scheme: set solver.scheme = \"explicit\""};
+  return {};
+}
+
 // The explicit scheme's options of a tool scene, none for an implicit one.
 template <typename Scene>
 std::optional<solver::ExplicitOptions> tool_explicit_options(const Scene& s) {

@@ -31,6 +31,13 @@ void add_contact_inputs(io::InputTable<Scene>& t) {
             s.contact.surface = v == "phong" ? contact::ContactOptions::Surface::phong : contact::ContactOptions::Surface::flat;
             return true;
           }});
+  t.text({"contact.method", {}, "", {}, {"penalty", "mst"},
+          "explicit scheme: penalty contact, or the Moving Spherical Tool (forces for zero penetration and exact Coulomb friction)", false},
+         {[](const Scene& s) -> std::string { return s.contact.method == contact::ContactOptions::Method::mst ? "mst" : "penalty"; },
+          [](Scene& s, const std::string& v) {
+            s.contact.method = v == "mst" ? contact::ContactOptions::Method::mst : contact::ContactOptions::Method::penalty;
+            return true;
+          }});
 }
 
 // The explicit scheme's keys of [solver] (solver::ExplicitOptions) on the fields explicit_scheme

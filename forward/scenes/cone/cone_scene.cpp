@@ -210,6 +210,7 @@ InputViolation cone_scene_error(const ConeScene& s) {
   if (!(s.mesh.ring_start < s.clamp_radius))
     return {"sheet.ring_start", format_number(s.mesh.ring_start), "must lie in [0, clamp_radius) (0: no circular layers)"};
   if (InputViolation v = stage_violation(s)) return v;
+  if (InputViolation v = scheme_violation(s)) return v;
   return mesh_violation(s);
 }
 

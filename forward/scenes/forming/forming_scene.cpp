@@ -129,6 +129,7 @@ InputViolation forming_scene_error(const FormingScene& s) {
   if (s.half && s.elements % 2 != 0)
     return {"sheet.elements", std::to_string(s.elements), "a half model needs an even number of elements across"};
   if (const InputViolation v = thickness_violation(s)) return v;
+  if (const InputViolation v = scheme_violation(s)) return v;
   // The tool must start outside the sheet and reach it.
   const double half_length = 0.5 * s.length;
   auto over_sheet = [&](const Eigen::Vector3d& tip) { return std::abs(tip.x()) < half_length && std::abs(tip.y()) < half_length; };
