@@ -1,6 +1,8 @@
 #include "forward/model/moving_sphere_contact.hpp"
 
+#include "forward/element/director.hpp"
 #include "forward/element/quad_shape.hpp"
+#include "forward/model/explicit_mass.hpp"
 #include "forward/model/shell_model.hpp"
 
 #include <Eigen/Dense>
@@ -15,9 +17,7 @@ namespace spifit::model {
 namespace {
 
 constexpr double kNeighbourhood = 1.5;  // s of thesis eq. 5.13
-constexpr int kMaxIterations = 30;      // state iterations of one solve
-
-enum class State { none, stick, slide };
+constexpr int kMaxSweeps = 200;         // projected Gauss-Seidel sweeps of one solve
 
 // Two unit vectors normal to n and to each other.
 void tangent_axes(const Eigen::Vector3d& n, Eigen::Vector3d* s, Eigen::Vector3d* t) {
@@ -49,12 +49,12 @@ Eigen::Vector2d closest_point(const element::NodeVectors& q, const Eigen::Vector
 struct MovingSphereContact::Point {
   int tool = 0, element = 0;
   Eigen::Vector4d shape;            // N_a at the point
+  Eigen::Vector3d position;         // predicted, without contact forces
+  double spacing = 0.0;             // the element's characteristic length
   std::array<int, 4> nodes{};
   Eigen::Vector3d n, s, t;          // unit normal (towards the tool centre) and tangents
   double gap = 0.0;                 // predicted, without contact forces
   Eigen::Vector2d slip = Eigen::Vector2d::Zero();  // s, t components of the slip correction that sticking needs
-  State state = State::none;
-  Eigen::Vector2d direction = Eigen::Vector2d::Zero();  // of the friction force while sliding
 };
 
 MovingSphereContact::MovingSphereContact(const ShellModel& model, const solver::DofConstraints& constraints, Eigen::VectorXd reduced_mass,
@@ -116,6 +116,16 @@ Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const
       for (const auto& term : constraints_.expansion(ShellModel::dof(node, k))) m(k) += term.coefficient * next_increment(term.reduced);
     return m;
   };
+  // Its director there: turned by the rotation part of the increment (in the node's frame for a
+  // framed node, rotation_frames.hpp).
+  const auto turned = [&](int node) {
+    Eigen::Vector3d r = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k)
+      for (const auto& term : constraints_.expansion(ShellModel::dof(node, 3 + k))) r(k) += term.coefficient * next_increment(term.reduced);
+    const Eigen::Vector3d& dn = d[static_cast<std::size_t>(node)];
+    if (model_.has_rotation_frame(node)) r = model_.rotation_frame(node, dn) * r;
+    return element::rotate_by_vector(dn, r);
+  };
   const double lambda_now = model_.load_factor();
   std::vector<Point> points;
   for (int tool = 0; tool < static_cast<int>(rotations_.size()); ++tool) {
@@ -133,7 +143,7 @@ Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const
       for (int a = 0; a < 4; ++a) {
         const auto n = static_cast<std::size_t>(q[static_cast<std::size_t>(a)]);
         now[static_cast<std::size_t>(a)] = x[n] + half * d[n];
-        pred[static_cast<std::size_t>(a)] = now[static_cast<std::size_t>(a)] + move(q[static_cast<std::size_t>(a)]);
+        pred[static_cast<std::size_t>(a)] = x[n] + move(q[static_cast<std::size_t>(a)]) + half * turned(q[static_cast<std::size_t>(a)]);
       }
       const Eigen::Vector2d z = closest_point(pred, c_next);
       Point p;
@@ -142,6 +152,8 @@ Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const
       p.shape = element::quad_shape(z.x(), z.y());
       for (int a = 0; a < 4; ++a) p.nodes[static_cast<std::size_t>(a)] = q[static_cast<std::size_t>(a)];
       const Eigen::Vector3d at = element::combine(p.shape, pred), at_now = element::combine(p.shape, now);
+      p.position = at;
+      p.spacing = element_length(model_, e);
       const Eigen::Vector3d to_centre = c_next - at;
       if (to_centre.norm() < 1e-12) continue;  // the surface through the tool centre: nothing sensible to do
       p.gap = to_centre.norm() - radius_;
@@ -157,6 +169,7 @@ Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const
     }
     // A point on an element's boundary is the same contact as the interior point of a neighbour
     // across that boundary (or as the same boundary point of another element): keep one.
+    std::vector<Point> kept;
     for (std::size_t i = 0; i < found.size(); ++i) {
       if (!found[i].interior) {
         bool owned = false;
@@ -182,7 +195,18 @@ Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const
         }
         if (owned) continue;
       }
-      points.push_back(found[i].p);
+      kept.push_back(found[i].p);
+    }
+    // Points closer than a quarter of an element to a deeper one are the same contact (the
+    // closest points of the elements around a node the tool sits on all lie near that node):
+    // kept apart, they make the system nearly singular and the contact hop between them.
+    std::sort(kept.begin(), kept.end(), [](const Point& a, const Point& b) { return a.gap < b.gap || (a.gap == b.gap && a.element < b.element); });
+    const std::size_t first = points.size();
+    for (const Point& p : kept) {
+      const bool near = std::any_of(points.begin() + static_cast<std::ptrdiff_t>(first), points.end(), [&](const Point& q) {
+        return (q.position - p.position).norm() < 0.25 * std::min(p.spacing, q.spacing);
+      });
+      if (!near) points.push_back(p);
     }
   }
   const int k = static_cast<int>(points.size());
@@ -220,86 +244,57 @@ Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const
         D.block<1, 3>(3 * i + 2, s) += w * p.t.transpose();
       }
     }
-    const Eigen::MatrixXd H = (dt * dt) * E * G * D.transpose();  // change of (n.dp, s.dp, t.dp) per unit (P, Fs, Ft)
-    for (Point& p : points) p.state = p.gap < 0.0 ? (friction_ > 0.0 ? State::stick : State::slide) : State::none;
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(3 * k);
+    // W: the change of (n.dp, s.dp, t.dp) of every point per unit force on the sheet along its
+    // own (n, s, t); symmetric, positive semi-definite.
+    const Eigen::MatrixXd W = (dt * dt) * E * G * E.transpose();
+    // The conditions of thesis Fig. 5.7 as a complementarity problem, solved by projected
+    // Gauss-Seidel: per point, the normal force P >= 0 that closes the gap (or none where the
+    // gap stays open), then the friction that cancels the slip, cut to the cone |F| <= mu P
+    // (sliding). Unlike switching the points' states all at once, the sweeps converge to the one
+    // solution when W is positive definite, so the contact does not hop between neighbouring
+    // points from one step to the next.
+    Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * k);  // force on the sheet along (n, s, t): (-P, F_s, F_t)
+    Eigen::VectorXd w_phi = Eigen::VectorXd::Zero(3 * k);
+    const auto apply = [&](int i, const Eigen::Vector3d& delta) {
+      if (delta.squaredNorm() == 0.0) return;
+      w_phi.noalias() += W.middleCols<3>(3 * i) * delta;
+      phi.segment<3>(3 * i) += delta;
+    };
     bool converged = false;
     int it = 0;
-    for (; it < kMaxIterations && !converged; ++it) {
-      // Points without contact carry no force: the system is that of the others.
-      std::vector<int> active;
-      for (int i = 0; i < k; ++i)
-        if (points[static_cast<std::size_t>(i)].state != State::none) active.push_back(i);
-      const int na = static_cast<int>(active.size());
-      Eigen::MatrixXd A = Eigen::MatrixXd::Zero(3 * na, 3 * na);
-      Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * na);
-      for (int r = 0; r < na; ++r) {
-        const int i = active[static_cast<std::size_t>(r)];
-        const Point& p = points[static_cast<std::size_t>(i)];
-        const auto take_row = [&](int row_a, int row_h) {
-          for (int c = 0; c < na; ++c) A.block<1, 3>(row_a, 3 * c) = H.block<1, 3>(row_h, 3 * active[static_cast<std::size_t>(c)]);
-        };
-        take_row(3 * r, 3 * i);
-        b(3 * r) = p.gap;
-        if (p.state == State::stick) {
-          take_row(3 * r + 1, 3 * i + 1);
-          take_row(3 * r + 2, 3 * i + 2);
-          b(3 * r + 1) = p.slip.x();
-          b(3 * r + 2) = p.slip.y();
-        } else {  // F_f = mu P along the last direction (eq. 5.30)
-          A(3 * r + 1, 3 * r + 1) = A(3 * r + 2, 3 * r + 2) = 1.0;
-          A(3 * r + 1, 3 * r) = -friction_ * p.direction.x();
-          A(3 * r + 2, 3 * r) = -friction_ * p.direction.y();
-        }
-      }
-      y.setZero();
-      if (na > 0) {
-        const Eigen::VectorXd ya = A.colPivHouseholderQr().solve(b);
-        for (int r = 0; r < na; ++r) y.segment<3>(3 * active[static_cast<std::size_t>(r)]) = ya.segment<3>(3 * r);
-      }
-      const Eigen::VectorXd change = H * y;
-      converged = true;
+    double scale = 0.0;  // of the forces, for the convergence test
+    for (; it < kMaxSweeps && !converged; ++it) {
+      double change = 0.0;
       for (int i = 0; i < k; ++i) {
-        Point& p = points[static_cast<std::size_t>(i)];
-        const double P = y(3 * i);
-        const Eigen::Vector2d F(y(3 * i + 1), y(3 * i + 2));
-        State next = p.state;
-        if (p.state == State::none) {
-          if (p.gap - change(3 * i) < -1e-9 * radius_) next = friction_ > 0.0 ? State::stick : State::slide;
-        } else if (P < 0.0) {
-          next = State::none;
-        } else if (p.state == State::stick && F.norm() > friction_ * P * (1.0 + 1e-9)) {
-          next = State::slide;
-          p.direction = F.normalized();
-        } else if (p.state == State::slide && friction_ > 0.0 && it < kMaxIterations / 3) {  // later: no way back, no cycling
-          const Eigen::Vector2d slip(change(3 * i + 1) - p.slip.x(), change(3 * i + 2) - p.slip.y());  // the point's slip against the tool
-          if (slip.dot(F) > 0.0) next = State::stick;
+        const Point& p = points[static_cast<std::size_t>(i)];
+        const Eigen::Matrix3d& Wii = W.block<3, 3>(3 * i, 3 * i);
+        if (!(Wii(0, 0) > 0.0)) continue;  // a point on clamped nodes only: nothing moves it
+        // Normal: the gap after the step is gap - (W phi)_n; P from closing it, never negative.
+        const double P_old = -phi(3 * i);
+        const double P = std::max(0.0, P_old + (w_phi(3 * i) - p.gap) / Wii(0, 0));
+        apply(i, Eigen::Vector3d(P_old - P, 0.0, 0.0));
+        // Tangential: the slip against the tool is (W phi)_{s,t} - slip needed; sticking cancels it.
+        Eigen::Vector2d F = phi.segment<2>(3 * i + 1);
+        const Eigen::Vector2d F_old = F;
+        if (friction_ > 0.0 && P > 0.0) {
+          const Eigen::Vector2d slip = w_phi.segment<2>(3 * i + 1) - p.slip;
+          F -= Wii.block<2, 2>(1, 1).ldlt().solve(slip);
+          const double cap = friction_ * P;
+          if (F.norm() > cap) F *= cap / F.norm();
+        } else {
+          F.setZero();
         }
-        if (next != p.state) {
-          if (next == State::slide && p.direction.squaredNorm() == 0.0) p.direction = F.squaredNorm() > 0.0 ? F.normalized() : Eigen::Vector2d(1.0, 0.0);
-          p.state = next;
-          converged = false;
-        }
+        apply(i, Eigen::Vector3d(0.0, F.x() - F_old.x(), F.y() - F_old.y()));
+        change = std::max({change, std::abs(P - P_old), (F - F_old).norm()});
+        scale = std::max({scale, P, F.norm()});
       }
+      converged = change <= 1e-10 * scale || scale == 0.0;
     }
     ++stats_.solves;
-    stats_.iterations += it;
+    stats_.sweeps += it;
     if (!converged) ++stats_.unconverged;
-    {
-      // The law holds at every point whatever the states did: no pull and the friction inside
-      // its cone. Where the states still change, or where close points make the system nearly
-      // singular (its least-squares solution then misses some rows), this costs a small
-      // penetration or slip, which the next step's solve takes up.
-      for (int i = 0; i < k; ++i) {
-        const double P = y(3 * i);
-        if (points[static_cast<std::size_t>(i)].state == State::none || P <= 0.0) {
-          y.segment<3>(3 * i).setZero();
-          continue;
-        }
-        const double F = std::hypot(y(3 * i + 1), y(3 * i + 2));
-        if (F > friction_ * P) y.segment<2>(3 * i + 1) *= friction_ * P / F;
-      }
-    }
+    Eigen::VectorXd y(3 * k);  // (P, F_s, F_t) per point
+    for (int i = 0; i < k; ++i) y.segment<3>(3 * i) << -phi(3 * i), phi(3 * i + 1), phi(3 * i + 2);
     const Eigen::VectorXd f_u = D.transpose() * y;
     for (const auto& [n, s] : slot) {
       const Eigen::Vector3d f = f_u.segment<3>(3 * s);

@@ -12,11 +12,12 @@
 // along the directors) closest to the tool's next centre. Each point carries a normal force P
 // and two friction components (F_s, F_t) in its local axes, spread to the element's nodes by
 // the shape functions (eq. 5.25); their effect on every point's gap and slip is one small dense
-// system (eqs. 5.24-5.28). The points' states (stick, slide, no contact) are iterated by the
-// rules of thesis Fig. 5.7: stick holds d = R and zero slip; slide holds d = R and |F_f| = mu P
-// in the direction of the last iterate (eq. 5.30); a point in contact with P < 0 leaves it, a
-// sticking point with |F_f| > mu P slides, a sliding point whose slip runs with its friction
-// force sticks, a free point the solution would push into the tool comes into contact.
+// system (eqs. 5.24-5.28). The conditions of thesis Fig. 5.7 (stick: d = R and no slip; slide:
+// d = R and |F_f| = mu P against the slip; no contact: P = 0 and d >= R) are solved as a
+// complementarity problem by projected Gauss-Seidel sweeps: P >= 0 closing the gap, then the
+// friction cancelling the slip, cut to the cone. The thesis switches the points' states all at
+// once instead; that can cycle between neighbouring points, the sweeps converge to the one
+// solution (docs/design/explicit.md, "MST contact").
 // Virtual tools of a pie (ToolContact::set_copies) are further spheres with their own points.
 #include "forward/solver/dof_constraints.hpp"
 
@@ -31,8 +32,8 @@ class ShellModel;
 
 struct MstStatistics {
   long solves = 0;                 // steps with at least one point in contact
-  long iterations = 0;             // state iterations over all solves
-  long unconverged = 0;            // solves that ended at the iteration limit (states kept)
+  long sweeps = 0;                 // Gauss-Seidel sweeps over all solves
+  long unconverged = 0;            // solves that ended at the sweep limit (the forces of the last sweep kept)
   int max_points = 0;              // most potential contact points in one solve
   double max_penetration = 0.0;    // largest penetration found at a contact point before a solve [mm]
   double max_friction_ratio = 0.0; // largest |F_f| / (mu P) over points in contact (mu > 0)

@@ -111,7 +111,9 @@ ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& 
       const double n = std::max(1.0, std::ceil(remaining / dt_bound * (1.0 - 1e-12)));
       const double dt = remaining / n;
       const double lambda1 = n == 1.0 ? point : lambda + (point - lambda) / n;
+      double taken = dt;  // the step size taken (a quarter when cut)
       if (!step(dt, lambda, lambda1, &failure)) {
+        taken = 0.25 * dt;
         // Cut back: the same step in four.
         bool ok = true;
         double l = lambda;
@@ -139,9 +141,9 @@ ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& 
       lambda = lambda1;
       ++out.steps;
       ++iv.steps;
-      iv.time_step = dt;
-      out.min_step = out.min_step == 0.0 ? dt : std::min(out.min_step, dt);
-      out.max_step = std::max(out.max_step, dt);
+      iv.time_step = taken;
+      out.min_step = out.min_step == 0.0 ? taken : std::min(out.min_step, taken);
+      out.max_step = std::max(out.max_step, taken);
       if (!a_.allFinite()) {
         Eigen::Index j = 0;
         for (; j < a_.size(); ++j)

@@ -4,6 +4,7 @@
 // load factor, and the marks) with the tool force averaged over the interval.
 #include "forward/io/input_error.hpp"
 #include "forward/model/explicit_mass.hpp"
+#include "forward/model/model_energies.hpp"
 #include "forward/model/moving_sphere_contact.hpp"
 #include "forward/scenes/common/fe_run.hpp"
 #include "forward/scenes/common/fe_run_stepper.hpp"
@@ -104,7 +105,9 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
   IntervalForceFit fit;
   DynamicsView view;
   const auto after_step = [&](double dt) { fit.add(dt, mst ? mst->tool_force() : tool_->force()); };
+  std::vector<std::pair<double, double>> kinetic_internal;  // at every output point
   const auto at_output = [&](const solver::ExplicitInterval& iv) {
+    kinetic_internal.push_back({iv.kinetic, model::energy_account(*model_).internal()});
     view.steps = iv.steps;
     view.total_steps = iv.total_steps;
     view.time_step = iv.time_step;
@@ -125,6 +128,14 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
   const solver::ExplicitSummary r = solver.run(schedule, bound, after_step, at_output);
 
   FeRunOutcome out = step.finish(r.completed, r.lambda, r.message, -1);
+  // Quasi-static? The largest kinetic over internal energy once the internal energy has reached
+  // a tenth of its final value (before, both are near zero and their ratio says nothing).
+  double ratio = 0.0;
+  if (!kinetic_internal.empty()) {
+    const double final_internal = kinetic_internal.back().second;
+    for (const auto& [k, e] : kinetic_internal)
+      if (e > 0.1 * final_internal && e > 0.0) ratio = std::max(ratio, k / e);
+  }
   out.counters.increments = step.log.increments;
   out.dynamics = {{"steps", r.steps},
                   {"cut_steps", r.cut_steps},
@@ -143,13 +154,14 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
                   {"smallest_step_element", model::describe_element(*model_, mass.smallest_element)},
                   {"smallest_unscaled_step", mass.smallest_unscaled_step},
                   {"kinetic", view.kinetic},
+                  {"max_kinetic_over_internal", ratio},
                   {"damping_work", view.damping_work},
                   {"force_filter", "least-squares line through each output interval's steps, taken at the interval's end"},
                   {"contact", mst ? "mst" : "penalty"}};
   if (mst) {
     const model::MstStatistics& m = mst->statistics();
     out.dynamics["mst"] = {{"solves", m.solves},
-                           {"state_iterations", m.iterations},
+                           {"sweeps", m.sweeps},
                            {"unconverged_solves", m.unconverged},
                            {"max_points", m.max_points},
                            {"max_penetration", m.max_penetration},

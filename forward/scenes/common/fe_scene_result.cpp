@@ -2,6 +2,8 @@
 
 #include "forward/contact/shell_contact.hpp"
 
+#include <cstdio>
+
 namespace spifit::scene {
 
 void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, const contact::ContactOptions& contact,
@@ -20,6 +22,17 @@ void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const 
        {penalty ? contact::ShellContact::resolution_warning(force.max_penetration(), force.max_surface_penetration(), contact.points) : "",
         penalty ? contact::ShellContact::penetration_warning(force.max_penetration(), thickness, contact.penalty) : "", ripple_warning(ripple)})
     if (!w.empty()) warnings.push_back(w);
+  if (!run.dynamics.is_null()) {
+    const double ratio = run.dynamics.value("max_kinetic_over_internal", 0.0);
+    if (ratio > kQuasiStaticKineticRatio) {
+      char buf[320];
+      std::snprintf(buf, sizeof buf,
+                    "the explicit run is not quasi-static: its kinetic energy reached %.3g of the internal energy (above %.2g; thesis "
+                    "§2.2.3): the forces carry inertia; lower solver.mass_scaling or solver.time_scaling",
+                    ratio, kQuasiStaticKineticRatio);
+      warnings.push_back(buf);
+    }
+  }
 }
 
 }  // namespace spifit::scene

@@ -14,6 +14,11 @@
 
 namespace spifit::scene {
 
+// An explicit run whose kinetic energy exceeds this fraction of the internal energy (once that
+// has reached a tenth of its final value) is warned about: thesis §2.2.3 quotes 5 to 10 % as the
+// limit of a quasi-static explicit simulation.
+inline constexpr double kQuasiStaticKineticRatio = 0.05;
+
 class FeSceneResult : public SceneResult {
  public:
   FeRunOutcome run;
@@ -25,7 +30,8 @@ class FeSceneResult : public SceneResult {
   // After the run: its outcome (status, message, wall time), the force and energy logs, the
   // force ripple, and warnings when the tool sank deeper into the tool-side surface than its
   // contact points felt or deeper into the sheet than the penalty should let it (ShellContact's
-  // warnings), or when the force ripples (ripple_warning).
+  // warnings), when the force ripples (ripple_warning), or when an explicit run is not
+  // quasi-static (kQuasiStaticKineticRatio).
   void take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, const contact::ContactOptions& contact,
             double thickness, double element_size);
 };

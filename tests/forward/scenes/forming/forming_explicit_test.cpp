@@ -7,8 +7,10 @@
 #include "forward/scenes/forming/forming_scene.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -56,8 +58,11 @@ TEST(ExplicitIndent, MatchesTheImplicitForceAndClosesItsEnergyBalance) {
 // The Moving Spherical Tool (thesis §5.3): no penetration and Coulomb's law at every contact
 // point, the force of the penalty runs, the energy balance closed by the work of its forces.
 TEST(ExplicitIndent, MovingSphericalToolLeavesNoPenetrationAndKeepsCoulombsLaw) {
+  // The reference: implicit with a penalty stiff enough to leave no penetration to speak of
+  // (K_p = 1e5: 2e-4 mm), as the MST leaves none.
   FormingScene implicit_scene = indent(1.0);
   implicit_scene.contact.friction = 0.1;
+  implicit_scene.contact.penalty = 1e5;
   const FormingResult implicit = run_forming_scene(implicit_scene);
   ASSERT_TRUE(implicit.ok()) << implicit.message;
   FormingScene s = explicit_indent(1.0, 1e6);
@@ -66,13 +71,13 @@ TEST(ExplicitIndent, MovingSphericalToolLeavesNoPenetrationAndKeepsCoulombsLaw) 
   const FormingResult r = run_forming_scene(s);
   ASSERT_TRUE(r.ok()) << r.message;
   const nlohmann::json mst = r.to_json().at("explicit").at("mst");
-  // Measured: 2.7e-4 mm at a contact point, 4e-6 mm anywhere on the surface; the penalty
-  // K_p = 1e3 of the implicit run lets the tool 0.02 mm in.
+  // Measured: 2.7e-4 mm at a contact point, 4e-6 mm anywhere on the surface (the bundled
+  // penalty K_p = 1e3 lets the tool 0.02 mm in).
   EXPECT_LT(mst.at("max_penetration").get<double>(), 1e-3);
   EXPECT_LT(r.force.max_surface_penetration(), 1e-3);
-  EXPECT_GT(implicit.force.max_penetration(), 0.01);
   EXPECT_LE(mst.at("max_friction_over_mu_normal").get<double>(), 1.0 + 1e-12);
   EXPECT_GT(mst.at("solves").get<long>(), 100);
+  // Measured: 99.15 N against 97.21 N (+2.0 %).
   EXPECT_NEAR(r.force.peak().z() / implicit.force.peak().z(), 1.0, 0.03);
   const model::ModelEnergies& en = r.final_energies;
   EXPECT_NEAR(en.external_work, mst.at("work_on_sheet").get<double>(), 1e-9 * en.external_work);
@@ -96,20 +101,24 @@ TEST(ExplicitIndent, TheMovingSphericalToolNeedsTheExplicitScheme) {
   fs::remove_all(dir);
 }
 
+// Same inputs, same files: twice with 2 threads, and with 1 thread.
 TEST(ExplicitIndent, SameInputsWriteTheSameFiles) {
   FormingScene s = explicit_indent(0.5, 1e6);
   s.contact.friction = 0.1;
   s.contact.method = contact::ContactOptions::Method::mst;
   std::string first;
-  for (const char* tag : {"a", "b"}) {
-    const fs::path d = fs::temp_directory_path() / ("spifit_explicit_" + std::string(tag) + "_" + std::to_string(::getpid()));
+  const int saved = omp_get_max_threads();
+  for (const int threads : {2, 2, 1}) {
+    omp_set_num_threads(threads);
+    const fs::path d = fs::temp_directory_path() / ("spifit_explicit_" + std::to_string(threads) + "_" + std::to_string(::getpid()));
     const auto out = io::OutputDirectory::prepare(d.string(), true);
     const FormingResult r = run_forming_scene(s, RunFiles(out));
+    omp_set_num_threads(saved);
     ASSERT_TRUE(r.ok()) << r.message;
     const std::string files = read_bytes(d / "force.csv") + read_bytes(d / "energies.csv");
     EXPECT_GT(files.size(), 500u);
     if (first.empty()) first = files;
-    else EXPECT_EQ(files, first);
+    else EXPECT_EQ(files, first) << threads << " threads";
     fs::remove_all(d);
   }
 }
