@@ -50,7 +50,9 @@ struct MovingSphereContact::Point {
   int tool = 0, element = 0;
   Eigen::Vector4d shape;            // N_a at the point
   Eigen::Vector3d position;         // predicted, without contact forces
+  Eigen::Vector3d current;          // the same material point now
   double spacing = 0.0;             // the element's characteristic length
+  bool interior = false;            // inside its element (not on an edge or corner)
   std::array<int, 4> nodes{};
   Eigen::Vector3d n, s, t;          // unit normal (towards the tool centre) and tangents
   double gap = 0.0;                 // predicted, without contact forces
@@ -106,213 +108,203 @@ std::vector<int> MovingSphereContact::grow_neighbourhood(int tool, const Eigen::
   return out;
 }
 
-Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const Eigen::VectorXd& next_increment) {
+Eigen::Vector3d MovingSphereContact::next_move(int node, const Eigen::VectorXd& increment) const {
+  Eigen::Vector3d m = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+    for (const auto& term : constraints_.expansion(ShellModel::dof(node, k))) m(k) += term.coefficient * increment(term.reduced);
+  return m;
+}
+
+Eigen::Vector3d MovingSphereContact::next_director(int node, const Eigen::VectorXd& increment) const {
+  Eigen::Vector3d r = Eigen::Vector3d::Zero();
+  for (int k = 0; k < 3; ++k)
+    for (const auto& term : constraints_.expansion(ShellModel::dof(node, 3 + k))) r(k) += term.coefficient * increment(term.reduced);
+  const Eigen::Vector3d& d = model_.director(node);
+  if (model_.has_rotation_frame(node)) r = model_.rotation_frame(node, d) * r;  // framed: in the node's frame
+  return element::rotate_by_vector(d, r);
+}
+
+std::vector<MovingSphereContact::Point> MovingSphereContact::candidates(int tool, double lambda_next, const Eigen::VectorXd& increment) {
   const auto& x = model_.positions();
-  const auto& d = model_.directors();
-  // Where a node's translation goes over the next step without contact forces.
-  const auto move = [&](int node) {
-    Eigen::Vector3d m = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k)
-      for (const auto& term : constraints_.expansion(ShellModel::dof(node, k))) m(k) += term.coefficient * next_increment(term.reduced);
-    return m;
-  };
-  // Its director there: turned by the rotation part of the increment (in the node's frame for a
-  // framed node, rotation_frames.hpp).
-  const auto turned = [&](int node) {
-    Eigen::Vector3d r = Eigen::Vector3d::Zero();
-    for (int k = 0; k < 3; ++k)
-      for (const auto& term : constraints_.expansion(ShellModel::dof(node, 3 + k))) r(k) += term.coefficient * next_increment(term.reduced);
-    const Eigen::Vector3d& dn = d[static_cast<std::size_t>(node)];
-    if (model_.has_rotation_frame(node)) r = model_.rotation_frame(node, dn) * r;
-    return element::rotate_by_vector(dn, r);
-  };
-  const double lambda_now = model_.load_factor();
-  std::vector<Point> points;
-  for (int tool = 0; tool < static_cast<int>(rotations_.size()); ++tool) {
-    const Eigen::Matrix3d& R = rotations_[static_cast<std::size_t>(tool)];
-    const Eigen::Vector3d c_next = R * path_(lambda_next), c_now = R * path_(lambda_now);
-    struct Candidate {
-      Point p;
-      bool interior;
-    };
-    std::vector<Candidate> found;
-    for (int e : grow_neighbourhood(tool, c_next)) {
-      const auto& q = model_.mesh().quads[static_cast<std::size_t>(e)];
-      const double half = 0.5 * model_.element_thickness(e);
-      element::NodeVectors pred, now;
-      for (int a = 0; a < 4; ++a) {
-        const auto n = static_cast<std::size_t>(q[static_cast<std::size_t>(a)]);
-        now[static_cast<std::size_t>(a)] = x[n] + half * d[n];
-        pred[static_cast<std::size_t>(a)] = x[n] + move(q[static_cast<std::size_t>(a)]) + half * turned(q[static_cast<std::size_t>(a)]);
-      }
-      const Eigen::Vector2d z = closest_point(pred, c_next);
-      Point p;
-      p.tool = tool;
-      p.element = e;
-      p.shape = element::quad_shape(z.x(), z.y());
-      for (int a = 0; a < 4; ++a) p.nodes[static_cast<std::size_t>(a)] = q[static_cast<std::size_t>(a)];
-      const Eigen::Vector3d at = element::combine(p.shape, pred), at_now = element::combine(p.shape, now);
-      p.position = at;
-      p.spacing = element_length(model_, e);
-      const Eigen::Vector3d to_centre = c_next - at;
-      if (to_centre.norm() < 1e-12) continue;  // the surface through the tool centre: nothing sensible to do
-      p.gap = to_centre.norm() - radius_;
-      // The penetration the last solve left, where the tool is now.
-      stats_.max_penetration = std::max(stats_.max_penetration, radius_ - (c_now - at_now).norm());
-      if (p.gap > 2.0 * half) continue;  // too far to be pushed into contact by one step
-      p.n = to_centre.normalized();
-      tangent_axes(p.n, &p.s, &p.t);
-      const Eigen::Vector3d need = (c_next - c_now) - (at - at_now);  // the tool's move relative to the point's
-      p.slip = Eigen::Vector2d(p.s.dot(need), p.t.dot(need));
-      const bool interior = z.cwiseAbs().maxCoeff() < 1.0 - 1e-9;
-      found.push_back({p, interior});
+  const Eigen::Matrix3d& R = rotations_[static_cast<std::size_t>(tool)];
+  const Eigen::Vector3d c_next = R * path_(lambda_next), c_now = R * path_(model_.load_factor());
+  std::vector<Point> found;
+  for (int e : grow_neighbourhood(tool, c_next)) {
+    const auto& q = model_.mesh().quads[static_cast<std::size_t>(e)];
+    const double half = 0.5 * model_.element_thickness(e);
+    element::NodeVectors pred, now;
+    for (std::size_t a = 0; a < 4; ++a) {
+      now[a] = x[static_cast<std::size_t>(q[a])] + half * model_.director(q[a]);
+      pred[a] = x[static_cast<std::size_t>(q[a])] + next_move(q[a], increment) + half * next_director(q[a], increment);
     }
-    // A point on an element's boundary is the same contact as the interior point of a neighbour
-    // across that boundary (or as the same boundary point of another element): keep one.
-    std::vector<Point> kept;
-    for (std::size_t i = 0; i < found.size(); ++i) {
-      if (!found[i].interior) {
-        bool owned = false;
-        const Eigen::Vector3d pi = element::combine(found[i].p.shape, [&] {
-          element::NodeVectors v;
-          for (int a = 0; a < 4; ++a) v[static_cast<std::size_t>(a)] = x[static_cast<std::size_t>(found[i].p.nodes[static_cast<std::size_t>(a)])];
-          return v;
-        }());
-        for (std::size_t j = 0; j < found.size() && !owned; ++j) {
-          if (j == i) continue;
-          const bool shares = std::any_of(found[j].p.nodes.begin(), found[j].p.nodes.end(), [&](int n) {
-            for (int a = 0; a < 4; ++a)
-              if (found[i].p.shape(a) > 1e-9 && found[i].p.nodes[static_cast<std::size_t>(a)] == n) return true;
-            return false;
-          });
-          if (!shares) continue;
-          if (found[j].interior) owned = true;
-          else if (j < i) {
-            element::NodeVectors v;
-            for (int a = 0; a < 4; ++a) v[static_cast<std::size_t>(a)] = x[static_cast<std::size_t>(found[j].p.nodes[static_cast<std::size_t>(a)])];
-            owned = (element::combine(found[j].p.shape, v) - pi).norm() < 1e-6 * radius_;
-          }
-        }
-        if (owned) continue;
-      }
-      kept.push_back(found[i].p);
-    }
-    // Points closer than a quarter of an element to a deeper one are the same contact (the
-    // closest points of the elements around a node the tool sits on all lie near that node):
-    // kept apart, they make the system nearly singular and the contact hop between them.
-    std::sort(kept.begin(), kept.end(), [](const Point& a, const Point& b) { return a.gap < b.gap || (a.gap == b.gap && a.element < b.element); });
-    const std::size_t first = points.size();
-    for (const Point& p : kept) {
-      const bool near = std::any_of(points.begin() + static_cast<std::ptrdiff_t>(first), points.end(), [&](const Point& q) {
-        return (q.position - p.position).norm() < 0.25 * std::min(p.spacing, q.spacing);
-      });
-      if (!near) points.push_back(p);
+    const Eigen::Vector2d z = closest_point(pred, c_next);
+    Point p;
+    p.tool = tool;
+    p.element = e;
+    p.shape = element::quad_shape(z.x(), z.y());
+    for (std::size_t a = 0; a < 4; ++a) p.nodes[a] = q[a];
+    const Eigen::Vector3d at = element::combine(p.shape, pred), at_now = element::combine(p.shape, now);
+    p.position = at;
+    p.current = at_now;
+    p.spacing = element_length(model_, e);
+    p.interior = z.cwiseAbs().maxCoeff() < 1.0 - 1e-9;
+    const Eigen::Vector3d to_centre = c_next - at;
+    if (to_centre.norm() < 1e-12) continue;  // the surface through the tool centre: nothing sensible to do
+    p.gap = to_centre.norm() - radius_;
+    // The penetration the last solve left, where the tool is now.
+    stats_.max_penetration = std::max(stats_.max_penetration, radius_ - (c_now - at_now).norm());
+    if (p.gap > 2.0 * half) continue;  // too far to be pushed into contact by one step
+    p.n = to_centre.normalized();
+    tangent_axes(p.n, &p.s, &p.t);
+    const Eigen::Vector3d need = (c_next - c_now) - (at - at_now);  // the tool's move relative to the point's
+    p.slip = Eigen::Vector2d(p.s.dot(need), p.t.dot(need));
+    found.push_back(p);
+  }
+  return found;
+}
+
+std::vector<MovingSphereContact::Point> MovingSphereContact::distinct(const std::vector<Point>& found) const {
+  // A point on an element's boundary is the same contact as the interior point of a neighbour
+  // across that boundary (or as the same boundary point of another element): keep one.
+  const auto touches = [](const Point& boundary, const Point& other) {
+    for (int a = 0; a < 4; ++a)
+      if (boundary.shape(a) > 1e-9 && std::find(other.nodes.begin(), other.nodes.end(), boundary.nodes[static_cast<std::size_t>(a)]) != other.nodes.end())
+        return true;
+    return false;
+  };
+  std::vector<Point> kept;
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    bool owned = false;
+    for (std::size_t j = 0; j < found.size() && !owned && !found[i].interior; ++j)
+      if (j != i && touches(found[i], found[j]))
+        owned = found[j].interior || (j < i && (found[j].current - found[i].current).norm() < 1e-6 * radius_);
+    if (!owned) kept.push_back(found[i]);
+  }
+  // Points closer than a quarter of an element to a deeper one are the same contact (the
+  // closest points of the elements around a node the tool sits on all lie near that node):
+  // kept apart, they make the system nearly singular.
+  std::sort(kept.begin(), kept.end(), [](const Point& a, const Point& b) { return a.gap < b.gap || (a.gap == b.gap && a.element < b.element); });
+  std::vector<Point> out;
+  for (const Point& p : kept) {
+    const bool near = std::any_of(out.begin(), out.end(), [&](const Point& q) {
+      return (q.position - p.position).norm() < 0.25 * std::min(p.spacing, q.spacing);
+    });
+    if (!near) out.push_back(p);
+  }
+  return out;
+}
+
+// W: the change of (n.dp, s.dp, t.dp) of every point over the next step per unit force on the
+// sheet along each point's own (n, s, t), dt^2 E T M^-1 T^T E^T (symmetric, positive
+// semi-definite); E spreads a point's axes to its element's nodes by the shape functions.
+Eigen::MatrixXd MovingSphereContact::compliance(const std::vector<Point>& points, double dt) const {
+  const int k = static_cast<int>(points.size());
+  std::map<int, int> slot;  // the nodes involved
+  for (const Point& p : points)
+    for (int n : p.nodes) slot.emplace(n, 0);
+  int u = 0;
+  for (auto& [n, s] : slot) s = u++;
+  std::map<int, std::vector<std::pair<int, double>>> by_reduced;  // reduced -> (involved DOF, coefficient)
+  for (const auto& [n, s] : slot)
+    for (int c = 0; c < 3; ++c)
+      for (const auto& term : constraints_.expansion(ShellModel::dof(n, c))) by_reduced[term.reduced].push_back({3 * s + c, term.coefficient});
+  Eigen::MatrixXd G = Eigen::MatrixXd::Zero(3 * u, 3 * u);  // T M^-1 T^T among the involved translations
+  for (const auto& [j, list] : by_reduced)
+    for (const auto& [p, cp] : list)
+      for (const auto& [q, cq] : list) G(p, q) += cp * cq / mass_(j);
+  Eigen::MatrixXd E = Eigen::MatrixXd::Zero(3 * k, 3 * u);
+  for (int i = 0; i < k; ++i) {
+    const Point& p = points[static_cast<std::size_t>(i)];
+    for (int a = 0; a < 4; ++a) {
+      const int s = 3 * slot.at(p.nodes[static_cast<std::size_t>(a)]);
+      E.block<1, 3>(3 * i, s) += p.shape(a) * p.n.transpose();
+      E.block<1, 3>(3 * i + 1, s) += p.shape(a) * p.s.transpose();
+      E.block<1, 3>(3 * i + 2, s) += p.shape(a) * p.t.transpose();
     }
   }
+  return (dt * dt) * E * G * E.transpose();
+}
+
+// The conditions of thesis Fig. 5.7 as a complementarity problem, solved by projected
+// Gauss-Seidel: per point, the normal force P >= 0 that closes the gap (or none where the gap
+// stays open), then the friction that cancels the slip, cut to the cone |F| <= mu P (sliding).
+// Unlike switching the points' states all at once, the sweeps converge to the one solution when
+// W is positive definite, so the contact does not hop between neighbouring points. Returns the
+// force on the sheet along each point's (n, s, t): (-P, F_s, F_t).
+Eigen::VectorXd MovingSphereContact::solve(const std::vector<Point>& points, const Eigen::MatrixXd& W) {
+  const int k = static_cast<int>(points.size());
+  Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * k), w_phi = Eigen::VectorXd::Zero(3 * k);
+  const auto apply = [&](int i, const Eigen::Vector3d& delta) {
+    if (delta.squaredNorm() == 0.0) return;
+    w_phi.noalias() += W.middleCols<3>(3 * i) * delta;
+    phi.segment<3>(3 * i) += delta;
+  };
+  bool converged = false;
+  int it = 0;
+  double scale = 0.0;  // of the forces, for the convergence test
+  for (; it < kMaxSweeps && !converged; ++it) {
+    double change = 0.0;
+    for (int i = 0; i < k; ++i) {
+      const Point& p = points[static_cast<std::size_t>(i)];
+      const Eigen::Matrix3d Wii = W.block<3, 3>(3 * i, 3 * i);
+      if (!(Wii(0, 0) > 0.0)) continue;  // a point on clamped nodes only: nothing moves it
+      // Normal: the gap after the step is gap - (W phi)_n; P from closing it, never negative.
+      const double P_old = -phi(3 * i);
+      const double P = std::max(0.0, P_old + (w_phi(3 * i) - p.gap) / Wii(0, 0));
+      apply(i, Eigen::Vector3d(P_old - P, 0.0, 0.0));
+      // Tangential: the slip against the tool is (W phi)_{s,t} - the slip needed; sticking cancels it.
+      const Eigen::Vector2d F_old = phi.segment<2>(3 * i + 1);
+      Eigen::Vector2d F = Eigen::Vector2d::Zero();
+      if (friction_ > 0.0 && P > 0.0) {
+        F = F_old - Wii.block<2, 2>(1, 1).ldlt().solve(w_phi.segment<2>(3 * i + 1) - p.slip);
+        if (F.norm() > friction_ * P) F *= friction_ * P / F.norm();
+      }
+      apply(i, Eigen::Vector3d(0.0, F.x() - F_old.x(), F.y() - F_old.y()));
+      change = std::max({change, std::abs(P - P_old), (F - F_old).norm()});
+      scale = std::max({scale, P, F.norm()});
+    }
+    converged = change <= 1e-10 * scale || scale == 0.0;
+  }
+  ++stats_.solves;
+  stats_.sweeps += it;
+  if (!converged) ++stats_.unconverged;
+  return phi;
+}
+
+Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const Eigen::VectorXd& next_increment) {
+  std::vector<Point> points;
+  for (int tool = 0; tool < static_cast<int>(rotations_.size()); ++tool)
+    for (const Point& p : distinct(candidates(tool, lambda_next, next_increment))) points.push_back(p);
   const int k = static_cast<int>(points.size());
   last_points_ = k;
   Eigen::VectorXd f_full = Eigen::VectorXd::Zero(model_.num_dofs());
-  std::vector<std::pair<int, Eigen::Vector3d>> new_forces;
+  std::map<int, Eigen::Vector3d> by_node;
   tool_force_.setZero();
   if (k > 0) {
     stats_.max_points = std::max(stats_.max_points, k);
-    // The nodes involved, and the translational block of T M^-1 T^T among them.
-    std::map<int, int> slot;
-    for (const Point& p : points)
-      for (int n : p.nodes) slot.emplace(n, 0);
-    int u = 0;
-    for (auto& [n, s] : slot) s = u++;
-    std::map<int, std::vector<std::pair<int, double>>> by_reduced;  // reduced -> (involved DOF, coefficient)
-    for (const auto& [n, s] : slot)
-      for (int c = 0; c < 3; ++c)
-        for (const auto& term : constraints_.expansion(ShellModel::dof(n, c))) by_reduced[term.reduced].push_back({3 * s + c, term.coefficient});
-    Eigen::MatrixXd G = Eigen::MatrixXd::Zero(3 * u, 3 * u);
-    for (const auto& [j, list] : by_reduced)
-      for (const auto& [p, cp] : list)
-        for (const auto& [q, cq] : list) G(p, q) += cp * cq / mass_(j);
-    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(3 * k, 3 * u), D = Eigen::MatrixXd::Zero(3 * k, 3 * u);
+    const Eigen::VectorXd phi = solve(points, compliance(points, dt));
     for (int i = 0; i < k; ++i) {
       const Point& p = points[static_cast<std::size_t>(i)];
-      for (int a = 0; a < 4; ++a) {
-        const int s = 3 * slot.at(p.nodes[static_cast<std::size_t>(a)]);
-        const double w = p.shape(a);
-        E.block<1, 3>(3 * i, s) += w * p.n.transpose();
-        E.block<1, 3>(3 * i + 1, s) += w * p.s.transpose();
-        E.block<1, 3>(3 * i + 2, s) += w * p.t.transpose();
-        D.block<1, 3>(3 * i, s) -= w * p.n.transpose();
-        D.block<1, 3>(3 * i + 1, s) += w * p.s.transpose();
-        D.block<1, 3>(3 * i + 2, s) += w * p.t.transpose();
+      const Eigen::Vector3d on_sheet = phi(3 * i) * p.n + phi(3 * i + 1) * p.s + phi(3 * i + 2) * p.t;
+      for (int a = 0; a < 4; ++a) {  // eq. 5.25
+        auto [it, fresh] = by_node.emplace(p.nodes[static_cast<std::size_t>(a)], Eigen::Vector3d::Zero());
+        it->second += p.shape(a) * on_sheet;
       }
-    }
-    // W: the change of (n.dp, s.dp, t.dp) of every point per unit force on the sheet along its
-    // own (n, s, t); symmetric, positive semi-definite.
-    const Eigen::MatrixXd W = (dt * dt) * E * G * E.transpose();
-    // The conditions of thesis Fig. 5.7 as a complementarity problem, solved by projected
-    // Gauss-Seidel: per point, the normal force P >= 0 that closes the gap (or none where the
-    // gap stays open), then the friction that cancels the slip, cut to the cone |F| <= mu P
-    // (sliding). Unlike switching the points' states all at once, the sweeps converge to the one
-    // solution when W is positive definite, so the contact does not hop between neighbouring
-    // points from one step to the next.
-    Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * k);  // force on the sheet along (n, s, t): (-P, F_s, F_t)
-    Eigen::VectorXd w_phi = Eigen::VectorXd::Zero(3 * k);
-    const auto apply = [&](int i, const Eigen::Vector3d& delta) {
-      if (delta.squaredNorm() == 0.0) return;
-      w_phi.noalias() += W.middleCols<3>(3 * i) * delta;
-      phi.segment<3>(3 * i) += delta;
-    };
-    bool converged = false;
-    int it = 0;
-    double scale = 0.0;  // of the forces, for the convergence test
-    for (; it < kMaxSweeps && !converged; ++it) {
-      double change = 0.0;
-      for (int i = 0; i < k; ++i) {
-        const Point& p = points[static_cast<std::size_t>(i)];
-        const Eigen::Matrix3d& Wii = W.block<3, 3>(3 * i, 3 * i);
-        if (!(Wii(0, 0) > 0.0)) continue;  // a point on clamped nodes only: nothing moves it
-        // Normal: the gap after the step is gap - (W phi)_n; P from closing it, never negative.
-        const double P_old = -phi(3 * i);
-        const double P = std::max(0.0, P_old + (w_phi(3 * i) - p.gap) / Wii(0, 0));
-        apply(i, Eigen::Vector3d(P_old - P, 0.0, 0.0));
-        // Tangential: the slip against the tool is (W phi)_{s,t} - slip needed; sticking cancels it.
-        Eigen::Vector2d F = phi.segment<2>(3 * i + 1);
-        const Eigen::Vector2d F_old = F;
-        if (friction_ > 0.0 && P > 0.0) {
-          const Eigen::Vector2d slip = w_phi.segment<2>(3 * i + 1) - p.slip;
-          F -= Wii.block<2, 2>(1, 1).ldlt().solve(slip);
-          const double cap = friction_ * P;
-          if (F.norm() > cap) F *= cap / F.norm();
-        } else {
-          F.setZero();
-        }
-        apply(i, Eigen::Vector3d(0.0, F.x() - F_old.x(), F.y() - F_old.y()));
-        change = std::max({change, std::abs(P - P_old), (F - F_old).norm()});
-        scale = std::max({scale, P, F.norm()});
-      }
-      converged = change <= 1e-10 * scale || scale == 0.0;
-    }
-    ++stats_.solves;
-    stats_.sweeps += it;
-    if (!converged) ++stats_.unconverged;
-    Eigen::VectorXd y(3 * k);  // (P, F_s, F_t) per point
-    for (int i = 0; i < k; ++i) y.segment<3>(3 * i) << -phi(3 * i), phi(3 * i + 1), phi(3 * i + 2);
-    const Eigen::VectorXd f_u = D.transpose() * y;
-    for (const auto& [n, s] : slot) {
-      const Eigen::Vector3d f = f_u.segment<3>(3 * s);
-      if (f.squaredNorm() == 0.0) continue;
-      new_forces.push_back({n, f});
-      f_full.segment<3>(ShellModel::dof(n, 0)) += f;
-    }
-    for (int i = 0; i < k; ++i) {
-      const Point& p = points[static_cast<std::size_t>(i)];
-      const double P = y(3 * i);
-      const Eigen::Vector3d on_sheet = -P * p.n + y(3 * i + 1) * p.s + y(3 * i + 2) * p.t;
       tool_force_ -= rotations_[static_cast<std::size_t>(p.tool)].transpose() * on_sheet;
+      const double P = -phi(3 * i);
       if (friction_ > 0.0 && P > 0.0)
-        stats_.max_friction_ratio = std::max(stats_.max_friction_ratio, std::hypot(y(3 * i + 1), y(3 * i + 2)) / (friction_ * P));
+        stats_.max_friction_ratio = std::max(stats_.max_friction_ratio, phi.segment<2>(3 * i + 1).norm() / (friction_ * P));
     }
+  }
+  std::vector<std::pair<int, Eigen::Vector3d>> new_forces;
+  for (const auto& [n, f] : by_node) {
+    if (f.squaredNorm() == 0.0) continue;
+    new_forces.push_back({n, f});
+    f_full.segment<3>(ShellModel::dof(n, 0)) += f;
   }
   // Work on the sheet: each step's force times half the moves of the steps on either side of
   // it (the central-difference pairing of a force with its displacement).
+  const auto& x = model_.positions();
   for (const auto* list : {&last_forces_, &new_forces})
     for (const auto& [n, f] : *list) stats_.work += 0.5 * f.dot(x[static_cast<std::size_t>(n)] - last_positions_[static_cast<std::size_t>(n)]);
   last_forces_ = std::move(new_forces);

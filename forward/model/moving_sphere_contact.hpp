@@ -75,6 +75,15 @@ class MovingSphereContact {
   int last_points_ = 0;
 
   std::vector<int> grow_neighbourhood(int tool, const Eigen::Vector3d& centre);
+  // Where a node's translation goes, and its director, over the next step without contact forces.
+  Eigen::Vector3d next_move(int node, const Eigen::VectorXd& increment) const;
+  Eigen::Vector3d next_director(int node, const Eigen::VectorXd& increment) const;
+  // One potential contact point per element of the tool's neighbourhood.
+  std::vector<Point> candidates(int tool, double lambda_next, const Eigen::VectorXd& increment);
+  // The candidates without those that are another's contact (shared boundaries, close points).
+  std::vector<Point> distinct(const std::vector<Point>& found) const;
+  Eigen::MatrixXd compliance(const std::vector<Point>& points, double dt) const;
+  Eigen::VectorXd solve(const std::vector<Point>& points, const Eigen::MatrixXd& W);
 };
 
 }  // namespace spifit::model

@@ -82,6 +82,37 @@ bool ExplicitSolver::step(double dt, double lambda0, double lambda1, ElementEval
   return true;
 }
 
+bool ExplicitSolver::start(double lambda, ElementEvaluation* failure) {
+  problem_.revert();
+  problem_.begin_increment(lambda, lambda);
+  Eigen::VectorXd r;
+  const bool ok = residual(lambda, &r, failure);
+  problem_.revert();
+  if (ok) a_ = -r.cwiseQuotient(m_) - options_.damping * v_;
+  return ok;
+}
+
+bool ExplicitSolver::quarter_steps(double dt, double lambda0, double lambda1, const AfterStep& after_step, double* time, double* reached,
+                                   ElementEvaluation* failure) {
+  for (int k = 1; k <= 4; ++k) {
+    const double lk = k == 4 ? lambda1 : lambda0 + (lambda1 - lambda0) * k / 4.0;
+    if (!step(0.25 * dt, *reached, lk, failure)) return false;
+    *reached = lk;
+    *time += 0.25 * dt;
+    if (after_step) after_step(0.25 * dt);
+  }
+  return true;
+}
+
+std::string ExplicitSolver::non_finite_dof() const {
+  Eigen::Index j = 0;
+  while (j < a_.size() && std::isfinite(a_(j))) ++j;
+  for (int dof = 0; dof < constraints_.num_dofs(); ++dof)
+    for (const DofConstraints::Term& t : constraints_.expansion(dof))
+      if (t.reduced == j) return problem_.describe_dof(dof);
+  return "reduced unknown " + std::to_string(j);
+}
+
 ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& bound, const AfterStep& after_step, const Callback& callback) {
   ExplicitSummary out;
   out.lambda = s.lambda_start;
@@ -89,17 +120,11 @@ ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& 
     out.message = "explicit schedule: need duration > 0, output_interval > 0 and lambda_end > lambda_start";
     return out;
   }
-  // The first acceleration, at the committed state.
-  problem_.revert();
-  problem_.begin_increment(s.lambda_start, s.lambda_start);
-  Eigen::VectorXd r;
   ElementEvaluation failure;
-  if (!residual(s.lambda_start, &r, &failure)) {
+  if (!start(s.lambda_start, &failure)) {
     out.message = "at the start: " + failure.where + ": " + failure.reason;
     return out;
   }
-  problem_.revert();
-  a_ = -r.cwiseQuotient(m_) - options_.damping * v_;
   double lambda = s.lambda_start, dt_bound = bound();
   out.min_step = out.max_step = 0.0;
   int index = 0;
@@ -114,24 +139,13 @@ ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& 
       double taken = dt;  // the step size taken (a quarter when cut)
       if (!step(dt, lambda, lambda1, &failure)) {
         taken = 0.25 * dt;
-        // Cut back: the same step in four.
-        bool ok = true;
-        double l = lambda;
-        for (int k = 1; k <= 4 && ok; ++k) {
-          const double lk = k == 4 ? lambda1 : lambda + (lambda1 - lambda) * k / 4.0;
-          ok = step(0.25 * dt, l, lk, &failure);
-          if (ok) {
-            l = lk;
-            out.time += 0.25 * dt;
-            if (after_step) after_step(0.25 * dt);
-          }
-        }
         ++out.cut_steps;
-        if (!ok) {
+        double reached = lambda;
+        if (!quarter_steps(dt, lambda, lambda1, after_step, &out.time, &reached, &failure)) {
           char buf[200];
-          std::snprintf(buf, sizeof buf, "step %ld at time %.6g s (load factor %.6g), also cut to a quarter: ", out.steps + 1, out.time, l);
+          std::snprintf(buf, sizeof buf, "step %ld at time %.6g s (load factor %.6g), also cut to a quarter: ", out.steps + 1, out.time, reached);
           out.message = buf + failure.where + ": " + failure.reason;
-          out.lambda = l;
+          out.lambda = reached;
           return out;
         }
       } else {
@@ -145,17 +159,9 @@ ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& 
       out.min_step = out.min_step == 0.0 ? taken : std::min(out.min_step, taken);
       out.max_step = std::max(out.max_step, taken);
       if (!a_.allFinite()) {
-        Eigen::Index j = 0;
-        for (; j < a_.size(); ++j)
-          if (!std::isfinite(a_(j))) break;
-        int dof = 0;
-        for (; dof < constraints_.num_dofs(); ++dof) {
-          const auto terms = constraints_.expansion(dof);
-          if (std::any_of(terms.begin(), terms.end(), [j](const DofConstraints::Term& t) { return t.reduced == j; })) break;
-        }
         char buf[200];
         std::snprintf(buf, sizeof buf, "step %ld at time %.6g s (load factor %.6g): the acceleration is not finite at ", out.steps, out.time, lambda);
-        out.message = buf + problem_.describe_dof(dof) + " (unstable: a smaller time_step_safety or more mass scaling)";
+        out.message = buf + non_finite_dof() + " (unstable: a smaller time_step_safety or more mass scaling)";
         out.lambda = lambda;
         return out;
       }

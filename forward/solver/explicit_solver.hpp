@@ -89,8 +89,15 @@ class ExplicitSolver {
   // Residual (internal - external) reduced at the problem's trial configuration and lambda;
   // false with the failure when an element fails.
   bool residual(double lambda, Eigen::VectorXd* r, ElementEvaluation* failure);
+  // The first acceleration, at the committed state and lambda; false when an element fails.
+  bool start(double lambda, ElementEvaluation* failure);
   // One step of dt from lambda0 to lambda1: false (problem reverted) when an element fails.
   bool step(double dt, double lambda0, double lambda1, ElementEvaluation* failure);
+  // A failed step taken again as four quarters; false (with the load factor reached) when one fails.
+  bool quarter_steps(double dt, double lambda0, double lambda1, const AfterStep& after_step, double* time, double* reached,
+                     ElementEvaluation* failure);
+  // The DOF of the first non-finite acceleration, named by the problem.
+  std::string non_finite_dof() const;
 };
 
 }  // namespace spifit::solver

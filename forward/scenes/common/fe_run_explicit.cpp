@@ -55,6 +55,58 @@ class IntervalForceFit {
 // The largest penalty the contact uses (normal or tangential): it bounds the stable step too.
 double contact_stiffness(const contact::ContactOptions& c) { return std::max(c.penalty, c.tangential_penalty); }
 
+// summary.json "explicit" (docs/reference/outputs.md).
+nlohmann::json dynamics_json(const solver::ExplicitSummary& r, const solver::ExplicitOptions& o, const model::ExplicitMass& mass, double duration,
+                             double kinetic_ratio, const DynamicsView& view, const model::MovingSphereContact* mst, const std::string& smallest) {
+  nlohmann::json j = {{"steps", r.steps},
+                      {"cut_steps", r.cut_steps},
+                      {"simulated_seconds", r.time},
+                      {"duration", duration},
+                      {"time_step", {{"start", mass.time_step}, {"min", r.min_step}, {"max", r.max_step}}},
+                      {"mass_scaling", o.mass_scaling},
+                      {"rotational_mass_scaling", o.rotational_scaling},
+                      {"target_time_step", o.target_time_step},
+                      {"time_scaling", o.time_scaling},
+                      {"damping", o.damping},
+                      {"time_step_safety", o.safety},
+                      {"mass", mass.mass},
+                      {"added_mass", mass.added_mass},
+                      {"selectively_scaled_elements", mass.scaled_elements},
+                      {"smallest_step_element", smallest},
+                      {"smallest_unscaled_step", mass.smallest_unscaled_step},
+                      {"kinetic", view.kinetic},
+                      {"max_kinetic_over_internal", kinetic_ratio},
+                      {"damping_work", view.damping_work},
+                      {"force_filter", "least-squares line through each output interval's steps, taken at the interval's end"},
+                      {"contact", mst ? "mst" : "penalty"}};
+  if (mst) {
+    const model::MstStatistics& m = mst->statistics();
+    j["mst"] = {{"solves", m.solves},
+                {"sweeps", m.sweeps},
+                {"unconverged_solves", m.unconverged},
+                {"max_points", m.max_points},
+                {"max_penetration", m.max_penetration},
+                {"max_friction_over_mu_normal", m.max_friction_ratio},
+                {"work_on_sheet", m.work}};
+  }
+  return j;
+}
+
+// Refuses (io::InputError on the scene's mass_scaling) a run whose stable step needs more than
+// max_steps steps, naming the element that sets the step and the mass scaling that would fit.
+void check_step_count(const FeRunSetup& setup, const model::ShellModel& model, const model::ExplicitMass& mass, double duration) {
+  const solver::ExplicitOptions& o = *setup.explicit_scheme;
+  const double steps = duration / mass.time_step;
+  if (steps <= o.max_steps) return;
+  const double fits = o.mass_scaling * (steps / o.max_steps) * (steps / o.max_steps);
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "the stable time step %.3g s needs %.3g steps for the %.4g s of the path, more than max_steps = %.3g; the smallest step "
+                "is that of %s; mass_scaling = %.3g (or time_scaling) would fit",
+                mass.time_step, steps, duration, o.max_steps, model::describe_element(model, mass.smallest_element).c_str(), fits);
+  throw io::InputError(scene_file(setup), "solver.mass_scaling", io::format_number(o.mass_scaling), buf);
+}
+
 }  // namespace
 
 FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
@@ -69,16 +121,7 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
   const model::ExplicitMass mass = model::explicit_mass(*model_, in);
   const double length = setup_.load_map.length();
   const double duration = setup_.time_of_travel(length) / o.time_scaling;
-  const double steps = duration / mass.time_step;
-  if (steps > o.max_steps) {
-    const double fits = o.mass_scaling * (steps / o.max_steps) * (steps / o.max_steps);
-    char buf[400];
-    std::snprintf(buf, sizeof buf,
-                  "the stable time step %.3g s needs %.3g steps for the %.4g s of the path, more than max_steps = %.3g; the smallest step "
-                  "is that of %s; mass_scaling = %.3g (or time_scaling) would fit",
-                  mass.time_step, steps, duration, o.max_steps, model::describe_element(*model_, mass.smallest_element).c_str(), fits);
-    throw io::InputError(scene_file(setup_), "solver.mass_scaling", io::format_number(o.mass_scaling), buf);
-  }
+  check_step_count(setup_, *model_, mass, duration);
   solver::ExplicitSolver solver(*model_, *constraints_, mass.diagonal, o);
   // The Moving Spherical Tool instead of the penalty: the tool stays for its geometry, without force.
   std::unique_ptr<model::MovingSphereContact> mst;
@@ -137,37 +180,7 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
       if (e > 0.1 * final_internal && e > 0.0) ratio = std::max(ratio, k / e);
   }
   out.counters.increments = step.log.increments;
-  out.dynamics = {{"steps", r.steps},
-                  {"cut_steps", r.cut_steps},
-                  {"simulated_seconds", r.time},
-                  {"duration", duration},
-                  {"time_step", {{"start", mass.time_step}, {"min", r.min_step}, {"max", r.max_step}}},
-                  {"mass_scaling", o.mass_scaling},
-                  {"rotational_mass_scaling", o.rotational_scaling},
-                  {"target_time_step", o.target_time_step},
-                  {"time_scaling", o.time_scaling},
-                  {"damping", o.damping},
-                  {"time_step_safety", o.safety},
-                  {"mass", mass.mass},
-                  {"added_mass", mass.added_mass},
-                  {"selectively_scaled_elements", mass.scaled_elements},
-                  {"smallest_step_element", model::describe_element(*model_, mass.smallest_element)},
-                  {"smallest_unscaled_step", mass.smallest_unscaled_step},
-                  {"kinetic", view.kinetic},
-                  {"max_kinetic_over_internal", ratio},
-                  {"damping_work", view.damping_work},
-                  {"force_filter", "least-squares line through each output interval's steps, taken at the interval's end"},
-                  {"contact", mst ? "mst" : "penalty"}};
-  if (mst) {
-    const model::MstStatistics& m = mst->statistics();
-    out.dynamics["mst"] = {{"solves", m.solves},
-                           {"sweeps", m.sweeps},
-                           {"unconverged_solves", m.unconverged},
-                           {"max_points", m.max_points},
-                           {"max_penetration", m.max_penetration},
-                           {"max_friction_over_mu_normal", m.max_friction_ratio},
-                           {"work_on_sheet", m.work}};
-  }
+  out.dynamics = dynamics_json(r, o, mass, duration, ratio, view, mst.get(), model::describe_element(*model_, mass.smallest_element));
   return out;
 }
 
