@@ -149,8 +149,13 @@ PlotSpec energy_plot(const RunContent& c) {
   return p;
 }
 
+// An explicit run's force.csv "iterations" are the steps of each output interval.
+bool explicit_run(const RunContent& c) { return c.summary.contains("explicit") && c.summary["explicit"].is_object(); }
+
 PlotSpec iterations_plot(const RunContent& c) {
-  PlotSpec p = titled("run_iterations", "Newton iterations per increment", "tool travel [mm]", "iterations");
+  const bool dynamic = explicit_run(c);
+  PlotSpec p = titled("run_iterations", dynamic ? "Time steps per output interval" : "Newton iterations per increment", "tool travel [mm]",
+                      dynamic ? "steps" : "iterations");
   p.key = false;
   p.series.push_back({"iterations", travel(c), c.force.column("iterations"), Series::Style::points, ""});
   return p;
@@ -197,7 +202,8 @@ void render_plots(const fs::path& dir, const ReportOptions& options, RunContent&
     add(section_plot(c, "thickness", "thickness", "run_section_thickness"), "Sections at the named path points: thickness");
   }
   if (c.energies.rows() > 0) add(energy_plot(c), "Energy account (balance error: external work minus the stored and dissipated parts)");
-  if (c.force.has("iterations")) add(iterations_plot(c), "Newton iterations of each increment");
+  if (c.force.has("iterations"))
+    add(iterations_plot(c), explicit_run(c) ? "Time steps of each output interval" : "Newton iterations of each increment");
   out.plots = session.images();
   out.warnings.insert(out.warnings.end(), session.warnings().begin(), session.warnings().end());
 }
@@ -228,9 +234,22 @@ Document run_document(const RunContent& c) {
   row("material", s.value("material", std::string("n/a")));
   row("status", status);
   if (s.contains("model")) row("elements", format_significant(number_at(s["model"], "elements"), 10));
-  row("increments / Newton iterations / cut-backs", format_significant(number_at(s, "increments"), 10) + " / " +
-                                                        format_significant(number_at(s, "newton_iterations"), 10) + " / " +
-                                                        format_significant(number_at(s, "cutbacks"), 10));
+  const bool dynamic = explicit_run(c);
+  if (dynamic) {
+    // An explicit run (docs/design/explicit.md): output intervals and steps, not Newton increments.
+    const json& e = s["explicit"];
+    row("scheme", "explicit, " + e.value("contact", std::string("penalty")) + " contact");
+    row("output intervals / steps / cut steps", format_significant(number_at(s, "increments"), 10) + " / " +
+                                                    format_significant(number_at(e, "steps"), 10) + " / " +
+                                                    format_significant(number_at(e, "cut_steps"), 10));
+    row("mass scaling / time scaling", format_significant(number_at(e, "mass_scaling"), 4) + " / " + format_significant(number_at(e, "time_scaling"), 4));
+    if (e.contains("time_step")) row("time step", with_unit(format_significant(number_at(e["time_step"], "start"), 4), "s"));
+    row("largest kinetic over internal energy", format_percent(number_at(e, "max_kinetic_over_internal")));
+  } else {
+    row("increments / Newton iterations / cut-backs", format_significant(number_at(s, "increments"), 10) + " / " +
+                                                          format_significant(number_at(s, "newton_iterations"), 10) + " / " +
+                                                          format_significant(number_at(s, "cutbacks"), 10));
+  }
   if (s.contains("travel_reached")) row("tool travel reached", with_unit(format_significant(number_at(s, "travel_reached"), 6), "mm"));
   if (s.contains("contours_completed"))
     row("contours", format_significant(number_at(s, "contours_completed"), 10) + " of " + format_significant(number_at(s, "contours_total"), 10));
@@ -243,7 +262,7 @@ Document run_document(const RunContent& c) {
                                              (std::isfinite(h) && h > 0 ? " (" + format_percent(pen / h) + " of the thickness)" : ""));
   row("wall time", with_unit(format_significant(number_at(s, "wall_seconds"), 4), "s"));
   d.table(t);
-  if (s.contains("profile_seconds")) {
+  if (s.contains("profile_seconds") && !dynamic) {  // the Newton solver's profile
     const json& p = s["profile_seconds"];
     const double wall = number_at(s, "wall_seconds"), el = number_at(p, "elements", 0.0), as = number_at(p, "assembly", 0.0),
                  li = number_at(p, "linear_solver", 0.0);

@@ -54,6 +54,23 @@ TEST(RunReport, AnIndentRunGetsItsSummaryAndPlots) {
   fs::remove_all(d);
 }
 
+// An explicit run reports its scheme, steps and kinetic energy instead of Newton counts.
+TEST(RunReport, AnExplicitRunShowsItsStepsNotNewtonIterations) {
+  const fs::path d = fs::temp_directory_path() / ("spifit_run_report_explicit_" + std::to_string(::getpid()));
+  scene::FormingScene s = scene::read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_explicit.toml");
+  s.path.back().tip.z() = -0.5;
+  const auto out = io::OutputDirectory::prepare(d.string(), true);
+  ASSERT_TRUE(scene::run_forming_scene(s, scene::RunFiles(out)).ok());
+  const auto r = reports::render_run_report(d);
+  const std::string md = io::read_text_file(r.markdown.string());
+  EXPECT_NE(md.find("| scheme | explicit, mst contact |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| output intervals / steps / cut steps | 10 / "), std::string::npos) << md;
+  EXPECT_NE(md.find("| mass scaling / time scaling | 1e+06 / 1 |"), std::string::npos) << md;
+  EXPECT_EQ(md.find("Newton"), std::string::npos) << md;
+  EXPECT_EQ(md.find("where the time went"), std::string::npos) << md;
+  fs::remove_all(d);
+}
+
 TEST(RunReport, APartialDirectoryShowsWhatItHolds) {
   const fs::path d = run_indent("partial");
   auto summary = nlohmann::json::parse(io::read_text_file((d / "summary.json").string()));
