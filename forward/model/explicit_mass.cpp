@@ -1,5 +1,6 @@
 #include "forward/model/explicit_mass.hpp"
 
+#include "forward/model/rotation_frames.hpp"
 #include "forward/model/shell_model.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -12,16 +13,6 @@
 
 namespace spifit::model {
 namespace {
-
-// Two unit vectors normal to d (the rotations that bend; the third, about d, is drilling).
-Eigen::Matrix<double, 3, 2> bending_axes(const Eigen::Vector3d& d) {
-  const Eigen::Vector3d a = std::abs(d.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  const Eigen::Vector3d t1 = d.cross(a).normalized();
-  Eigen::Matrix<double, 3, 2> b;
-  b.col(0) = t1;
-  b.col(1) = d.cross(t1);
-  return b;
-}
 
 // Largest frequency squared of element e: its tangent on the 5 non-drilling DOFs per node over
 // its own lumped mass (translational m, rotational inertia i per node).
@@ -38,7 +29,11 @@ double element_omega_squared(ShellModel& model, int e, double m, double i) {
     if (model.has_rotation_frame(n)) {
       p.block<2, 2>(6 * a + 3, 5 * a + 3).setIdentity();  // frame components t1, t2; the third is the normal
     } else {
-      p.block<3, 2>(6 * a + 3, 5 * a + 3) = bending_axes(model.director(n));
+      // The rotations that bend: about two axes normal to the director (the third is drilling).
+      const Eigen::Vector3d& d = model.director(n);
+      const Eigen::Vector3d t1 = least_aligned_normal(d);
+      p.block<3, 1>(6 * a + 3, 5 * a + 3) = t1;
+      p.block<3, 1>(6 * a + 3, 5 * a + 4) = d.cross(t1);
     }
   }
   Eigen::Matrix<double, 20, 20> k = p.transpose() * ke * p;

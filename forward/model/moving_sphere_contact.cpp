@@ -3,6 +3,7 @@
 #include "forward/element/director.hpp"
 #include "forward/element/quad_shape.hpp"
 #include "forward/model/explicit_mass.hpp"
+#include "forward/model/rotation_frames.hpp"
 #include "forward/model/shell_model.hpp"
 
 #include <Eigen/Dense>
@@ -18,13 +19,6 @@ namespace {
 
 constexpr double kNeighbourhood = 1.5;  // s of thesis eq. 5.13
 constexpr int kMaxSweeps = 200;         // projected Gauss-Seidel sweeps of one solve
-
-// Two unit vectors normal to n and to each other.
-void tangent_axes(const Eigen::Vector3d& n, Eigen::Vector3d* s, Eigen::Vector3d* t) {
-  const Eigen::Vector3d a = std::abs(n.x()) < 0.9 ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  *s = n.cross(a).normalized();
-  *t = n.cross(*s);
-}
 
 // The point of the bilinear surface through q closest to c: (xi, eta) clamped to the element.
 Eigen::Vector2d closest_point(const element::NodeVectors& q, const Eigen::Vector3d& c) {
@@ -155,7 +149,8 @@ std::vector<MovingSphereContact::Point> MovingSphereContact::candidates(int tool
     stats_.max_penetration = std::max(stats_.max_penetration, radius_ - (c_now - at_now).norm());
     if (p.gap > 2.0 * half) continue;  // too far to be pushed into contact by one step
     p.n = to_centre.normalized();
-    tangent_axes(p.n, &p.s, &p.t);
+    p.s = least_aligned_normal(p.n);
+    p.t = p.n.cross(p.s);
     const Eigen::Vector3d need = (c_next - c_now) - (at - at_now);  // the tool's move relative to the point's
     p.slip = Eigen::Vector2d(p.s.dot(need), p.t.dot(need));
     found.push_back(p);

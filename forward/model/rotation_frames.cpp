@@ -5,18 +5,13 @@
 #include <stdexcept>
 
 namespace spifit::model {
-namespace {
 
-// A unit vector normal to the unit vector d: the global axis least aligned with d, made normal
-// to it (x for d = +-z).
 Eigen::Vector3d least_aligned_normal(const Eigen::Vector3d& d) {
   Eigen::Index k = 0;
   d.cwiseAbs().minCoeff(&k);
   const Eigen::Vector3d e = Eigen::Vector3d::Unit(k);
   return (e - e.dot(d) * d).normalized();
 }
-
-}  // namespace
 
 NodalRotationFrames::NodalRotationFrames(const std::vector<Eigen::Vector3d>& d0, solver::DofConstraints* c) : d0_(d0) {
   const auto nn = d0.size();

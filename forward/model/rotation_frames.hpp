@@ -14,6 +14,10 @@
 
 namespace spifit::model {
 
+// A unit vector normal to the unit vector d: the global axis least aligned with d, made normal
+// to it (x for d = +-z). With d x it, an orthonormal pair normal to d.
+Eigen::Vector3d least_aligned_normal(const Eigen::Vector3d& d);
+
 class NodalRotationFrames {
  public:
   // No node framed.

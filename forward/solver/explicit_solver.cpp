@@ -38,6 +38,8 @@ ExplicitSolver::ExplicitSolver(NonlinearProblem& problem, const DofConstraints& 
   for (Eigen::Index j = 0; j < m_.size(); ++j)
     if (!(m_(j) > 0.0)) throw std::invalid_argument("ExplicitSolver: reduced unknown " + std::to_string(j) + " has no mass");
   v_ = a_ = Eigen::VectorXd::Zero(m_.size());
+  prescribed_rate_ = constraints_.prescribed_values(1.0);  // prescribed values are amplitude x load factor
+  moves_prescribed_ = prescribed_rate_.cwiseAbs().maxCoeff() > 0.0;
   re_.resize(problem_.element_dofs().size());
   ev_.resize(re_.size());
 }
@@ -62,7 +64,7 @@ bool ExplicitSolver::residual(double lambda, Eigen::VectorXd* r, ElementEvaluati
 bool ExplicitSolver::step(double dt, double lambda0, double lambda1, ElementEvaluation* failure) {
   const Eigen::VectorXd vh = v_ + 0.5 * dt * a_;
   Eigen::VectorXd du = constraints_.expand(dt * vh);
-  if (lambda1 != lambda0) du += constraints_.prescribed_values(lambda1) - constraints_.prescribed_values(lambda0);
+  if (moves_prescribed_ && lambda1 != lambda0) du += (lambda1 - lambda0) * prescribed_rate_;
   problem_.begin_increment(lambda0, lambda1);
   problem_.set_trial(du, 1.0);
   Eigen::VectorXd r;

@@ -82,6 +82,8 @@ class ExplicitSolver {
   const DofConstraints& constraints_;
   ExplicitOptions options_;
   Eigen::VectorXd m_, v_, a_;     // reduced mass, velocity, acceleration
+  Eigen::VectorXd prescribed_rate_;  // prescribed values per unit load factor (full DOF vector)
+  bool moves_prescribed_ = false;
   std::vector<Eigen::VectorXd> re_;
   std::vector<ElementEvaluation> ev_;
   double damping_work_ = 0.0;

@@ -199,12 +199,7 @@ TEST(ExplicitSolver, ThickSheetPushedAtItsCentreIsStableAtOneThicknessPerElement
   ExplicitSchedule s;
   s.duration = 0.5;
   s.output_interval = 0.05;
-  double kinetic = 0.0;
-  const ExplicitSummary r = solver.run(s, [&] { return model::current_time_step(*dyn.model, mass, eo.safety); }, {},
-                                       [&](const ExplicitInterval& iv) {
-                                         kinetic = iv.kinetic;
-                                         return true;
-                                       });
+  const ExplicitSummary r = solver.run(s, [&] { return model::current_time_step(*dyn.model, mass, eo.safety); }, {}, {});
   ASSERT_TRUE(r.completed) << r.message;
   const auto a = implicit.row(), b = dyn.row();
   ASSERT_EQ(a.size(), b.size());
@@ -216,9 +211,7 @@ TEST(ExplicitSolver, ThickSheetPushedAtItsCentreIsStableAtOneThicknessPerElement
       worst_kink = std::max(worst_kink, std::abs(ka - kb));
     }
   }
-  std::printf("t/l = 1, mass scaling 1e5: %ld steps, deflection within %.4f mm, second difference within %.4f mm, kinetic %.3g N mm, "
-              "internal %.3g N mm\n",
-              r.steps, worst, worst_kink, kinetic, model::energy_account(*dyn.model).internal());
+  // Measured: 4 560 steps, deflection within 0.0011 mm, second differences within 0.0012 mm.
   EXPECT_LT(worst, 0.05);
   EXPECT_LT(worst_kink, 0.05);
 }
