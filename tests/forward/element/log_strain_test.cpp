@@ -89,6 +89,22 @@ TEST(LogStrain, DerivativesMatchCentralDifferences) {
   }
 }
 
+// The section's commit re-evaluates the layers' log strains with log_strain_value; the next
+// update subtracts them from log_strain_with_derivatives' values, so the two must agree bit for
+// bit (else a zero strain increment shows as round-off), on every branch of the series (y below
+// 1e-6, 1e-3, 0.05) and of the closed form.
+TEST(LogStrain, ValueAloneIsBitForBitThatOfTheDerivatives) {
+  const Eigen::Vector3d greens[] = {{0.0, 0.0, 0.0},     {1e-5, -3e-6, 2e-6}, {0.01, 0.004, -0.003}, {0.05, -0.02, 0.03},
+                                    {0.3, -0.1, 0.2},    {2.0, 0.5, -0.7},    {-0.2, -0.2, 0.0},     {1e-9, 1e-9, 1e-12}};
+  for (const Eigen::Vector3d& g : greens) {
+    const Eigen::Vector3d v = spifit::element::log_strain_value(g);
+    for (bool second : {false, true}) {
+      const Eigen::Vector3d w = spifit::element::log_strain_with_derivatives(g, second).value;
+      for (int i = 0; i < 3; ++i) EXPECT_EQ(v(i), w(i)) << "E = " << g.transpose() << ", component " << i;
+    }
+  }
+}
+
 TEST(ThicknessRule, GaussLegendreIsExactToDegreeTwoNMinusOne) {
   for (int n = 1; n <= 11; ++n) {
     const ThicknessRule r = gauss_legendre_rule(n);
