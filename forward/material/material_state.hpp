@@ -19,6 +19,10 @@ struct MaterialState {
   T back_stress_zz = T(0.0);  // plane stress only
   T eqps = T(0.0);            // equivalent plastic strain, work-conjugate to sigma_eq (eq. 3.2)
   T plastic_work = T(0.0);    // sum of sigma . d eps_p [MJ/m^3 = MPa]
+  // Yield stress at eqps, kept by the return mapping so that the next update's elastic check
+  // needs no pow (bit for bit the value it would compute). Negative: not known (a fresh state,
+  // or one read from a checkpoint); the return mapping then computes it.
+  T flow_stress = T(-1.0);
 };
 
 template <typename T, int Dim>
@@ -32,6 +36,7 @@ MaterialState<double, Dim> values_of(const MaterialState<T, Dim>& s) {
   o.back_stress_zz = value_of(s.back_stress_zz);
   o.eqps = value_of(s.eqps);
   o.plastic_work = value_of(s.plastic_work);
+  o.flow_stress = value_of(s.flow_stress);
   return o;
 }
 

@@ -49,7 +49,7 @@ class ReturnMapping {
 
   explicit ReturnMapping(const MaterialParams<T>& params, ReturnMappingOptions options = {})
       : m_(params), options_(options), C_(Space::elastic(params)), P_(Space::hill(params)),
-        A_(Space::kinematic_map()) {
+        A_(Space::kinematic_map()), CP_(C_ * P_) {
     if constexpr (!std::is_same_v<T, double>) values_ = std::make_shared<const ReturnMapping<double, Dim>>(values_of(params), options);
   }
 
@@ -68,8 +68,10 @@ class ReturnMapping {
     return value_of(q) > 0.0 ? sqrt(q) : T(0.0);
   }
   T yield_stress(const T& p) const { return swift_yield_stress(m_, p); }
+  // Yield stress at the state's eqps: the kept value when there is one (MaterialState::flow_stress).
+  T flow_stress(const State& s) const { return value_of(s.flow_stress) >= 0.0 ? s.flow_stress : yield_stress(s.eqps); }
   T yield_function(const State& s) const {
-    return equivalent_stress(s.stress - s.back_stress) - yield_stress(s.eqps);
+    return equivalent_stress(s.stress - s.back_stress) - flow_stress(s);
   }
   // d sigma_eq / d sigma at the shifted stress: the plastic strain rate (engineering shear)
   // per unit equivalent plastic strain rate.
@@ -84,7 +86,7 @@ class ReturnMapping {
   double kinematic_rate(const State& s) const {
     switch (m_.kinematic) {
       case KinematicLaw::armstrong_frederick: return value_of(m_.CX);
-      case KinematicLaw::ziegler: return value_of(m_.GA + m_.CA / yield_stress(s.eqps));
+      case KinematicLaw::ziegler: return value_of(m_.GA + m_.CA / flow_stress(s));
       default: return 0.0;
     }
   }
@@ -103,7 +105,8 @@ class ReturnMapping {
       if (tangent) *tangent = C_;
       return result;
     }
-    const T s_ref = yield_stress(s0.eqps);
+    const T s_ref = flow_stress(s0);
+    s1.flow_stress = s_ref;  // the state's yield stress if the step is elastic; assemble() sets it otherwise
     const T f_tr = equivalent_stress(sigma_tr - s0.back_stress) - s_ref;
     if (!is_finite(f_tr)) return fail(result, "non-finite trial stress");
     if (value_of(f_tr) <= options_.tolerance * value_of(s_ref)) {
@@ -181,6 +184,7 @@ class ReturnMapping {
     if (m_.kinematic != KinematicLaw::none) s1.back_stress = s1.stress - ev.xi;  // else X1 = X0 exactly
     s1.plastic_strain = s0.plastic_strain + d_eps_p;
     s1.eqps = s0.eqps + dl;
+    s1.flow_stress = ev.s;  // yield_stress(s0.eqps + dl) of the last evaluation: that of s1.eqps
     s1.plastic_work = s0.plastic_work + s1.stress.dot(d_eps_p);
     if constexpr (Dim == 3) {
       const T d_eps_p_zz = -(d_eps_p(0) + d_eps_p(1));
@@ -206,7 +210,7 @@ class ReturnMapping {
       const Vec phi_tr = Minv.transpose() * grad;
       const Vec g = -phi_tr / ev.dphi;  // d dl / d sigma_tr
       const Mat dxi = Minv + ev.dxi * g.transpose();
-      const Mat CP = C_ * P_;
+      const Mat& CP = CP_;
       const Mat dsig_dtr = Mat::Identity() - ev.q * CP * dxi - (CP * ev.xi) * (ev.dq * g.transpose());
       *tangent = dsig_dtr * C_;
     }
@@ -282,9 +286,11 @@ class ReturnMapping {
     ev.a = a;
     ev.e = e;
     ev.m = m;
-    const Mat KP = (C_ + e * A_) * P_;
+    // Isotropic hardening (a = 1, e = 0): the products are constants of the law.
+    const bool isotropic = m_.kinematic == KinematicLaw::none;
+    const Mat KP = isotropic ? CP_ : Mat((C_ + e * A_) * P_);
     const Mat M = a * Mat::Identity() + ev.q * KP;
-    const Mat dM = da * Mat::Identity() + ev.dq * KP + (ev.q * de) * (A_ * P_);
+    const Mat dM = isotropic ? Mat(ev.dq * KP) : Mat(da * Mat::Identity() + ev.dq * KP + (ev.q * de) * (A_ * P_));
     const Vec b = sigma_tr - m * s0.back_stress;
     const Vec db = -dm * s0.back_stress;
     if constexpr (Dim <= 4) ev.Minv = M.inverse();
@@ -321,6 +327,7 @@ class ReturnMapping {
   std::shared_ptr<const ReturnMapping<double, Dim>> values_;  // Jets only: the value law
   ReturnMappingOptions options_;
   Mat C_, P_, A_;
+  Mat CP_;  // C P
 };
 
 }  // namespace spifit::material
