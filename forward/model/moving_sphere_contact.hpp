@@ -70,11 +70,14 @@ class MovingSphereContact {
   std::vector<std::vector<int>> neighbourhood_;   // per tool, the last one
   std::vector<std::pair<int, Eigen::Vector3d>> last_forces_;  // node, force of the last solve
   std::vector<Eigen::Vector3d> last_positions_;
+  std::vector<double> thickness_;  // per element, the thickness whose half offsets the tool-side surface (follow_thickness)
   Eigen::Vector3d tool_force_ = Eigen::Vector3d::Zero();
   MstStatistics stats_;
   int last_points_ = 0;
 
   std::vector<int> grow_neighbourhood(int tool, const Eigen::Vector3d& centre);
+  // Moves each element's thickness_ towards its committed thickness by the tool's travel of the next step.
+  void follow_thickness(double lambda_next);
   // Where a node's translation goes, and its director, over the next step without contact forces.
   Eigen::Vector3d next_move(int node, const Eigen::VectorXd& increment) const;
   Eigen::Vector3d next_director(int node, const Eigen::VectorXd& increment) const;

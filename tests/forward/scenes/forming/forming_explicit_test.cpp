@@ -77,11 +77,34 @@ TEST(ExplicitIndent, MovingSphericalToolLeavesNoPenetrationAndKeepsCoulombsLaw) 
   EXPECT_LT(r.force.max_surface_penetration(), 1e-3);
   EXPECT_LE(mst.at("max_friction_over_mu_normal").get<double>(), 1.0 + 1e-12);
   EXPECT_GT(mst.at("solves").get<long>(), 100);
-  // Measured: 99.15 N against 97.21 N (+2.0 %).
+  // Measured: 99.61 N against 97.21 N (+2.5 %).
   EXPECT_NEAR(r.force.peak().z() / implicit.force.peak().z(), 1.0, 0.03);
   const model::ModelEnergies& en = r.final_energies;
   EXPECT_NEAR(en.external_work, mst.at("work_on_sheet").get<double>(), 1e-9 * en.external_work);
   EXPECT_LT(std::abs(en.balance_error()), 0.01 * en.external_work) << "balance error " << en.balance_error() << " N mm";
+}
+
+// Below mass scaling 1e6 the Moving Spherical Tool's force used to fall with the step (-22 % at
+// 1e4, -47 % at 1e3 over the 2 mm indent): the tool-side surface was offset by the committed
+// thickness, which changes with every step's membrane strains unforeseen by the prediction, and
+// the next solve closed the gap that opened, feeding an oscillation of the nodes under the tool
+// (docs/design/explicit.md, "MST contact"). The first 0.2 mm at 1e4 show it in 7 500 steps.
+TEST(ExplicitIndent, MovingSphericalToolKeepsTheForceAndTheEnergyBalanceAtSmallMassScaling) {
+  FormingScene implicit_scene = indent(0.2);
+  implicit_scene.contact.penalty = 1e5;
+  const FormingResult implicit = run_forming_scene(implicit_scene);
+  ASSERT_TRUE(implicit.ok()) << implicit.message;
+  FormingScene s = explicit_indent(0.2, 1e4);
+  s.contact.method = contact::ContactOptions::Method::mst;
+  const FormingResult r = run_forming_scene(s);
+  ASSERT_TRUE(r.ok()) << r.message;
+  // Measured: 16.76 N against 16.96 N (-1.1 %; the offset by the committed thickness: -10.8 %).
+  EXPECT_NEAR(r.force.peak().z() / implicit.force.peak().z(), 1.0, 0.03);
+  // Measured: 3.6e-5 of the external work and a kinetic energy of 7e-5 of the internal one (the
+  // committed thickness: -1.3e-2 and 1.1e-2).
+  const model::ModelEnergies& en = r.final_energies;
+  EXPECT_LT(std::abs(en.balance_error()), 1e-3 * en.external_work) << "balance error " << en.balance_error() << " N mm";
+  EXPECT_LT(en.kinetic, 1e-3 * en.internal());
 }
 
 TEST(ExplicitIndent, TheMovingSphericalToolNeedsTheExplicitScheme) {
