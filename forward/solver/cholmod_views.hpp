@@ -3,6 +3,8 @@
 // (linear_solver.cpp, split_cholmod.cpp) hand CHOLMOD the same kinds of views.
 #include <cholmod.h>
 
+#include "forward/solver/permuted_lower.hpp"
+
 namespace spifit::solver {
 
 // A symmetric n x n matrix stored with both triangles in CSR, read as CSC (the same matrix);
@@ -36,5 +38,13 @@ inline cholmod_dense column_view(const double* x, long n) {
   B.dtype = CHOLMOD_DOUBLE;
   return B;
 }
+
+// The permuted lower triangle (stype = -1) over its arrays.
+cholmod_sparse lower_csc_view(PermutedLower& a);
+
+// Symbolic analysis of the permuted lower triangle with the natural ordering and no postordering
+// (its permutation already has both), supernodal. nullptr on failure, or when CHOLMOD chose
+// another order (the factorisation would then permute again).
+cholmod_factor* analyse_as_ordered(PermutedLower& a, cholmod_common* common);
 
 }  // namespace spifit::solver

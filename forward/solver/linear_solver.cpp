@@ -75,7 +75,8 @@ class Umfpack final : public LinearSolver {
 };
 
 // CHOLMOD (long-index interface) on the symmetric matrix: the CSR arrays read as CSC are A^T =
-// A; stype = 1 uses the upper triangle.
+// A. The fill-reducing ordering is chosen on them; the factorisations then get the permuted
+// lower triangle ready-made (permuted_lower.hpp).
 class Cholmod final : public LinearSolver {
  public:
   Cholmod() {
@@ -97,18 +98,12 @@ class Cholmod final : public LinearSolver {
   }
   bool factorize(const SparseMatrix& a) override {
     const auto& p = a.pattern();
-    cholmod_sparse A = view(a);
-    if (pattern_ != &p || nnz_ != p.nonzeros()) {
-      if (factor_) cholmod_l_free_factor(&factor_, &common_);
-      factor_ = cholmod_l_analyze(&A, &common_);
-      if (!factor_) return fail("CHOLMOD symbolic analysis failed");
-      pattern_ = &p;
-      nnz_ = p.nonzeros();
-      ++symbolic_;
-    }
+    if ((pattern_ != &p || nnz_ != p.nonzeros()) && !analyse(p)) return false;
+    permuted_.gather(a.values().data());
     int ok = 0;
     {
       const runtime::SerialOpenMpScope serial;  // CHOLMOD's own 4-thread regions cost more than they gain
+      cholmod_sparse A = lower_csc_view(permuted_);
       ok = cholmod_l_factorize(&A, factor_, &common_);
     }
     ++numeric_;
@@ -119,7 +114,8 @@ class Cholmod final : public LinearSolver {
   }
   bool solve(const Eigen::VectorXd& b, Eigen::VectorXd* x) override {
     if (!factor_) return fail("solve before factorize");
-    cholmod_dense B = column_view(b.data(), n_);
+    Eigen::VectorXd y = permuted_.to_pivots(b.data());
+    cholmod_dense B = column_view(y.data(), n_);
     cholmod_dense* X = nullptr;
     {
       const runtime::SerialOpenMpScope serial;
@@ -127,21 +123,32 @@ class Cholmod final : public LinearSolver {
     }
     if (!X) return fail("CHOLMOD solve failed");
     x->resize(n_);
-    const double* xv = static_cast<const double*>(X->x);
-    for (long i = 0; i < n_; ++i) (*x)(i) = xv[i];
+    permuted_.from_pivots(static_cast<const double*>(X->x), x->data());
     cholmod_l_free_dense(&X, &common_);
     return true;
   }
 
  private:
-  static cholmod_sparse view(const SparseMatrix& a) {
-    const auto& p = a.pattern();
-    return symmetric_csc_view(p.rows, p.row_ptr.data(), p.cols.data(), a.values().data());
+  // The ordering of the pattern, then the analysis of its permuted lower triangle.
+  bool analyse(const SparsePattern& p) {
+    if (factor_) cholmod_l_free_factor(&factor_, &common_);
+    cholmod_sparse A = symmetric_csc_view(p.rows, p.row_ptr.data(), p.cols.data(), nullptr);
+    cholmod_factor* ordered = cholmod_l_analyze(&A, &common_);
+    if (!ordered) return fail("CHOLMOD symbolic analysis failed");
+    permuted_ = permuted_lower(p.rows, p.row_ptr.data(), p.cols.data(), nullptr, static_cast<const long*>(ordered->Perm));
+    cholmod_l_free_factor(&ordered, &common_);
+    factor_ = analyse_as_ordered(permuted_, &common_);
+    if (!factor_) return fail("CHOLMOD symbolic analysis of the permuted matrix failed");
+    pattern_ = &p;
+    nnz_ = p.nonzeros();
+    ++symbolic_;
+    return true;
   }
   bool fail(const std::string& m) {
     error_ = m;
     return false;
   }
+  PermutedLower permuted_;
   cholmod_common common_;
   cholmod_factor* factor_ = nullptr;
   const SparsePattern* pattern_ = nullptr;

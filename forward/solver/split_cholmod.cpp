@@ -66,6 +66,7 @@ struct Half {
   std::vector<long> ptr, idx;        // the half's pattern, both triangles
   std::vector<long> gather;          // value k of the half = value gather[k] of K
   std::vector<double> values;
+  PermutedLower permuted;            // what the factorisations get (permuted_lower.hpp)
   std::vector<long> separator_at;    // pivot nd + j of L -> separator index
   Eigen::MatrixXd lcc;               // ns x ns, lower: the separator block of L, pivot order
   Eigen::MatrixXd lcc_gram;          // lower part of lcc lcc^T
@@ -73,7 +74,7 @@ struct Half {
   // Forward substitution of [b_D; 0]; returns w = L^-1 P [b_D; 0] (pivot order).
   bool forward(const Eigen::VectorXd& b, Eigen::VectorXd* w) {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(n);
-    const long* perm = static_cast<const long*>(factor->Perm);
+    const long* perm = permuted.perm.data();
     for (long k = 0; k < n; ++k)
       if (perm[k] < nd) y(k) = b(global[static_cast<std::size_t>(perm[k])]);
     return substitute(CHOLMOD_L, &y, w);
@@ -117,8 +118,8 @@ class SplitCholmod final : public LinearSolver {
     factored_ = false;
     for_both_halves([&](int h) {
       Half& half = *halves_[static_cast<std::size_t>(h)];
-      for (std::size_t k = 0; k < half.gather.size(); ++k) half.values[k] = kv[static_cast<std::size_t>(half.gather[k])];
-      cholmod_sparse A = symmetric_csc_view(half.n, half.ptr.data(), half.idx.data(), half.values.data());
+      half.permuted.gather(kv.data());
+      cholmod_sparse A = lower_csc_view(half.permuted);
       const int st = cholmod_l_factorize(&A, half.factor, &half.common);
       ok[static_cast<std::size_t>(h)] = st && half.common.status != CHOLMOD_NOT_POSDEF;
       if (!ok[static_cast<std::size_t>(h)]) return;
@@ -184,7 +185,7 @@ class SplitCholmod final : public LinearSolver {
       Eigen::VectorXd u;
       ok[hh] = half.substitute(CHOLMOD_Lt, &v, &u);
       if (!ok[hh]) return;
-      const long* perm = static_cast<const long*>(half.factor->Perm);
+      const long* perm = half.permuted.perm.data();
       for (long k = 0; k < half.n; ++k)
         if (perm[k] < half.nd) (*x)(half.global[static_cast<std::size_t>(perm[k])]) = u(k);
     });
@@ -304,6 +305,10 @@ class SplitCholmod final : public LinearSolver {
       if (last) {
         half->separator_at.resize(static_cast<std::size_t>(ns_));
         for (long j = 0; j < ns_; ++j) half->separator_at[static_cast<std::size_t>(j)] = lp[half->nd + j] - half->nd;
+        half->permuted = permuted_lower(half->n, half->ptr.data(), half->idx.data(), half->gather.data(), lp);
+        cholmod_l_free_factor(&half->factor, &half->common);
+        half->factor = analyse_as_ordered(half->permuted, &half->common);
+        if (!half->factor) return fail("split CHOLMOD: symbolic analysis of the permuted half failed");
         return true;
       }
     }
