@@ -1,5 +1,6 @@
 #include "forward/model/explicit_mass.hpp"
 
+#include "forward/io/binary_archive.hpp"
 #include "forward/model/rotation_frames.hpp"
 #include "forward/model/shell_model.hpp"
 
@@ -128,6 +129,39 @@ double current_time_step(const ShellModel& model, const ExplicitMass& mass, doub
     step = std::min(step, mass.element_step[k] * element_length(model, e) / mass.element_length[k]);
   }
   return safety * step;
+}
+
+void save_explicit_mass(io::BinaryWriter& w, const ExplicitMass& mass) {
+  w.section("explicit_mass");
+  w.vector(mass.diagonal);
+  w.f64s(mass.element_step);
+  w.f64s(mass.element_length);
+  w.f64s(mass.element_factor);
+  for (double x : {mass.time_step, mass.smallest_unscaled_step, mass.mass, mass.added_mass}) w.f64(x);
+  w.i64(mass.smallest_element);
+  w.i64(mass.scaled_elements);
+}
+
+ExplicitMass load_explicit_mass(io::BinaryReader& r, int num_dofs, int num_elements) {
+  r.section("explicit_mass");
+  ExplicitMass m;
+  m.diagonal = r.vector();
+  m.element_step = r.f64s();
+  m.element_length = r.f64s();
+  m.element_factor = r.f64s();
+  m.time_step = r.f64();
+  m.smallest_unscaled_step = r.f64();
+  m.mass = r.f64();
+  m.added_mass = r.f64();
+  const std::int64_t smallest = r.i64(), scaled = r.i64();
+  const auto ne = static_cast<std::size_t>(num_elements);
+  if (m.diagonal.size() != num_dofs || m.element_step.size() != ne || m.element_length.size() != ne || m.element_factor.size() != ne)
+    throw io::ArchiveError("explicit mass of another model size");
+  if (smallest < 0 || smallest >= num_elements || scaled < 0 || scaled > num_elements)
+    throw io::ArchiveError("explicit mass: invalid element index or count");
+  m.smallest_element = static_cast<int>(smallest);
+  m.scaled_elements = static_cast<int>(scaled);
+  return m;
 }
 
 }  // namespace spifit::model

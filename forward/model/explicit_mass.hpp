@@ -15,6 +15,11 @@
 #include <string>
 #include <vector>
 
+namespace spifit::io {
+class BinaryWriter;
+class BinaryReader;
+}  // namespace spifit::io
+
 namespace spifit::model {
 
 class ShellModel;
@@ -47,6 +52,13 @@ double element_length(const ShellModel& model, int e);
 // The stable step now: each element's start-up step scaled by how its characteristic length
 // changed since (thinning and shear shorten it), times the safety factor.
 double current_time_step(const ShellModel& model, const ExplicitMass& mass, double safety);
+
+// Checkpoints of an explicit run, bit-exact: a resumed run keeps the mass and the element steps
+// and lengths of its start, not those of the deformed geometry it resumes from (which would
+// change every step and the phase of the time step's re-estimates).
+void save_explicit_mass(io::BinaryWriter& w, const ExplicitMass& mass);
+// io::ArchiveError when the sizes do not fit a model of num_dofs DOFs and num_elements elements.
+ExplicitMass load_explicit_mass(io::BinaryReader& r, int num_dofs, int num_elements);
 
 // "element E (centre x, y, z), l = L mm" for messages.
 std::string describe_element(const ShellModel& model, int e);

@@ -1,6 +1,7 @@
 #include "forward/model/moving_sphere_contact.hpp"
 
 #include "forward/element/director.hpp"
+#include "forward/io/binary_archive.hpp"
 #include "forward/element/quad_shape.hpp"
 #include "forward/model/explicit_mass.hpp"
 #include "forward/model/rotation_frames.hpp"
@@ -328,6 +329,74 @@ Eigen::VectorXd MovingSphereContact::forces(double dt, double lambda_next, const
   last_forces_ = std::move(new_forces);
   last_positions_ = x;
   return f_full;
+}
+
+namespace {
+
+void save_indices(io::BinaryWriter& w, const std::vector<int>& v) {
+  w.i64(static_cast<std::int64_t>(v.size()));
+  for (int i : v) w.i64(i);
+}
+
+// An index read from a checkpoint, refused outside [0, size).
+int load_index(io::BinaryReader& r, int size, const char* what) {
+  const std::int64_t i = r.i64();
+  if (i < 0 || i >= size) throw io::ArchiveError(std::string("MST state: invalid ") + what + " " + std::to_string(i));
+  return static_cast<int>(i);
+}
+
+std::vector<int> load_indices(io::BinaryReader& r, int size, const char* what) {
+  const std::int64_t n = r.i64();
+  if (n < 0 || n > size) throw io::ArchiveError(std::string("MST state: invalid ") + what + " count " + std::to_string(n));
+  std::vector<int> v;
+  for (std::int64_t k = 0; k < n; ++k) v.push_back(load_index(r, size, what));
+  return v;
+}
+
+}  // namespace
+
+void MovingSphereContact::save_state(io::BinaryWriter& w) const {
+  w.section("mst");
+  w.f64s(thickness_);
+  w.i64(static_cast<std::int64_t>(neighbourhood_.size()));
+  for (const auto& elements : neighbourhood_) save_indices(w, elements);
+  w.i64(static_cast<std::int64_t>(last_forces_.size()));
+  for (const auto& [node, f] : last_forces_) {
+    w.i64(node);
+    w.vec3(f);
+  }
+  w.vec3s(last_positions_);
+  w.vec3(tool_force_);
+  for (long n : {stats_.solves, stats_.sweeps, stats_.unconverged, static_cast<long>(stats_.max_points), static_cast<long>(last_points_)}) w.i64(n);
+  for (double x : {stats_.max_penetration, stats_.max_friction_ratio, stats_.work}) w.f64(x);
+}
+
+void MovingSphereContact::load_state(io::BinaryReader& r) {
+  r.section("mst");
+  const int ne = model_.num_elements(), nn = model_.num_nodes();
+  std::vector<double> thickness = r.f64s();
+  if (thickness.size() != static_cast<std::size_t>(ne)) throw io::ArchiveError("MST state of another model size");
+  r.expect_count("MST tools", static_cast<std::int64_t>(rotations_.size()));
+  for (auto& elements : neighbourhood_) elements = load_indices(r, ne, "neighbourhood element");
+  const std::int64_t nf = r.i64();
+  if (nf < 0 || nf > nn) throw io::ArchiveError("MST state: invalid force count " + std::to_string(nf));
+  last_forces_.clear();
+  for (std::int64_t k = 0; k < nf; ++k) {
+    const int node = load_index(r, nn, "node");
+    last_forces_.emplace_back(node, r.vec3());
+  }
+  last_positions_ = r.vec3s();
+  if (last_positions_.size() != static_cast<std::size_t>(nn)) throw io::ArchiveError("MST state of another model size");
+  tool_force_ = r.vec3();
+  stats_.solves = r.i64();
+  stats_.sweeps = r.i64();
+  stats_.unconverged = r.i64();
+  stats_.max_points = static_cast<int>(r.i64());
+  last_points_ = static_cast<int>(r.i64());
+  stats_.max_penetration = r.f64();
+  stats_.max_friction_ratio = r.f64();
+  stats_.work = r.f64();
+  thickness_ = std::move(thickness);
 }
 
 }  // namespace spifit::model

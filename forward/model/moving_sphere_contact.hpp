@@ -26,6 +26,11 @@
 #include <functional>
 #include <vector>
 
+namespace spifit::io {
+class BinaryWriter;
+class BinaryReader;
+}  // namespace spifit::io
+
 namespace spifit::model {
 
 class ShellModel;
@@ -57,6 +62,13 @@ class MovingSphereContact {
   const Eigen::Vector3d& tool_force() const { return tool_force_; }
   const MstStatistics& statistics() const { return stats_; }
   int last_contact_points() const { return last_points_; }
+
+  // Checkpoints of an explicit run, bit-exact: the followed thickness, the neighbourhoods the
+  // next search grows from, the last forces and positions (the next step's work pairs with
+  // them), the tool force and the statistics. Loaded into a contact built alike;
+  // io::ArchiveError for another model size or number of tools.
+  void save_state(io::BinaryWriter& w) const;
+  void load_state(io::BinaryReader& r);
 
  private:
   struct Point;

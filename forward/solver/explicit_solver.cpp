@@ -37,7 +37,7 @@ ExplicitSolver::ExplicitSolver(NonlinearProblem& problem, const DofConstraints& 
     for (const DofConstraints::Term& t : constraints_.expansion(i)) m_(t.reduced) += t.coefficient * t.coefficient * mass(i);
   for (Eigen::Index j = 0; j < m_.size(); ++j)
     if (!(m_(j) > 0.0)) throw std::invalid_argument("ExplicitSolver: reduced unknown " + std::to_string(j) + " has no mass");
-  v_ = a_ = Eigen::VectorXd::Zero(m_.size());
+  state_.v = state_.a = Eigen::VectorXd::Zero(m_.size());
   prescribed_rate_ = constraints_.prescribed_values(1.0);  // prescribed values are amplitude x load factor
   moves_prescribed_ = prescribed_rate_.cwiseAbs().maxCoeff() > 0.0;
   re_.resize(problem_.element_dofs().size());
@@ -62,7 +62,8 @@ bool ExplicitSolver::residual(double lambda, Eigen::VectorXd* r, ElementEvaluati
 }
 
 bool ExplicitSolver::step(double dt, double lambda0, double lambda1, ElementEvaluation* failure) {
-  const Eigen::VectorXd vh = v_ + 0.5 * dt * a_;
+  Eigen::VectorXd& a = state_.a;
+  const Eigen::VectorXd vh = state_.v + 0.5 * dt * a;
   Eigen::VectorXd du = constraints_.expand(dt * vh);
   if (moves_prescribed_ && lambda1 != lambda0) du += (lambda1 - lambda0) * prescribed_rate_;
   problem_.begin_increment(lambda0, lambda1);
@@ -74,13 +75,13 @@ bool ExplicitSolver::step(double dt, double lambda0, double lambda1, ElementEval
   }
   problem_.accept_trial();
   problem_.commit(lambda1);
-  a_ = -r.cwiseQuotient(m_) - options_.damping * vh;
+  a = -r.cwiseQuotient(m_) - options_.damping * vh;
   if (contact_) {
-    const Eigen::VectorXd next = dt * (vh + dt * a_);  // the next step's increment without contact forces
-    a_ += constraints_.reduce(contact_(dt, lambda1 + (lambda1 - lambda0), next)).cwiseQuotient(m_);
+    const Eigen::VectorXd next = dt * (vh + dt * a);  // the next step's increment without contact forces
+    a += constraints_.reduce(contact_(dt, lambda1 + (lambda1 - lambda0), next)).cwiseQuotient(m_);
   }
-  v_ = vh + 0.5 * dt * a_;
-  damping_work_ += dt * options_.damping * vh.dot(m_.cwiseProduct(vh));
+  state_.v = vh + 0.5 * dt * a;
+  state_.damping_work += dt * options_.damping * vh.dot(m_.cwiseProduct(vh));
   return true;
 }
 
@@ -90,7 +91,7 @@ bool ExplicitSolver::start(double lambda, ElementEvaluation* failure) {
   Eigen::VectorXd r;
   const bool ok = residual(lambda, &r, failure);
   problem_.revert();
-  if (ok) a_ = -r.cwiseQuotient(m_) - options_.damping * v_;
+  if (ok) state_.a = -r.cwiseQuotient(m_) - options_.damping * state_.v;
   return ok;
 }
 
@@ -108,78 +109,116 @@ bool ExplicitSolver::quarter_steps(double dt, double lambda0, double lambda1, co
 
 std::string ExplicitSolver::non_finite_dof() const {
   Eigen::Index j = 0;
-  while (j < a_.size() && std::isfinite(a_(j))) ++j;
+  while (j < state_.a.size() && std::isfinite(state_.a(j))) ++j;
   for (int dof = 0; dof < constraints_.num_dofs(); ++dof)
     for (const DofConstraints::Term& t : constraints_.expansion(dof))
       if (t.reduced == j) return problem_.describe_dof(dof);
   return "reduced unknown " + std::to_string(j);
 }
 
-ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& bound, const AfterStep& after_step, const Callback& callback) {
+void ExplicitSolver::restore(ExplicitState state) {
+  if (state.v.size() != m_.size() || state.a.size() != m_.size())
+    throw std::invalid_argument("ExplicitSolver: a state of " + std::to_string(state.v.size()) + " unknowns, the problem has " +
+                                std::to_string(m_.size()));
+  state_ = std::move(state);
+}
+
+bool ExplicitSolver::begin(double lambda, const StepBound& bound, std::string* message) {
+  state_.lambda = lambda;
+  ElementEvaluation failure;
+  if (!start(lambda, &failure)) {
+    *message = "at the start: " + failure.where + ": " + failure.reason;
+    return false;
+  }
+  state_.step_bound = bound();
+  state_.started = true;
+  return true;
+}
+
+bool ExplicitSolver::take_step(double dt, double lambda1, const AfterStep& after_step, double* taken, std::string* message) {
+  ExplicitState& st = state_;
+  ElementEvaluation failure;
+  *taken = dt;
+  if (step(dt, st.lambda, lambda1, &failure)) {
+    st.time += dt;
+    if (after_step) after_step(dt);
+  } else {
+    *taken = 0.25 * dt;
+    ++st.cut_steps;
+    double reached = st.lambda;
+    if (!quarter_steps(dt, st.lambda, lambda1, after_step, &st.time, &reached, &failure)) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "step %ld at time %.6g s (load factor %.6g), also cut to a quarter: ", st.steps + 1, st.time, reached);
+      *message = buf + failure.where + ": " + failure.reason;
+      st.lambda = reached;
+      return false;
+    }
+  }
+  st.lambda = lambda1;
+  ++st.steps;
+  st.min_step = st.min_step == 0.0 ? *taken : std::min(st.min_step, *taken);
+  st.max_step = std::max(st.max_step, *taken);
+  return true;
+}
+
+bool ExplicitSolver::advance(double point, double duration, const StepBound& bound, const AfterStep& after_step, ExplicitInterval* iv,
+                             std::string* message) {
+  ExplicitState& st = state_;
+  iv->lambda_before = st.lambda;
+  while (st.lambda < point) {
+    const double remaining = (point - st.lambda) * duration;
+    const double n = std::max(1.0, std::ceil(remaining / st.step_bound * (1.0 - 1e-12)));
+    const double lambda1 = n == 1.0 ? point : st.lambda + (point - st.lambda) / n;
+    double taken = 0.0;
+    if (!take_step(remaining / n, lambda1, after_step, &taken, message)) return false;
+    ++iv->steps;
+    iv->time_step = taken;
+    if (!st.a.allFinite()) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "step %ld at time %.6g s (load factor %.6g): the acceleration is not finite at ", st.steps, st.time, st.lambda);
+      *message = buf + non_finite_dof() + " (unstable: a smaller time_step_safety or more mass scaling)";
+      return false;
+    }
+    if (st.steps % options_.recheck_every == 0) st.step_bound = bound();
+  }
+  iv->index = ++st.outputs;
+  iv->lambda = st.lambda;
+  iv->total_steps = st.steps;
+  iv->time = st.time;
+  iv->kinetic = kinetic_energy();
+  iv->damping_work = st.damping_work;
+  return true;
+}
+
+ExplicitSummary ExplicitSolver::summary(bool completed, std::string message) const {
   ExplicitSummary out;
-  out.lambda = s.lambda_start;
+  out.completed = completed;
+  out.lambda = state_.lambda;
+  out.message = std::move(message);
+  out.steps = state_.steps;
+  out.cut_steps = state_.cut_steps;
+  out.time = state_.time;
+  out.min_step = state_.min_step;
+  out.max_step = state_.max_step;
+  return out;
+}
+
+ExplicitSummary ExplicitSolver::run(const ExplicitSchedule& s, const StepBound& bound, const AfterStep& after_step, const Callback& callback) {
   if (!(s.duration > 0.0 && s.output_interval > 0.0 && s.lambda_end > s.lambda_start)) {
+    ExplicitSummary out;
+    out.lambda = s.lambda_start;
     out.message = "explicit schedule: need duration > 0, output_interval > 0 and lambda_end > lambda_start";
     return out;
   }
-  ElementEvaluation failure;
-  if (!start(s.lambda_start, &failure)) {
-    out.message = "at the start: " + failure.where + ": " + failure.reason;
-    return out;
-  }
-  double lambda = s.lambda_start, dt_bound = bound();
-  out.min_step = out.max_step = 0.0;
-  int index = 0;
+  std::string message;
+  if (!state_.started && !begin(s.lambda_start, bound, &message)) return summary(false, message);
   for (double point : output_points(s)) {
+    if (point <= state_.lambda) continue;  // passed before the checkpoint a restored run starts from
     ExplicitInterval iv;
-    iv.lambda_before = lambda;
-    while (lambda < point) {
-      const double remaining = (point - lambda) * s.duration;
-      const double n = std::max(1.0, std::ceil(remaining / dt_bound * (1.0 - 1e-12)));
-      const double dt = remaining / n;
-      const double lambda1 = n == 1.0 ? point : lambda + (point - lambda) / n;
-      double taken = dt;  // the step size taken (a quarter when cut)
-      if (!step(dt, lambda, lambda1, &failure)) {
-        taken = 0.25 * dt;
-        ++out.cut_steps;
-        double reached = lambda;
-        if (!quarter_steps(dt, lambda, lambda1, after_step, &out.time, &reached, &failure)) {
-          char buf[200];
-          std::snprintf(buf, sizeof buf, "step %ld at time %.6g s (load factor %.6g), also cut to a quarter: ", out.steps + 1, out.time, reached);
-          out.message = buf + failure.where + ": " + failure.reason;
-          out.lambda = reached;
-          return out;
-        }
-      } else {
-        out.time += dt;
-        if (after_step) after_step(dt);
-      }
-      lambda = lambda1;
-      ++out.steps;
-      ++iv.steps;
-      iv.time_step = taken;
-      out.min_step = out.min_step == 0.0 ? taken : std::min(out.min_step, taken);
-      out.max_step = std::max(out.max_step, taken);
-      if (!a_.allFinite()) {
-        char buf[200];
-        std::snprintf(buf, sizeof buf, "step %ld at time %.6g s (load factor %.6g): the acceleration is not finite at ", out.steps, out.time, lambda);
-        out.message = buf + non_finite_dof() + " (unstable: a smaller time_step_safety or more mass scaling)";
-        out.lambda = lambda;
-        return out;
-      }
-      if (out.steps % options_.recheck_every == 0) dt_bound = bound();
-    }
-    out.lambda = lambda;
-    iv.index = ++index;
-    iv.lambda = lambda;
-    iv.total_steps = out.steps;
-    iv.time = out.time;
-    iv.kinetic = kinetic_energy();
-    iv.damping_work = damping_work_;
-    if (callback && !callback(iv)) return out;
+    if (!advance(point, s.duration, bound, after_step, &iv, &message)) return summary(false, message);
+    if (callback && !callback(iv)) return summary(false, "");
   }
-  out.completed = true;
-  return out;
+  return summary(true, "");
 }
 
 }  // namespace spifit::solver

@@ -8,9 +8,11 @@
 // step moves the load factor (the tool), evaluates the element residuals at the new
 // configuration (integrated from the last step's states, which are committed every step) and
 // commits. The load factor runs from lambda_start to lambda_end over `duration` seconds; the
-// run stops exactly at every output point and calls back there.
+// run stops exactly at every output point and calls back there. Its state at an output point
+// (state()) restored into a solver built alike (restore()) continues the run bit for bit.
 #include "forward/solver/dof_constraints.hpp"
 #include "forward/solver/explicit_options.hpp"
+#include "forward/solver/explicit_state.hpp"
 #include "forward/solver/nonlinear_problem.hpp"
 
 #include <Eigen/Core>
@@ -57,9 +59,16 @@ class ExplicitSolver {
   ExplicitSolver(NonlinearProblem& problem, const DofConstraints& constraints, const Eigen::VectorXd& mass, ExplicitOptions options);
 
   // Reduced velocities (initial conditions of tests; zero by default).
-  Eigen::VectorXd& velocity() { return v_; }
+  Eigen::VectorXd& velocity() { return state_.v; }
   const Eigen::VectorXd& reduced_mass() const { return m_; }
-  double kinetic_energy() const { return 0.5 * v_.dot(m_.cwiseProduct(v_)); }
+  double kinetic_energy() const { return 0.5 * state_.v.dot(m_.cwiseProduct(state_.v)); }
+
+  // The state after the last step; at an output point (in the callback) where a resumed run
+  // goes on from (a checkpoint).
+  const ExplicitState& state() const { return state_; }
+  // Continues from a saved state: run() with the same schedule then skips the output points
+  // passed and the first acceleration. std::invalid_argument for a state of another size.
+  void restore(ExplicitState state);
 
   // Current stable step [s] (re-estimated every options.recheck_every steps; the steps of an
   // interval are never longer than the bound at its start).
@@ -81,12 +90,12 @@ class ExplicitSolver {
   NonlinearProblem& problem_;
   const DofConstraints& constraints_;
   ExplicitOptions options_;
-  Eigen::VectorXd m_, v_, a_;     // reduced mass, velocity, acceleration
+  Eigen::VectorXd m_;             // reduced mass
+  ExplicitState state_;           // velocity, acceleration, load factor, time, counters
   Eigen::VectorXd prescribed_rate_;  // prescribed values per unit load factor (full DOF vector)
   bool moves_prescribed_ = false;
   std::vector<Eigen::VectorXd> re_;
   std::vector<ElementEvaluation> ev_;
-  double damping_work_ = 0.0;
   ContactForces contact_;
   // Residual (internal - external) reduced at the problem's trial configuration and lambda;
   // false with the failure when an element fails.
@@ -95,6 +104,14 @@ class ExplicitSolver {
   bool start(double lambda, ElementEvaluation* failure);
   // One step of dt from lambda0 to lambda1: false (problem reverted) when an element fails.
   bool step(double dt, double lambda0, double lambda1, ElementEvaluation* failure);
+  // The first acceleration and step bound of a fresh run; false with the message when an element fails.
+  bool begin(double lambda, const StepBound& bound, std::string* message);
+  // Steps to the output point (the steps of the interval equal, each within the step bound,
+  // re-estimated every options_.recheck_every steps); false with the message when it fails.
+  bool advance(double point, double duration, const StepBound& bound, const AfterStep& after_step, ExplicitInterval* iv, std::string* message);
+  // One step of dt to lambda1 (cut into quarters when it fails), counted; taken: its size.
+  bool take_step(double dt, double lambda1, const AfterStep& after_step, double* taken, std::string* message);
+  ExplicitSummary summary(bool completed, std::string message) const;
   // A failed step taken again as four quarters; false (with the load factor reached) when one fails.
   bool quarter_steps(double dt, double lambda0, double lambda1, const AfterStep& after_step, double* time, double* reached,
                      ElementEvaluation* failure);

@@ -38,7 +38,7 @@ FeRunOutcome FeRun::run(const nlohmann::json& head) {
     // The checkpoint is read (and refused with an InputError) before any output is touched.
     if (!files_.enabled()) throw std::logic_error("FeRun: a resume needs an output directory");
     solver::NewtonState newton;
-    read_run_checkpoint(*files_.directory(), inputs, model_.get(), &newton, &restored, observers_);
+    read_run_checkpoint(*files_.directory(), inputs, model_.get(), &newton, nullptr, &restored, observers_);
     solver_->set_state(newton);
     t0 -= std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(restored.wall_seconds));
   }

@@ -61,7 +61,7 @@ struct FeRunSetup {
   solver::NewtonOptions newton;
   // The explicit scheme instead of the Newton solver (fe_run_explicit.cpp): its options, and the
   // sheet's density [t/mm^3]. Output points every newton.initial_increment of the load factor
-  // and at the marks; no checkpoints.
+  // and at the marks; checkpoints at output points (explicit_dynamics.hpp).
   std::optional<solver::ExplicitOptions> explicit_scheme;
   double density = 2.7e-9;
   std::vector<Mark> marks;  // by increasing travel

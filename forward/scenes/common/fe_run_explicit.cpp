@@ -1,18 +1,17 @@
 // FeRun with the explicit scheme (docs/design/explicit.md): the same model, tool, constraints,
 // marks and observers as an implicit run; solver::ExplicitSolver steps the load factor in time,
 // and the observers see the state at every output point (every newton.initial_increment of the
-// load factor, and the marks) with the tool force averaged over the interval.
+// load factor, and the marks) with the tool force averaged over the interval. Checkpoints are
+// written at output points only, where the force filter has just been reset, so that its state
+// need not be saved.
 #include "forward/io/input_error.hpp"
-#include "forward/model/explicit_mass.hpp"
 #include "forward/model/model_energies.hpp"
-#include "forward/model/moving_sphere_contact.hpp"
+#include "forward/scenes/common/explicit_dynamics.hpp"
 #include "forward/scenes/common/fe_run.hpp"
 #include "forward/scenes/common/fe_run_stepper.hpp"
-#include "forward/solver/explicit_solver.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <memory>
+#include <cstdio>
+#include <string>
 
 namespace spifit::scene {
 namespace {
@@ -51,9 +50,6 @@ class IntervalForceFit {
   double t_ = 0.0, s0_ = 0.0, s1_ = 0.0, s2_ = 0.0;
   Eigen::Vector3d f0_ = Eigen::Vector3d::Zero(), f1_ = Eigen::Vector3d::Zero();
 };
-
-// The largest penalty the contact uses (normal or tangential): it bounds the stable step too.
-double contact_stiffness(const contact::ContactOptions& c) { return std::max(c.penalty, c.tangential_penalty); }
 
 // summary.json "explicit" (docs/reference/outputs.md).
 nlohmann::json dynamics_json(const solver::ExplicitSummary& r, const solver::ExplicitOptions& o, const model::ExplicitMass& mass, double duration,
@@ -107,50 +103,56 @@ void check_step_count(const FeRunSetup& setup, const model::ShellModel& model, c
   throw io::InputError(scene_file(setup), "solver.mass_scaling", io::format_number(o.mass_scaling), buf);
 }
 
+// Every newton.initial_increment of the load factor, and the marks. A resumed run's schedule is the
+// fresh run's: the solver skips the output points passed before its checkpoint.
+solver::ExplicitSchedule explicit_schedule(const FeRunSetup& setup, double duration) {
+  solver::ExplicitSchedule schedule;
+  schedule.duration = duration;
+  schedule.output_interval = setup.newton.initial_increment;
+  for (const Mark& m : setup.marks) schedule.stops.push_back(setup.load_map.lambda(m.travel));
+  return schedule;
+}
+
 }  // namespace
 
 FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
   const solver::ExplicitOptions& o = *setup_.explicit_scheme;
-  if (control_.resume)
-    throw io::InputError(scene_file(setup_), "solver.scheme", "explicit", "explicit runs keep no checkpoints, so there is nothing to resume");
-  const auto t0 = FeRunClock::now();
-  model::ExplicitMassInputs in;
-  in.density = setup_.density;
-  in.contact_stiffness = contact_stiffness(setup_.contact);
-  in.options = o;
-  const model::ExplicitMass mass = model::explicit_mass(*model_, in);
-  const double length = setup_.load_map.length();
-  const double duration = setup_.time_of_travel(length) / o.time_scaling;
-  check_step_count(setup_, *model_, mass, duration);
-  solver::ExplicitSolver solver(*model_, *constraints_, mass.diagonal, o);
+  auto t0 = FeRunClock::now();
+  // As for an implicit run: the input files' contents go into checkpoints and are compared on resume.
+  const RunInputs inputs = files_.enabled() ? read_run_inputs(setup_.kind, setup_.input_files) : RunInputs{};
   // The Moving Spherical Tool instead of the penalty: the tool stays for its geometry, without force.
-  std::unique_ptr<model::MovingSphereContact> mst;
-  if (setup_.contact.method == contact::ContactOptions::Method::mst) {
-    tool_->set_passive(true);
-    const toolpath::ToolPath& path = setup_.tool_path;
-    const LoadMap& map = setup_.load_map;
-    mst = std::make_unique<model::MovingSphereContact>(
-        *model_, *constraints_, solver.reduced_mass(), setup_.tool_radius, setup_.contact.friction,
-        [&path, &map](double lambda) { return path.at_distance(map.travel(lambda)); }, setup_.tool_copies_deg);
-    solver.set_contact_forces([&mst](double dt, double lambda_next, const Eigen::VectorXd& next) { return mst->forces(dt, lambda_next, next); });
+  if (setup_.contact.method == contact::ContactOptions::Method::mst) tool_->set_passive(true);
+  ExplicitDynamics dyn(setup_, *model_, *constraints_);
+  RunLog restored;
+  if (control_.resume) {
+    // The checkpoint is read (and refused with an InputError) before any output is touched.
+    if (!files_.enabled()) throw std::logic_error("FeRun: a resume needs an output directory");
+    read_run_checkpoint(*files_.directory(), inputs, model_.get(), nullptr, &dyn, &restored, observers_);
+    t0 -= std::chrono::duration_cast<FeRunClock::duration>(std::chrono::duration<double>(restored.wall_seconds));
+  } else {
+    dyn.start();
   }
+  const double duration = setup_.time_of_travel(setup_.load_map.length()) / o.time_scaling;
+  check_step_count(setup_, *model_, dyn.mass(), duration);
+  model::MovingSphereContact* mst = dyn.mst();
 
   RunHeartbeat heartbeat(files_, head, control_.heartbeat_seconds);
   heartbeat.write();
-  const RunInputs inputs;
   Stepper step(*this, inputs, t0, heartbeat);
-  for (auto& ob : observers_) ob->at_start(*model_);
+  step.start_from(restored);
+  step.checkpoints.every_marks = setup_.output.checkpoint_every;
+  step.checkpoints.every_increments = setup_.output.checkpoint_increments;
+  step.explicit_part = &dyn;
+  if (control_.resume)
+    for (auto& ob : observers_) ob->write(WriteReason::end);  // the rows a killed run wrote after its checkpoint are dropped
+  else
+    for (auto& ob : observers_) ob->at_start(*model_);
 
-  solver::ExplicitSchedule schedule;
-  schedule.duration = duration;
-  schedule.output_interval = setup_.newton.initial_increment;
-  for (const Mark& m : setup_.marks) schedule.stops.push_back(setup_.load_map.lambda(m.travel));
   IntervalForceFit fit;
   DynamicsView view;
   const auto after_step = [&](double dt) { fit.add(dt, mst ? mst->tool_force() : tool_->force()); };
-  std::vector<std::pair<double, double>> kinetic_internal;  // at every output point
   const auto at_output = [&](const solver::ExplicitInterval& iv) {
-    kinetic_internal.push_back({iv.kinetic, model::energy_account(*model_).internal()});
+    dyn.record_output(iv.kinetic, model::energy_account(*model_).internal());
     view.steps = iv.steps;
     view.total_steps = iv.total_steps;
     view.time_step = iv.time_step;
@@ -158,7 +160,7 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
     view.damping_work = iv.damping_work;
     view.filtered_tool_force = fit.at_end(mst ? mst->tool_force() : tool_->force());
     view.contact_work = mst ? mst->statistics().work : 0.0;
-    fit = IntervalForceFit{};
+    fit = IntervalForceFit{};  // before the stepper's checkpoint: the filter is not part of it
     solver::IncrementReport ir;
     ir.index = iv.index;
     ir.lambda = iv.lambda;
@@ -167,20 +169,13 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
     step.dynamics = &view;
     return step(ir);
   };
+  const model::ExplicitMass& mass = dyn.mass();
   const auto bound = [&] { return model::current_time_step(*model_, mass, o.safety); };
-  const solver::ExplicitSummary r = solver.run(schedule, bound, after_step, at_output);
+  const solver::ExplicitSummary r = dyn.solver().run(explicit_schedule(setup_, duration), bound, after_step, at_output);
 
-  FeRunOutcome out = step.finish(r.completed, r.lambda, r.message, -1);
-  // Quasi-static? The largest kinetic over internal energy once the internal energy has reached
-  // a tenth of its final value (before, both are near zero and their ratio says nothing).
-  double ratio = 0.0;
-  if (!kinetic_internal.empty()) {
-    const double final_internal = kinetic_internal.back().second;
-    for (const auto& [k, e] : kinetic_internal)
-      if (e > 0.1 * final_internal && e > 0.0) ratio = std::max(ratio, k / e);
-  }
+  FeRunOutcome out = step.finish(r.completed, r.lambda, r.message, control_.resume ? restored.marks_reached : -1);
   out.counters.increments = step.log.increments;
-  out.dynamics = dynamics_json(r, o, mass, duration, ratio, view, mst.get(), model::describe_element(*model_, mass.smallest_element));
+  out.dynamics = dynamics_json(r, o, mass, duration, dyn.max_kinetic_over_internal(), view, mst, model::describe_element(*model_, mass.smallest_element));
   return out;
 }
 

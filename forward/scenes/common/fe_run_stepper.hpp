@@ -29,6 +29,7 @@ class FeRun::Stepper {
   bool stopped = false, timed_out = false;
   int interrupted = 0;  // the signal that ended the run
   const DynamicsView* dynamics = nullptr;  // set by an explicit run before each call
+  const CheckpointPart* explicit_part = nullptr;  // an explicit run's state for its checkpoints
 
   double wall() const { return std::chrono::duration<double>(FeRunClock::now() - t0_).count(); }
   void start_from(const RunLog& restored) {
@@ -168,16 +169,19 @@ class FeRun::Stepper {
   // now: an interrupted run's last checkpoint, due or not.
   void checkpoint_if_due(bool now) {
     const FeOutputOptions& o = run_.setup_.output;
-    if (!run_.files_.enabled() || run_.setup_.explicit_scheme) return;  // explicit runs keep no checkpoints yet
+    if (!run_.files_.enabled()) return;
     const bool by_marks = o.checkpoint_every > 0 && log.marks_reached >= last_checkpoint_marks_ + o.checkpoint_every;
     const bool by_count = o.checkpoint_increments > 0 && log.increments >= last_checkpoint_increments_ + o.checkpoint_increments;
     if (!now && !by_marks && !by_count) return;
     if (run_.model_->load_factor() >= 1.0 - 1e-12) return;  // the end of the path: nothing left to resume
     // The solver has chosen its next increment already (NewtonSolver's callback), so its state
-    // is where the run goes on.
+    // is where the run goes on; an explicit run is called at an output point, after its force
+    // filter was reset.
     const auto c0 = FeRunClock::now();
     log.wall_seconds = std::chrono::duration<double>(c0 - t0_).count();
-    checkpoints.bytes = write_run_checkpoint(*run_.files_.directory(), inputs_, *run_.model_, run_.solver_->state(), log, run_.observers_);
+    const solver::NewtonState& newton = run_.solver_->state();  // an explicit run's is not saved
+    checkpoints.bytes = write_run_checkpoint(*run_.files_.directory(), inputs_, *run_.model_, explicit_part ? nullptr : &newton,
+                                             explicit_part, log, run_.observers_);
     const double dt = std::chrono::duration<double>(FeRunClock::now() - c0).count();
     checkpoints.write_seconds += dt;
     ++checkpoints.written;

@@ -18,7 +18,10 @@ namespace {
 constexpr char kKind[] = "fe-run-checkpoint";
 // Bump when the layout below, the model's or an observer's state, or the meaning of the stored
 // load factor changes.
-constexpr std::uint32_t kLayout = 3;  // 2: the cone's section points; 3: the Newton assembly counters
+// 2: the cone's section points; 3: the Newton assembly counters; 4: a "scheme" section in place of
+// "newton_state": a flag, then the Newton state (implicit runs) or, new, an explicit run's options,
+// mass, solver and MST state.
+constexpr std::uint32_t kLayout = 4;
 
 void save_log(io::BinaryWriter& w, const RunLog& log) {
   w.section("run_log");
@@ -43,6 +46,28 @@ RunLog load_log(io::BinaryReader& r) {
   log.wall_seconds = r.f64();
   if (static_cast<int>(log.mark_wall.size()) != log.marks_reached) throw io::ArchiveError("inconsistent run log (marks and their wall times)");
   return log;
+}
+
+// Section "scheme": whether the run is explicit, then its dynamics, or the Newton solver's state.
+void save_scheme(io::BinaryWriter& w, const solver::NewtonState* newton, const CheckpointPart* dynamics) {
+  w.section("scheme");
+  w.boolean(dynamics != nullptr);
+  if (dynamics) dynamics->save(w);
+  else solver::save_newton_state(w, *newton);
+}
+
+void load_scheme(io::BinaryReader& r, solver::NewtonState* newton, CheckpointPart* dynamics, int num_dofs) {
+  r.section("scheme");
+  const bool saved_explicit = r.boolean();
+  if (saved_explicit && !dynamics) throw io::ArchiveError("written by an explicit run, this run is implicit");
+  if (!saved_explicit && dynamics) throw io::ArchiveError("written by an implicit run, this run is explicit");
+  if (dynamics) {
+    dynamics->restore(r);
+    return;
+  }
+  *newton = solver::load_newton_state(r);
+  if (newton->last_increment.size() != 0 && newton->last_increment.size() != num_dofs)
+    throw io::ArchiveError("Newton predictor of another model size");
 }
 
 [[noreturn]] void refuse(const std::filesystem::path& file, const std::string& why) {
@@ -125,7 +150,8 @@ RunInputs read_run_inputs(const std::string& kind, const std::vector<std::pair<s
 std::filesystem::path run_checkpoint_path(const io::OutputDirectory& out) { return out.path() / "checkpoint" / "state.bin"; }
 
 std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::ShellModel& model,
-                                 const solver::NewtonState& newton, const RunLog& log, const Observers& observers) {
+                                 const solver::NewtonState* newton, const CheckpointPart* dynamics, const RunLog& log,
+                                 const Observers& observers) {
   io::BinaryWriter w(kKind, kLayout);
   w.section("inputs");
   w.string(SPIFIT_VERSION);
@@ -137,7 +163,7 @@ std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs
     w.string(f.text);
   }
   model::save_model_state(w, model);
-  solver::save_newton_state(w, newton);
+  save_scheme(w, newton, dynamics);
   save_log(w, log);
   w.section("observers");
   w.i64(static_cast<std::int64_t>(observers.size()));
@@ -153,7 +179,7 @@ std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs
 }
 
 void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::ShellModel* model, solver::NewtonState* newton,
-                         RunLog* log, const Observers& observers) {
+                         CheckpointPart* dynamics, RunLog* log, const Observers& observers) {
   const std::filesystem::path file = run_checkpoint_path(out);
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec)) {
@@ -166,9 +192,7 @@ void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs
     io::BinaryReader r(io::read_binary_file(file), kKind, kLayout);
     check_inputs(r, inputs, file);
     model::load_model_state(r, model);
-    *newton = solver::load_newton_state(r);
-    if (newton->last_increment.size() != 0 && newton->last_increment.size() != model->num_dofs())
-      throw io::ArchiveError("Newton predictor of another model size");
+    load_scheme(r, newton, dynamics, model->num_dofs());
     *log = load_log(r);
     r.section("observers");
     r.expect_count("observers", static_cast<std::int64_t>(observers.size()));

@@ -3,8 +3,9 @@
 // state.bin holds everything that decides how the run goes on: the model's committed state
 // (nodal positions and directors, every layer of every section, the tool and its copies with
 // their contact point states), the Newton solver's stepping state (load factor, next increment,
-// growth ceiling, predictor, counters), the run's bookkeeping (increments, marks reached, wall
-// times), each observer's state (the rows of its series, VTU steps), and the contents of the
+// growth ceiling, predictor, counters) or, for an explicit run, its dynamics (mass and time-step
+// state, solver, MST; explicit_dynamics.hpp), the run's bookkeeping (increments, marks reached,
+// wall times), each observer's state (the rows of its series, VTU steps), and the contents of the
 // files that produced the run (scene, card, G-code), so that a resume with other inputs is
 // refused. Binary and bit-exact (forward/io/binary_archive.hpp): a run resumed from it ends with
 // the same numbers, bit for bit, as one never interrupted.
@@ -17,6 +18,11 @@
 #include <string>
 #include <utility>
 #include <vector>
+
+namespace spifit::io {
+class BinaryWriter;
+class BinaryReader;
+}  // namespace spifit::io
 
 namespace spifit::model {
 class ShellModel;
@@ -50,18 +56,32 @@ std::filesystem::path run_checkpoint_path(const io::OutputDirectory& out);
 
 using Observers = std::vector<std::unique_ptr<RunObserver>>;
 
+// The state of an explicit run's time integration (ExplicitDynamics), saved in place of the
+// Newton solver's.
+class CheckpointPart {
+ public:
+  virtual ~CheckpointPart() = default;
+  virtual void save(io::BinaryWriter& w) const = 0;
+  // io::ArchiveError when the saved state does not fit the run (another model size, other options).
+  virtual void restore(io::BinaryReader& r) = 0;
+};
+
 // Writes the checkpoint atomically (a temporary file in DIR/checkpoint/, then renamed over
 // state.bin): a run killed while writing keeps the previous checkpoint. Returns its size in
-// bytes. The model and the solver state must be at the same committed increment.
+// bytes. The model and the solver state must be at the same committed increment. The scheme's
+// state: the Newton solver's (implicit runs; dynamics null) or the dynamics (explicit runs;
+// newton null).
 std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::ShellModel& model,
-                                 const solver::NewtonState& newton, const RunLog& log, const Observers& observers);
+                                 const solver::NewtonState* newton, const CheckpointPart* dynamics, const RunLog& log,
+                                 const Observers& observers);
 
 // Loads the checkpoint into a model and observers set up from the same scene (as the run builds
 // them); the inputs are those of the resumed run. Throws io::InputError naming
 // DIR/checkpoint/state.bin when it is missing, of another format or layout version, truncated or
 // corrupted, written for another kind, scene file, material card or G-code (their contents
-// differ), or for a model of another size.
+// differ), for a model of another size, by a run of the other scheme, or (dynamics) with other
+// explicit options. The scheme's state goes to newton (implicit runs) or dynamics (explicit).
 void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::ShellModel* model,
-                         solver::NewtonState* newton, RunLog* log, const Observers& observers);
+                         solver::NewtonState* newton, CheckpointPart* dynamics, RunLog* log, const Observers& observers);
 
 }  // namespace spifit::scene

@@ -1,10 +1,13 @@
 // The explicit scheme on a forming scene: the thesis §7.1 indent with mass scaling against the
-// implicit run of the same scene (force and energy balance), the same files twice, and the
-// start-up refusal of a run that would need too many steps.
+// implicit run of the same scene (force and energy balance), the same files twice, the start-up
+// refusal of a run that would need too many steps, and checkpoints: a run stopped after a
+// checkpoint and resumed writes the uninterrupted run's files byte for byte.
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
+#include "tests/support/same_outputs.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -159,6 +162,65 @@ TEST(ExplicitIndent, ARunNeedingTooManyStepsStopsAtStartUpNamingTheElementAndThe
     EXPECT_NE(what.find("element "), std::string::npos) << what;
     EXPECT_NE(what.find("mass_scaling = "), std::string::npos) << what;
   }
+}
+
+FormingResult run_in(const FormingScene& s, const fs::path& dir, RunControl c = {}) {
+  if (!c.resume) fs::remove_all(dir);
+  const auto out = c.resume ? io::OutputDirectory::existing(dir.string()) : io::OutputDirectory::prepare(dir.string(), false);
+  return run_forming_scene(s, RunFiles(out), c);
+}
+
+// The summary values that must not depend on an interruption (wall times and checkpoint counts do).
+void expect_same_summary(const FormingResult& ref, const FormingResult& resumed) {
+  test::expect_same_keys(ref.to_json(), resumed.to_json(),
+                         {"explicit", "peak_force", "final_force", "energies", "increments", "travel_reached", "max_penetration",
+                          "max_surface_penetration", "force_ripple", "status"});
+}
+
+// Stopped after 5 output intervals (the checkpoint after the 4th), refused with other explicit
+// options, then resumed: the files and summary of the uninterrupted run.
+void stop_and_resume(FormingScene s, const std::string& name) {
+  s.checkpoint_increments = 4;
+  const fs::path ref = test::temp_path(name + "_ref"), dir = test::temp_path(name);
+  const FormingResult a = run_in(s, ref);
+  ASSERT_TRUE(a.ok()) << a.message;
+  RunControl stop;
+  stop.stop_after_increments = 5;
+  ASSERT_EQ(run_in(s, dir, stop).status, RunStatus::stopped);
+  ASSERT_TRUE(fs::exists(dir / "checkpoint" / "state.bin"));
+  std::printf("%s: checkpoint of %ju bytes\n", name.c_str(), static_cast<std::uintmax_t>(fs::file_size(dir / "checkpoint" / "state.bin")));
+  RunControl resume;
+  resume.resume = true;
+  FormingScene other = s;
+  other.explicit_options.mass_scaling *= 2.0;
+  try {
+    (void)run_in(other, dir, resume);
+    ADD_FAILURE() << "resumed with another mass scaling";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(e.file(), (dir / "checkpoint" / "state.bin").string());
+    EXPECT_NE(std::string(e.what()).find("solver.mass_scaling"), std::string::npos) << e.what();
+  }
+  const FormingResult b = run_in(s, dir, resume);
+  ASSERT_TRUE(b.ok()) << b.message;
+  EXPECT_GE(b.run.resumed_at_mark, 0);
+  test::expect_same_outputs(ref, dir, {"force.csv", "energies.csv", "vtu/sheet.pvd"}, {"vtu"});
+  expect_same_summary(a, b);
+  fs::remove_all(ref);
+  fs::remove_all(dir);
+}
+
+// The penalty contact: the solver's velocities, accelerations and step bound (re-estimated every
+// 100 steps, across the checkpoint), the mass of the start and the energies carry over.
+TEST(ExplicitIndentResume, PenaltyRunStoppedAfterACheckpointResumesBitForBit) {
+  stop_and_resume(explicit_indent(0.5, 1e6), "explicit_penalty");
+}
+
+// The Moving Spherical Tool: its followed thickness, neighbourhoods, last forces and work carry over too.
+TEST(ExplicitIndentResume, MovingSphericalToolRunStoppedAfterACheckpointResumesBitForBit) {
+  FormingScene s = explicit_indent(0.5, 1e6);
+  s.contact.friction = 0.1;
+  s.contact.method = contact::ContactOptions::Method::mst;
+  stop_and_resume(s, "explicit_mst");
 }
 
 }  // namespace
