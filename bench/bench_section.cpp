@@ -4,13 +4,14 @@
 //
 // Path: a section of card C.3 + C.4, t = 1.2 mm, 5 Gauss points, taken through 200 increments
 // of a tool passing over it (strains_at): the layers flex elastically, load, yield, unload,
-// reverse and flex elastically again; about a third of the layer updates are plastic, as in the
-// line test, where 22-47 % of the sections are plastic at any evaluation. Each increment has three trial updates (at 0.9, 0.99 and
-// 1.0 of its strain, as Newton iterates approach the end) and a commit.
+// reverse and flex elastically again. About a third of the layer updates are plastic, as in the
+// line test, where 22-47 % of the sections are plastic at any evaluation. Each increment has
+// three trial updates (at 0.9, 0.99 and 1.0 of its strain, as Newton iterates approach the end)
+// and a commit.
 // Modes: tangent (an implicit iteration), residual (the final iterate without the element
 // tangent: the layers still keep their consistent tangents) and explicit (no layer tangents).
-// Counters: per_layer_point (time / layer-point updates, printed as 400n = 400 ns) and plastic_share (share of
-// layer updates that returned to the yield surface).
+// Counters: per_layer_point (time per layer-point update, printed with an SI prefix: 400n =
+// 400 ns) and plastic_share (the share of layer updates that returned to the yield surface).
 #include "bench/bench_main.hpp"
 #include "forward/element/shell_section.hpp"
 
