@@ -2,11 +2,11 @@
 // A symmetric matrix handed to CHOLMOD already permuted (docs/design/numerics-shell.md, "Sparse
 // linear algebra"). CHOLMOD's supernodal factorisation works on the lower triangle of P A P^T;
 // given A and a fill-reducing P it builds that matrix with a permuted transpose at every
-// factorisation (cholmod_l_transpose_sym: 3-6 % of a line_half run). Here the pattern of the
-// permuted lower triangle and the position of each of its values in A are worked out once per
-// pattern; each factorisation gathers the values into it, and CHOLMOD, analysing it with the
-// natural ordering, factorises it as it is. The factor is the one CHOLMOD would have made from
-// A and P, bit for bit: the same values in the same places.
+// factorisation (line_half's linear solver: 10.15 s with it, 8.89 s without, medians of 3). Here
+// the pattern of the permuted lower triangle and the position of each of its values in A are
+// worked out once per pattern; each factorisation gathers the values into it, and CHOLMOD,
+// analysing it with the natural ordering, factorises it as it is. The factor is the one CHOLMOD
+// would have made from A and P, bit for bit: the same values in the same places.
 #include <Eigen/Core>
 
 #include <vector>
