@@ -43,7 +43,10 @@ Case& plastic_plate(int n) {
   if (c && c->n == n) return *c;
   c = std::make_unique<Case>();
   c->n = n;
-  c->mesh = mesh::square_sheet({.length_x = 100.0, .length_y = 100.0, .nx = n, .ny = n});
+  mesh::SquareSheetOptions sheet;
+  sheet.length_x = sheet.length_y = 100.0;
+  sheet.nx = sheet.ny = n;
+  c->mesh = mesh::square_sheet(sheet);
   material::MaterialParams<double> p;  // E, nu, Swift: card C.4 = defaults
   p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;  // card C.3
   model::ShellModelOptions mo;

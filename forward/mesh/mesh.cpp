@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
+#include <stdexcept>
 #include <sstream>
 #include <unordered_map>
 
@@ -40,6 +41,7 @@ std::vector<int> select_elements(const Mesh& m, const std::function<bool(const E
 }
 
 void merge_coincident_nodes(Mesh& m, double tol) {
+  if (!m.constrained_nodes.empty()) throw std::invalid_argument("merge_coincident_nodes: the mesh has constrained nodes");
   // Hash on a grid of cell size tol; compare with the 27 neighbouring cells.
   struct Key {
     long x, y, z;
@@ -92,6 +94,35 @@ void merge_coincident_nodes(Mesh& m, double tol) {
   }
 }
 
+namespace {
+std::string check_constrained_nodes(const Mesh& m) {
+  std::ostringstream os;
+  std::vector<char> constrained(m.nodes.size(), 0);
+  for (const ConstrainedNode& c : m.constrained_nodes) {
+    if (c.node < 0 || c.node >= m.num_nodes() || constrained[static_cast<std::size_t>(c.node)]) {
+      os << "constrained node " << c.node << ": out of range or listed twice";
+      return os.str();
+    }
+    constrained[static_cast<std::size_t>(c.node)] = 1;
+  }
+  for (const ConstrainedNode& c : m.constrained_nodes) {
+    double sum = 0.0;
+    for (const auto& [n, w] : c.masters) {
+      if (n < 0 || n >= m.num_nodes() || constrained[static_cast<std::size_t>(n)]) {
+        os << "constrained node " << c.node << ": master " << n << " out of range or itself constrained";
+        return os.str();
+      }
+      sum += w;
+    }
+    if (c.masters.empty() || std::abs(sum - 1.0) > 1e-12) {
+      os << "constrained node " << c.node << ": master weights sum to " << sum << ", not 1";
+      return os.str();
+    }
+  }
+  return "";
+}
+}  // namespace
+
 std::string check_mesh(const Mesh& m) {
   std::ostringstream os;
   std::vector<char> used(m.nodes.size(), 0);
@@ -127,7 +158,7 @@ std::string check_mesh(const Mesh& m) {
       return os.str();
     }
   }
-  return "";
+  return check_constrained_nodes(m);
 }
 
 std::vector<double> graded_points(double a, double b, int n, double ratio) {

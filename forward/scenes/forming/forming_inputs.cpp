@@ -21,6 +21,12 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
             [](FormingScene& s) -> bool& { return s.half; });
   t.real({"sheet.grading", {}, "", Range::positive(), {}, "ratio of the outer to the central element size (1: regular)", false},
          [](FormingScene& s) -> double& { return s.grading; });
+  t.integer({"sheet.coarse_levels", {}, "", Range::closed(0, 4), {}, "coarsening away from the tool path: cells farther than sheet.fine_band "
+             "from it merge into blocks of up to 2^k x 2^k (0: regular; implicit scheme only)", false},
+            [](FormingScene& s) -> int& { return s.coarse_levels; });
+  t.real({"sheet.fine_band", {}, "mm", Range::positive(), {}, "distance from the tool tip's path (below the sheet's top) within which "
+          "cells keep the sheet.elements size when sheet.coarse_levels > 0", false},
+         [](FormingScene& s) -> double& { return s.fine_band; });
   t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
             [](FormingScene& s) -> int& { return s.thickness_points; });
 }

@@ -1,6 +1,7 @@
 #include "forward/scenes/forming/forming_run.hpp"
 
 #include "forward/mesh/mesh_quality.hpp"
+#include "forward/model/hanging_nodes.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
@@ -18,7 +19,8 @@ namespace spifit::scene {
 namespace {
 
 // Edges clamped (translations and rotations); a half model's symmetry plane y = 0 holds u_y and
-// the rotations about x and z. Drilling rotations out of the system (nodal rotation frames).
+// the rotations about x and z. A coarsened sheet's hanging nodes follow their edges' ends
+// (model/hanging_nodes.hpp). Drilling rotations out of the system (nodal rotation frames).
 solver::DofConstraints sheet_constraints(const FormingScene& s, model::ShellModel& model) {
   solver::DofConstraints c(model.num_dofs());
   const mesh::Mesh& mesh = model.mesh();
@@ -28,7 +30,9 @@ solver::DofConstraints sheet_constraints(const FormingScene& s, model::ShellMode
     for (int n : mesh.node_sets.at("symmetry_y0"))
       for (int k : {1, 3, 5})
         if (!c.prescribed(model::ShellModel::dof(n, k))) c.prescribe(model::ShellModel::dof(n, k));
+  model::tie_hanging_translations(mesh, &c);
   model.use_nodal_rotation_frames(&c);
+  model::tie_hanging_rotations(mesh, &c);
   c.finalize();
   return c;
 }
@@ -109,6 +113,8 @@ nlohmann::json forming_inputs(const FormingScene& s, const model::ShellModel& mo
   j["material"] = s.card.name;
   j["model"] = {{"elements", model.num_elements()}, {"nodes", model.num_nodes()}, {"half", s.half},
                 {"thickness", s.thickness}, {"length", s.length}, {"thickness_points", s.thickness_points}};
+  if (s.coarse_levels > 0)
+    j["model"].update({{"coarse_levels", s.coarse_levels}, {"fine_band", s.fine_band}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});
   j["tool"] = {{"radius", s.radius}, {"travel", length}, {"feed", s.feed}, {"spin_rpm", s.spin}, {"gcode", s.gcode}};
   j["contact"] = contact_json(s.contact);
   j["solver"] = tool_solver_json(s);

@@ -3,6 +3,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/io/toml_reader.hpp"
 #include "forward/mesh/mesh_quality.hpp"
+#include "forward/mesh/segment_distance.hpp"
 #include "forward/mesh/square_sheet.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/scenes/common/scene_inputs.hpp"
@@ -11,6 +12,7 @@
 #include "forward/toolpath/tool_path.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -120,6 +122,19 @@ mesh::Mesh forming_sheet_mesh(const FormingScene& s) {
   so.nx = so.ny = s.elements;
   so.half = s.half;
   so.grading_x = so.grading_y = s.grading;
+  so.coarse_levels = s.coarse_levels;
+  if (s.coarse_levels > 0) {
+    // The pieces of the tip's path that reach below the sheet's top surface.
+    std::vector<std::array<Eigen::Vector2d, 2>> pieces;
+    const std::vector<Eigen::Vector3d> tips = tip_points(s);
+    for (std::size_t k = 0; k + 1 < tips.size(); ++k)
+      if (std::min(tips[k].z(), tips[k + 1].z()) < 0.0) pieces.push_back({tips[k].head<2>(), tips[k + 1].head<2>()});
+    const double band = s.fine_band;
+    so.keep_fine = [pieces, band](const Eigen::Vector2d& lo, const Eigen::Vector2d& hi) {
+      return std::any_of(pieces.begin(), pieces.end(),
+                         [&](const auto& p) { return mesh::rectangle_segment_distance(lo, hi, p[0], p[1]) <= band; });
+    };
+  }
   return mesh::square_sheet(so);
 }
 
@@ -130,6 +145,9 @@ InputViolation forming_scene_error(const FormingScene& s) {
     return {"sheet.elements", std::to_string(s.elements), "a half model needs an even number of elements across"};
   if (const InputViolation v = thickness_violation(s)) return v;
   if (const InputViolation v = scheme_violation(s)) return v;
+  if (s.coarse_levels > 0 && s.explicit_scheme)
+    return {"sheet.coarse_levels", std::to_string(s.coarse_levels),
+            "a coarsened sheet is for the implicit scheme (the explicit lumped mass has no hanging nodes): set it to 0"};
   // The tool must start outside the sheet and reach it.
   const double half_length = 0.5 * s.length;
   auto over_sheet = [&](const Eigen::Vector3d& tip) { return std::abs(tip.x()) < half_length && std::abs(tip.y()) < half_length; };

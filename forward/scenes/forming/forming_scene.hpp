@@ -32,6 +32,11 @@ struct FormingScene {
   int elements = 10;          // across the full side
   bool half = false;
   double grading = 1.0;
+  // Coarsening away from the tool path (mesh::square_sheet): cells farther than fine_band [mm]
+  // from the tool tip's path (its pieces below the sheet's top) merge into blocks of up to
+  // 2^coarse_levels x 2^coarse_levels cells. 0: the regular mesh.
+  int coarse_levels = 0;
+  double fine_band = 20.0;
   int thickness_points = 5;
   // Tool.
   double radius = 5.0;
@@ -78,7 +83,7 @@ bool is_forming_kind(const std::string& kind);
 // Also the sheet's thickness over its shortest element edge against the shell's limit
 // (model::ShellModelOptions: t/l <= 3), on "sheet.thickness" with the mesh keys in the message.
 InputViolation forming_scene_error(const FormingScene& scene);
-// The sheet's mesh (sheet.length, elements, half, grading); std::invalid_argument on
+// The sheet's mesh (sheet.length, elements, half, grading, coarse_levels, fine_band); std::invalid_argument on
 // meaningless values.
 mesh::Mesh forming_sheet_mesh(const FormingScene& scene);
 

@@ -14,7 +14,7 @@
 using namespace spifit::mesh;
 
 TEST(SquareSheet, FullUniform) {
-  const Mesh m = square_sheet({182.0, 182.0, 50, 50, false, 1.0, 1.0});
+  const Mesh m = square_sheet({182.0, 182.0, 50, 50, false, 1.0, 1.0, 0, {}});
   EXPECT_EQ(check_mesh(m), "");
   EXPECT_EQ(m.num_nodes(), 51 * 51);
   EXPECT_EQ(m.num_elements(), 2500);
@@ -29,7 +29,7 @@ TEST(SquareSheet, FullUniform) {
 }
 
 TEST(SquareSheet, HalfWithSymmetryPlane) {
-  const Mesh m = square_sheet({182.0, 182.0, 40, 40, true, 1.0, 1.0});
+  const Mesh m = square_sheet({182.0, 182.0, 40, 40, true, 1.0, 1.0, 0, {}});
   EXPECT_EQ(check_mesh(m), "");
   EXPECT_EQ(m.num_elements(), 40 * 20);
   EXPECT_NEAR(mesh_quality(m, 1.2).total_area, 182.0 * 91.0, 1e-8);
@@ -41,12 +41,12 @@ TEST(SquareSheet, HalfWithSymmetryPlane) {
 }
 
 TEST(SquareSheet, GradedTowardsTheCentre) {
-  const Mesh m = square_sheet({100.0, 100.0, 20, 20, false, 4.0, 4.0});
+  const Mesh m = square_sheet({100.0, 100.0, 20, 20, false, 4.0, 4.0, 0, {}});
   EXPECT_EQ(check_mesh(m), "");
   const auto q = mesh_quality(m, 1.0);
   EXPECT_NEAR(q.total_area, 1e4, 1e-8);
   EXPECT_NEAR(q.max_edge / q.min_edge, 4.0, 1e-9);  // edge element / centre element
-  EXPECT_THROW(square_sheet({100.0, 100.0, 21, 20, false, 4.0, 1.0}), std::invalid_argument);
+  EXPECT_THROW(square_sheet({100.0, 100.0, 21, 20, false, 4.0, 1.0, 0, {}}), std::invalid_argument);
 }
 
 TEST(GradedPoints, RatioAndEnds) {
@@ -132,18 +132,18 @@ TEST(Disc, DensityBand) {
 
 TEST(MeshQuality, ThicknessOverLengthWarning) {
   // The thesis's fine cone mesh: 0.688 mm radial elements, t = 1.2 mm -> t/l about 1.7.
-  const Mesh m = square_sheet({0.688 * 4, 0.688 * 4, 4, 4, false, 1.0, 1.0});
+  const Mesh m = square_sheet({0.688 * 4, 0.688 * 4, 4, 4, false, 1.0, 1.0, 0, {}});
   const auto q = mesh_quality(m, 1.2);
   EXPECT_NEAR(q.max_thickness_over_length, 1.2 / 0.688, 1e-9);
   EXPECT_NE(describe_mesh_quality(q).find("above 1"), std::string::npos);
 }
 
 TEST(Mesh, CheckFindsBadElements) {
-  Mesh m = square_sheet({1.0, 1.0, 1, 1, false, 1.0, 1.0});
+  Mesh m = square_sheet({1.0, 1.0, 1, 1, false, 1.0, 1.0, 0, {}});
   EXPECT_EQ(check_mesh(m), "");
   std::swap(m.quads[0][1], m.quads[0][3]);  // clockwise
   EXPECT_NE(check_mesh(m).find("area"), std::string::npos);
-  m = square_sheet({1.0, 1.0, 1, 1, false, 1.0, 1.0});
+  m = square_sheet({1.0, 1.0, 1, 1, false, 1.0, 1.0, 0, {}});
   m.quads[0][2] = m.quads[0][1];  // repeated node
   EXPECT_NE(check_mesh(m).find("degenerate"), std::string::npos);
 }
