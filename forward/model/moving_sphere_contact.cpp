@@ -4,6 +4,7 @@
 #include "forward/io/binary_archive.hpp"
 #include "forward/element/quad_shape.hpp"
 #include "forward/model/explicit_mass.hpp"
+#include "forward/model/normal_contact_lcp.hpp"
 #include "forward/model/rotation_frames.hpp"
 #include "forward/model/shell_model.hpp"
 
@@ -19,7 +20,9 @@ namespace spifit::model {
 namespace {
 
 constexpr double kNeighbourhood = 1.5;  // s of thesis eq. 5.13
-constexpr int kMaxSweeps = 200;         // projected Gauss-Seidel sweeps of one solve
+constexpr int kMaxSweeps = 200;         // projected Gauss-Seidel sweeps of one solve (with friction)
+constexpr int kMaxActiveSets = 1000;    // active sets of one frictionless solve
+constexpr double kGapTolerance = 1e-12; // of the largest gap: a frictionless solve's gaps after the step
 // The tool travel, in thicknesses, over which the tool-side surface's offset follows a change of
 // the element's thickness (MovingSphereContact::follow_thickness).
 constexpr double kThicknessTravel = 0.1;
@@ -252,6 +255,7 @@ Eigen::MatrixXd MovingSphereContact::compliance(const std::vector<Point>& points
 Eigen::VectorXd MovingSphereContact::solve(const std::vector<Point>& points, const Eigen::MatrixXd& W) {
   const int k = static_cast<int>(points.size());
   Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * k), w_phi = Eigen::VectorXd::Zero(3 * k);
+  if (friction_ == 0.0) return solve_frictionless(points, W);
   const auto apply = [&](int i, const Eigen::Vector3d& delta) {
     if (delta.squaredNorm() == 0.0) return;
     w_phi.noalias() += W.middleCols<3>(3 * i) * delta;
@@ -286,6 +290,26 @@ Eigen::VectorXd MovingSphereContact::solve(const std::vector<Point>& points, con
   ++stats_.solves;
   stats_.sweeps += it;
   if (!converged) ++stats_.unconverged;
+  return phi;
+}
+
+// Without friction the problem is the normal one alone, solved exactly (normal_contact_lcp.hpp).
+Eigen::VectorXd MovingSphereContact::solve_frictionless(const std::vector<Point>& points, const Eigen::MatrixXd& W) {
+  const int k = static_cast<int>(points.size());
+  Eigen::MatrixXd M(k, k);
+  Eigen::VectorXd q(k);
+  double scale = 0.0;
+  for (int i = 0; i < k; ++i) {
+    q(i) = points[static_cast<std::size_t>(i)].gap;
+    scale = std::max(scale, std::abs(q(i)));
+    for (int j = 0; j < k; ++j) M(i, j) = W(3 * i, 3 * j);
+  }
+  const NormalContactSolution s = solve_normal_contact(M, q, kGapTolerance * scale, kMaxActiveSets);
+  ++stats_.solves;
+  stats_.sweeps += s.active_sets;
+  if (!s.converged) ++stats_.unconverged;
+  Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * k);
+  for (int i = 0; i < k; ++i) phi(3 * i) = -s.force(i);
   return phi;
 }
 

@@ -17,7 +17,8 @@
 // complementarity problem by projected Gauss-Seidel sweeps: P >= 0 closing the gap, then the
 // friction cancelling the slip, cut to the cone. The thesis switches the points' states all at
 // once instead; that can cycle between neighbouring points, the sweeps converge to the one
-// solution (docs/design/explicit.md, "MST contact").
+// solution (docs/design/explicit.md, "MST contact"). Without friction the normal problem alone
+// is solved exactly by an active-set method (normal_contact_lcp.hpp).
 // Virtual tools of a pie (ToolContact::set_copies) are further spheres with their own points.
 #include "forward/solver/dof_constraints.hpp"
 
@@ -37,8 +38,8 @@ class ShellModel;
 
 struct MstStatistics {
   long solves = 0;                 // steps with at least one point in contact
-  long sweeps = 0;                 // Gauss-Seidel sweeps over all solves
-  long unconverged = 0;            // solves that ended at the sweep limit (the forces of the last sweep kept)
+  long sweeps = 0;                 // Gauss-Seidel sweeps (with friction) or active sets (without) over all solves
+  long unconverged = 0;            // solves that ended at the sweep or set limit (the last forces kept)
   int max_points = 0;              // most potential contact points in one solve
   double max_penetration = 0.0;    // largest penetration found at a contact point before a solve [mm]
   double max_friction_ratio = 0.0; // largest |F_f| / (mu P) over points in contact (mu > 0)
@@ -99,6 +100,7 @@ class MovingSphereContact {
   std::vector<Point> distinct(const std::vector<Point>& found) const;
   Eigen::MatrixXd compliance(const std::vector<Point>& points, double dt) const;
   Eigen::VectorXd solve(const std::vector<Point>& points, const Eigen::MatrixXd& W);
+  Eigen::VectorXd solve_frictionless(const std::vector<Point>& points, const Eigen::MatrixXd& W);
 };
 
 }  // namespace spifit::model
