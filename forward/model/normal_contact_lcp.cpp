@@ -9,19 +9,14 @@ namespace {
 
 // The forces that close the gaps of the active points exactly, the others at zero.
 Eigen::VectorXd forces_on(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, const std::vector<char>& active) {
-  std::vector<int> idx;
-  for (int i = 0; i < static_cast<int>(active.size()); ++i)
+  std::vector<Eigen::Index> idx;
+  for (Eigen::Index i = 0; i < q.size(); ++i)
     if (active[static_cast<std::size_t>(i)]) idx.push_back(i);
-  const auto n = static_cast<Eigen::Index>(idx.size());
-  Eigen::MatrixXd A(n, n);
-  Eigen::VectorXd b(n);
-  for (Eigen::Index r = 0; r < n; ++r) {
-    b(r) = -q(idx[static_cast<std::size_t>(r)]);
-    for (Eigen::Index c = 0; c < n; ++c) A(r, c) = M(idx[static_cast<std::size_t>(r)], idx[static_cast<std::size_t>(c)]);
-  }
-  const Eigen::VectorXd z = A.ldlt().solve(b);
   Eigen::VectorXd out = Eigen::VectorXd::Zero(q.size());
-  for (Eigen::Index r = 0; r < n; ++r) out(idx[static_cast<std::size_t>(r)]) = z(r);
+  const Eigen::MatrixXd A = M(idx, idx);
+  const Eigen::VectorXd b = -q(idx);
+  const Eigen::VectorXd z = A.ldlt().solve(b);
+  out(idx) = z;
   return out;
 }
 

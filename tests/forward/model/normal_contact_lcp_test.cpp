@@ -23,20 +23,15 @@ void expect_complementary(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, co
 Eigen::VectorXd by_enumeration(const Eigen::MatrixXd& M, const Eigen::VectorXd& q) {
   const int k = static_cast<int>(q.size());
   for (int mask = 0; mask < (1 << k); ++mask) {
-    std::vector<int> idx;
+    std::vector<Eigen::Index> on;
     for (int i = 0; i < k; ++i)
-      if (mask & (1 << i)) idx.push_back(i);
+      if (mask & (1 << i)) on.push_back(i);
     Eigen::VectorXd P = Eigen::VectorXd::Zero(k);
-    if (!idx.empty()) {
-      const auto n = static_cast<Eigen::Index>(idx.size());
-      Eigen::MatrixXd A(n, n);
-      Eigen::VectorXd b(n);
-      for (Eigen::Index r = 0; r < n; ++r) {
-        b(r) = -q(idx[static_cast<std::size_t>(r)]);
-        for (Eigen::Index c = 0; c < n; ++c) A(r, c) = M(idx[static_cast<std::size_t>(r)], idx[static_cast<std::size_t>(c)]);
-      }
+    if (!on.empty()) {
+      const Eigen::MatrixXd A = M(on, on);
+      const Eigen::VectorXd b = -q(on);
       const Eigen::VectorXd z = A.llt().solve(b);
-      for (Eigen::Index r = 0; r < n; ++r) P(idx[static_cast<std::size_t>(r)]) = z(r);
+      P(on) = z;
     }
     const Eigen::VectorXd w = M * P + q;
     if (P.minCoeff() >= 0.0 && w.minCoeff() >= -1e-12) return P;

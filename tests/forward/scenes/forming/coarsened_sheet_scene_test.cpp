@@ -5,12 +5,13 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
+#include "tests/support/input_errors.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <filesystem>
-#include <fstream>
 
 namespace fs = std::filesystem;
 
@@ -47,15 +48,10 @@ TEST(CoarsenedSheet, IndentLineForceStaysWithinTwoPercentOfTheRegularMesh) {
 }
 
 TEST(CoarsenedSheet, TheExplicitSchemeRefusesItNamingTheKey) {
-  const fs::path f = fs::temp_directory_path() / ("spifit_coarsened_" + std::to_string(::getpid()) + ".toml");
-  std::ofstream(f) << "[scene]\nkind = \"indent_line\"\nmaterial = \"" << src("materials/aa3003o_c3c4.toml")
-                   << "\"\n[sheet]\ncoarse_levels = 1\n[solver]\nscheme = \"explicit\"\n";
-  std::string err;
-  try {
-    read_forming_scene(f.string());
-  } catch (const io::InputError& e) {
-    err = e.what();
-  }
+  const fs::path f = test::write_temp_file("coarsened_explicit.toml", "[scene]\nkind = \"indent_line\"\nmaterial = \"" +
+                                                                          src("materials/aa3003o_c3c4.toml") +
+                                                                          "\"\n[sheet]\ncoarse_levels = 1\n[solver]\nscheme = \"explicit\"\n");
+  const std::string err = test::input_error_of([&] { read_forming_scene(f.string()); });
   fs::remove(f);
   EXPECT_NE(err.find("sheet.coarse_levels"), std::string::npos) << err;
   EXPECT_NE(err.find("implicit"), std::string::npos) << err;
