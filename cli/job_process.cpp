@@ -2,12 +2,14 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -28,6 +30,34 @@ struct Child {
   pid_t pid = -1;
   int out = -1;  // read end of its stdout
 };
+
+// Writes the job to the child's stdin. A child that is gone before it read it (killed, or ended)
+// makes the write fail with EPIPE and raise SIGPIPE, whose default action would end this process,
+// a worker rank of an MPI fit, with it: SIGPIPE is blocked in this thread for the write and a
+// pending one taken back. The child's end is then reported by waitpid as for any other death.
+void write_to_child(int fd, const std::string& input) {
+  sigset_t pipe_signal, previous;
+  sigemptyset(&pipe_signal);
+  sigaddset(&pipe_signal, SIGPIPE);
+  ::pthread_sigmask(SIG_BLOCK, &pipe_signal, &previous);
+  bool broken = false;
+  std::size_t written = 0;
+  while (written < input.size()) {
+    const ssize_t n = ::write(fd, input.data() + written, input.size() - written);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      broken = n < 0 && errno == EPIPE;
+      break;
+    }
+    written += static_cast<std::size_t>(n);
+  }
+  if (broken && !sigismember(&previous, SIGPIPE)) {
+    const timespec now{0, 0};
+    while (::sigtimedwait(&pipe_signal, nullptr, &now) == SIGPIPE) {
+    }
+  }
+  ::pthread_sigmask(SIG_SETMASK, &previous, nullptr);
+}
 
 // Starts this executable with args, input written to its stdin, stderr to err_name.
 Child start_child(const std::vector<std::string>& args, const std::string& input, const std::string& err_name) {
@@ -68,13 +98,7 @@ Child start_child(const std::vector<std::string>& args, const std::string& input
     ::close(from_child[0]);
     return {};
   }
-  // The job is small (a point): written at once, within the pipe's buffer.
-  std::size_t written = 0;
-  while (written < input.size()) {
-    const ssize_t n = ::write(to_child[1], input.data() + written, input.size() - written);
-    if (n <= 0) break;
-    written += static_cast<std::size_t>(n);
-  }
+  write_to_child(to_child[1], input);
   ::close(to_child[1]);
   return {pid, from_child[0]};
 }
