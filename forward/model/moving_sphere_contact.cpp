@@ -253,9 +253,9 @@ Eigen::MatrixXd MovingSphereContact::compliance(const std::vector<Point>& points
 // W is positive definite, so the contact does not hop between neighbouring points. Returns the
 // force on the sheet along each point's (n, s, t): (-P, F_s, F_t).
 Eigen::VectorXd MovingSphereContact::solve(const std::vector<Point>& points, const Eigen::MatrixXd& W) {
+  if (friction_ == 0.0) return solve_frictionless(points, W);
   const int k = static_cast<int>(points.size());
   Eigen::VectorXd phi = Eigen::VectorXd::Zero(3 * k), w_phi = Eigen::VectorXd::Zero(3 * k);
-  if (friction_ == 0.0) return solve_frictionless(points, W);
   const auto apply = [&](int i, const Eigen::Vector3d& delta) {
     if (delta.squaredNorm() == 0.0) return;
     w_phi.noalias() += W.middleCols<3>(3 * i) * delta;
