@@ -21,7 +21,7 @@ int count(const std::string& s, const std::string& what) {
 }  // namespace
 
 TEST(Vtu, StructureAndValues) {
-  const auto m = mesh::square_sheet({2.0, 1.0, 2, 1, false, 1.0, 1.0});  // 6 nodes, 2 quads
+  const auto m = mesh::square_sheet({2.0, 1.0, 2, 1, false, 1.0, 1.0, 0, {}});  // 6 nodes, 2 quads
   mesh::VtuFrame f;
   mesh::VtuField thick{"thickness", 1, {1.2, 1.2, 1.1, 1.2, 1.2, 0.123456789012345678}};
   mesh::VtuField disp{"displacement", 3, std::vector<double>(18, 0.0)};
@@ -44,7 +44,7 @@ TEST(Vtu, CollectionListsEveryStep) {
   const fs::path dir = fs::temp_directory_path() / ("spifit_vtu_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const auto m = mesh::square_sheet({1.0, 1.0, 2, 2, false, 1.0, 1.0});
+  const auto m = mesh::square_sheet({1.0, 1.0, 2, 2, false, 1.0, 1.0, 0, {}});
   mesh::PvdCollection pvd(dir, "indent");
   for (int s = 0; s < 3; ++s) pvd.write_step(0.5 * s, m, {});
   const std::string pvd_text = test::slurp(dir / "indent.pvd");
