@@ -44,6 +44,11 @@ struct DiscLayout {
   // then the radii of the circular layers beyond ring_start (none without ring_start).
   std::vector<double> transition, radii;
   int layers_total = 0;  // mt + radii.size()
+  // Coarsened centre (coarse_inside > 0): the core and the ring layers below fine_from have half
+  // the elements along them (n / 2 per kite side); layer fine_from has the full count, its odd
+  // nodes hanging in the middle of the coarse elements' outer edges. fine_from = 0: not coarsened.
+  int fine_from = 0;
+  int n_core = 0;  // elements along each kite side of the core
 };
 
 void check_disc_options(const DiscOptions& o) {
@@ -52,6 +57,29 @@ void check_disc_options(const DiscOptions& o) {
   if (o.elements_per_45deg < 2) throw std::invalid_argument("elements_per_45deg must be >= 2");
   if (!(o.radial_grading > 0 && o.band_factor > 0)) throw std::invalid_argument("grading and band factor must be > 0");
   if (!(o.max_sector_deg == 45.0 || o.max_sector_deg == 90.0)) throw std::invalid_argument("max_sector_deg must be 45 or 90");
+  if (!(o.coarse_inside >= 0.0 && o.coarse_inside < o.radius)) throw std::invalid_argument("coarse_inside must lie in [0, radius)");
+}
+
+// Radius of ring layer j along the sub-sector's first edge.
+double layer_radius(const DiscLayout& l, int j) {
+  return j <= l.mt ? l.rc + l.transition[static_cast<std::size_t>(j)] * (l.r_inner - l.rc) : l.radii[static_cast<std::size_t>(j - l.mt - 1)];
+}
+
+// The first ring layer at or beyond coarse_inside carries the hanging nodes; it must lie beyond
+// the core and inside the rim (whose nodes are clamped).
+void place_coarsening(const DiscOptions& o, DiscLayout& l) {
+  l.n_core = l.n;
+  if (o.coarse_inside <= 0.0) return;
+  if (l.n % 2 != 0)
+    throw std::invalid_argument("coarse_inside needs an even number of elements along each side of the core (" + std::to_string(l.n) +
+                                "): elements_per_45deg a multiple of 4");
+  int j = 0;
+  while (j <= l.layers_total && layer_radius(l, j) < o.coarse_inside) ++j;
+  if (j == 0 || j >= l.layers_total)
+    throw std::invalid_argument("coarse_inside must lie between the core (" + std::to_string(l.rc) + " mm) and the last ring layer inside the rim (" +
+                                std::to_string(layer_radius(l, l.layers_total - 1)) + " mm)");
+  l.fine_from = j;
+  l.n_core = l.n / 2;
 }
 
 DiscLayout disc_layout(const DiscOptions& o) {
@@ -94,6 +122,7 @@ DiscLayout disc_layout(const DiscOptions& o) {
   l.rc = rc;
   l.r_inner = circular ? o.ring_start : o.radius;
   l.layers_total = l.mt + static_cast<int>(l.radii.size());
+  place_coarsening(o, l);
   return l;
 }
 
@@ -124,27 +153,44 @@ void add_core(Mesh& mesh, const Eigen::Vector2d& O, const Eigen::Vector2d& A, co
   }
 }
 
-// Ring of the sub-sector starting at polar angle t0: inner polyline A -> M -> B (2n segments),
-// transition layers to r_inner, then the circular layers.
+// Ring of the sub-sector starting at polar angle t0: inner polyline A -> M -> B, transition
+// layers to r_inner, then the circular layers. A layer has 2 n segments, or 2 n_core below
+// fine_from.
 void add_ring(Mesh& mesh, const DiscLayout& l, double t0, const Eigen::Vector2d& A, const Eigen::Vector2d& M,
               const Eigen::Vector2d& B) {
-  const int n = l.n, mt = l.mt, layers_total = l.layers_total;
-  const double beta = l.beta;
-  std::vector<Eigen::Vector2d> inner(2 * n + 1);
-  for (int k = 0; k <= 2 * n; ++k) inner[k] = k <= n ? edge(A, M, static_cast<double>(k) / n) : edge(M, B, static_cast<double>(k - n) / n);
-  std::vector<int> ring((layers_total + 1) * (2 * n + 1));
+  const int mt = l.mt, layers_total = l.layers_total;
+  auto segments = [&](int j) { return 2 * (j < l.fine_from ? l.n_core : l.n); };
+  auto position = [&](int j, int k) {
+    const int half = segments(j) / 2;
+    const Eigen::Vector2d in = k <= half ? edge(A, M, static_cast<double>(k) / half) : edge(M, B, static_cast<double>(k - half) / half);
+    const double th = t0 + l.beta * k / segments(j);
+    const Eigen::Vector2d dir(std::cos(th), std::sin(th));
+    return j <= mt ? Eigen::Vector2d(in + l.transition[static_cast<std::size_t>(j)] * (l.r_inner * dir - in))
+                   : Eigen::Vector2d(l.radii[static_cast<std::size_t>(j - mt - 1)] * dir);
+  };
+  std::vector<std::vector<int>> layer(static_cast<std::size_t>(layers_total) + 1);
   for (int j = 0; j <= layers_total; ++j) {
-    for (int k = 0; k <= 2 * n; ++k) {
-      const double th = t0 + beta * k / (2 * n);
-      const Eigen::Vector2d dir(std::cos(th), std::sin(th));
-      const Eigen::Vector2d p = j <= mt ? Eigen::Vector2d(inner[k] + l.transition[static_cast<std::size_t>(j)] * (l.r_inner * dir - inner[k]))
-                                        : Eigen::Vector2d(l.radii[static_cast<std::size_t>(j - mt - 1)] * dir);
-      ring[j * (2 * n + 1) + k] = add_node(mesh, p);
+    auto& ids = layer[static_cast<std::size_t>(j)];
+    ids.resize(static_cast<std::size_t>(segments(j)) + 1);
+    const bool hanging = j == l.fine_from && l.fine_from > 0;
+    for (int k = 0; k <= segments(j); ++k)
+      if (!hanging || k % 2 == 0) ids[static_cast<std::size_t>(k)] = add_node(mesh, position(j, k));
+    if (!hanging) continue;
+    // The odd nodes halve the straight outer edges of the coarse elements below.
+    for (int k = 1; k < segments(j); k += 2) {
+      const int a = ids[static_cast<std::size_t>(k - 1)], b = ids[static_cast<std::size_t>(k + 1)];
+      const Eigen::Vector3d mid = 0.5 * (mesh.nodes[static_cast<std::size_t>(a)] + mesh.nodes[static_cast<std::size_t>(b)]);
+      ids[static_cast<std::size_t>(k)] = add_node(mesh, mid.head<2>());
+      mesh.constrained_nodes.push_back({ids[static_cast<std::size_t>(k)], {{a, 0.5}, {b, 0.5}}});
     }
   }
-  auto rid = [&](int k, int j) { return ring[j * (2 * n + 1) + k]; };
   for (int j = 0; j < layers_total; ++j) {
-    for (int k = 0; k < 2 * n; ++k) mesh.quads.push_back({rid(k, j), rid(k, j + 1), rid(k + 1, j + 1), rid(k + 1, j)});
+    const auto& lo = layer[static_cast<std::size_t>(j)];
+    const auto& hi = layer[static_cast<std::size_t>(j + 1)];
+    const int step = static_cast<int>(hi.size() - 1) / static_cast<int>(lo.size() - 1);  // 2 below the hanging layer
+    for (int k = 0; k + 1 < static_cast<int>(lo.size()); ++k)
+      mesh.quads.push_back({lo[static_cast<std::size_t>(k)], hi[static_cast<std::size_t>(step * k)], hi[static_cast<std::size_t>(step * (k + 1))],
+                            lo[static_cast<std::size_t>(k + 1)]});
   }
 }
 
@@ -158,7 +204,7 @@ void add_sector(Mesh& mesh, const DiscLayout& l, int s) {
   // Bisector point of a right-angled kite (A-M perpendicular to O-A): corner angles beta at
   // the axis, 90 deg at A and B, 180 deg - beta at M; a square for beta = 90 deg.
   const Eigen::Vector2d M = rc / std::cos(0.5 * beta) * Eigen::Vector2d(std::cos(t0 + 0.5 * beta), std::sin(t0 + 0.5 * beta));
-  add_core(mesh, O, A, M, B, l.n);
+  add_core(mesh, O, A, M, B, l.n_core);
   add_ring(mesh, l, t0, A, M, B);
 }
 

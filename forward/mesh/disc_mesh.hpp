@@ -14,6 +14,12 @@
 // (transition_elements layers) and a circular part from ring_start to the rim whose node
 // layers are circles, spaced as above (grading or band) on their true radii; rim_ring_width > 0
 // makes the last of them one ring of elements of that radial width at the rim.
+//
+// Coarsened centre (coarse_inside > 0): inside that radius the core has (n/2) x (n/2) elements
+// and the ring layers n instead of 2 n per sub-sector; on the first ring layer at or beyond it
+// (measured along the sub-sector's edge) every other node hangs in the middle of a coarse
+// element's outer edge (Mesh::constrained_nodes, weights 1/2). For cones, whose tool never reaches
+// the floor's centre.
 #include "forward/mesh/mesh.hpp"
 
 namespace spifit::mesh {
@@ -32,6 +38,8 @@ struct DiscOptions {
   double ring_start = 0.0;            // mm; > 0: circular layers from here to the rim
   int transition_elements = 0;        // layers from the kite to ring_start; 0: about square
   double rim_ring_width = 0.0;        // mm; > 0: the outermost ring has this radial width
+  double coarse_inside = 0.0;         // mm; > 0: half the elements around the centre inside this
+                                      // radius (hanging nodes on the first layer beyond it)
 };
 
 // Node sets: "axis" (the centre node), "rim" (r = radius), "edge_theta0" and "edge_theta1" (the

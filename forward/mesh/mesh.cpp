@@ -41,7 +41,6 @@ std::vector<int> select_elements(const Mesh& m, const std::function<bool(const E
 }
 
 void merge_coincident_nodes(Mesh& m, double tol) {
-  if (!m.constrained_nodes.empty()) throw std::invalid_argument("merge_coincident_nodes: the mesh has constrained nodes");
   // Hash on a grid of cell size tol; compare with the 27 neighbouring cells.
   struct Key {
     long x, y, z;
@@ -92,6 +91,17 @@ void merge_coincident_nodes(Mesh& m, double tol) {
     std::sort(set.begin(), set.end());
     set.erase(std::unique(set.begin(), set.end()), set.end());
   }
+  // A constrained node keeps its constraint under its new number; merged with another node it
+  // would be constrained and free (or constrained twice) at once.
+  std::vector<int> merged_into(kept.size(), 0);
+  for (int v : map) ++merged_into[static_cast<std::size_t>(v)];
+  for (ConstrainedNode& c : m.constrained_nodes) {
+    if (merged_into[static_cast<std::size_t>(map[c.node])] != 1)
+      throw std::invalid_argument("merge_coincident_nodes: constrained node " + std::to_string(c.node) + " coincides with another node");
+    c.node = map[c.node];
+    for (auto& [master, w] : c.masters) master = map[master];
+  }
+  std::sort(m.constrained_nodes.begin(), m.constrained_nodes.end(), [](const auto& a, const auto& b) { return a.node < b.node; });
 }
 
 namespace {

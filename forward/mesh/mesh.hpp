@@ -42,8 +42,8 @@ std::vector<int> select_nodes(const Mesh& m, const std::function<bool(const Eige
 std::vector<int> select_elements(const Mesh& m, const std::function<bool(const Eigen::Vector3d&)>& centroid_inside);
 
 // Merges nodes closer than tol (spatial hashing; the first occurrence keeps its index order),
-// renumbers the elements and the node sets. Deterministic. Not for meshes with constrained nodes
-// (std::invalid_argument).
+// renumbers the elements, the node sets and the constrained nodes. Deterministic. A constrained
+// node that coincides with another node is an error (std::invalid_argument).
 void merge_coincident_nodes(Mesh& m, double tol);
 
 // Empty when the mesh is valid: node indices in range, four distinct nodes per quad, positive

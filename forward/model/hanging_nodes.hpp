@@ -13,6 +13,13 @@
 // the tool. Masters that are supported (clamped edges, a symmetry plane) are not framed; their
 // x, y, z rotations are then the frame components of the hanging node's frame up to that angle
 // (on y = 0 of a half model, exactly: t2 = y and rotations about t1 are held).
+//
+// A framed hanging node with a master that is not framed and has both in-plane rotations free
+// (x and y not prescribed: the edge of a pie, whose rotations are cyclically tied) would tie the
+// hanging node's turning frame to the master's fixed x, y axes, a tie that changes with the
+// configuration while the solver's is fixed: on the short cone Newton then went down to the
+// minimum increment within 1.25 mm of travel. Such a hanging node keeps its own two rotations
+// (its translations stay tied); only its fine neighbours turn it.
 #include "forward/mesh/mesh.hpp"
 #include "forward/solver/dof_constraints.hpp"
 
@@ -23,7 +30,8 @@ class ShellModel;
 // Before ShellModel::use_nodal_rotation_frames: ties the hanging nodes' translations.
 void tie_hanging_translations(const mesh::Mesh& mesh, solver::DofConstraints* c);
 // After use_nodal_rotation_frames, before c->finalize(): ties their two frame rotations (x and y
-// rotations for a node without a frame).
-void tie_hanging_rotations(const mesh::Mesh& mesh, solver::DofConstraints* c);
+// rotations for a node without a frame), except next to a master described above. Returns the
+// number of hanging nodes whose rotations were tied.
+int tie_hanging_rotations(const ShellModel& model, solver::DofConstraints* c);
 
 }  // namespace spifit::model

@@ -43,28 +43,57 @@ void DofConstraints::tie(int slave, std::vector<std::pair<int, double>> masters)
   finalized_ = false;
 }
 
+// A tied DOF's expansion into reduced unknowns and its prescribed part per unit load factor,
+// through tied masters (chains such as a hanging node whose edge ends on a pie's tied edge).
+// Terms on the same reduced unknown are summed, in the order of their first appearance.
+void DofConstraints::expand_tied(std::size_t i, const std::vector<int>& reduced, std::vector<int>& state,
+                                 std::vector<std::vector<Term>>& expanded) {
+  if (state[i] == 2) return;
+  if (state[i] == 1)
+    throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(i) + " is tied to itself through a chain of ties");
+  state[i] = 1;
+  std::vector<Term> out;
+  auto add = [&out](int r, double c) {
+    if (c == 0.0) return;
+    for (Term& t : out)
+      if (t.reduced == r) {
+        t.coefficient += c;
+        return;
+      }
+    out.push_back({r, c});
+  };
+  amplitude_[i] = 0.0;
+  for (const auto& [m, c] : masters_[i]) {
+    const auto mi = static_cast<std::size_t>(m);
+    switch (kind_[mi]) {
+      case Kind::free: add(reduced[mi], c); break;
+      case Kind::prescribed: amplitude_[i] += c * amplitude_[mi]; break;
+      case Kind::tied:
+        expand_tied(mi, reduced, state, expanded);
+        amplitude_[i] += c * amplitude_[mi];
+        for (const Term& t : expanded[mi]) add(t.reduced, c * t.coefficient);
+        break;
+    }
+  }
+  expanded[i] = std::move(out);
+  state[i] = 2;
+}
+
 void DofConstraints::finalize() {
   const std::size_t n = kind_.size();
   std::vector<int> reduced(n, -1);
   num_reduced_ = 0;
   for (std::size_t i = 0; i < n; ++i)
     if (kind_[i] == Kind::free) reduced[i] = num_reduced_++;
+  std::vector<int> state(n, 0);  // tied DOFs: 0 not expanded, 1 being expanded, 2 done
+  std::vector<std::vector<Term>> expanded(n);
+  for (std::size_t i = 0; i < n; ++i)
+    if (kind_[i] == Kind::tied) expand_tied(i, reduced, state, expanded);
   offset_.assign(n + 1, 0);
   terms_.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    if (kind_[i] == Kind::free) {
-      terms_.push_back({reduced[i], 1.0});
-    } else if (kind_[i] == Kind::tied) {
-      amplitude_[i] = 0.0;
-      for (const auto& [m, c] : masters_[i]) {
-        const auto mk = kind_[static_cast<std::size_t>(m)];
-        if (mk == Kind::tied)
-          throw std::invalid_argument("inconsistent constraint: DOF " + std::to_string(i) + " is tied to DOF " + std::to_string(m) +
-                                      ", itself tied (chains are not supported)");
-        if (mk == Kind::prescribed) amplitude_[i] += c * amplitude_[static_cast<std::size_t>(m)];
-        else if (c != 0.0) terms_.push_back({reduced[static_cast<std::size_t>(m)], c});
-      }
-    }
+    if (kind_[i] == Kind::free) terms_.push_back({reduced[i], 1.0});
+    else if (kind_[i] == Kind::tied) terms_.insert(terms_.end(), expanded[i].begin(), expanded[i].end());
     offset_[i + 1] = static_cast<long>(terms_.size());
   }
   finalized_ = true;

@@ -32,9 +32,10 @@ class DofConstraints {
   // u_slave = sum coefficient_k u_master_k.
   void tie(int slave, std::vector<std::pair<int, double>> masters);
 
-  // Numbers the reduced unknowns. Throws std::invalid_argument("inconsistent constraint: ...")
-  // for a DOF both prescribed and tied, a slave used as a master, a DOF tied to itself or
-  // an index out of range. Prescribed masters contribute to the slave's prescribed part.
+  // Numbers the reduced unknowns. A tied master is replaced by its own expansion (chains of
+  // ties). Throws std::invalid_argument("inconsistent constraint: ...") for a DOF both
+  // prescribed and tied, a DOF tied to itself (directly or through a chain) or an index out of
+  // range. Prescribed masters contribute to the slave's prescribed part.
   void finalize();
 
   bool finalized() const { return finalized_; }
@@ -63,6 +64,7 @@ class DofConstraints {
   bool finalized_ = false;
   void check_dof(int dof, const char* what) const;
   void require_finalized() const;
+  void expand_tied(std::size_t i, const std::vector<int>& reduced, std::vector<int>& state, std::vector<std::vector<Term>>& expanded);
 };
 
 }  // namespace spifit::solver

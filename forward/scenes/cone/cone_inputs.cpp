@@ -51,6 +51,9 @@ void add_mesh(Table& t) {
             [](ConeScene& s) -> int& { return s.mesh.transition_elements; });
   t.real({"sheet.rim_ring_width", {}, "mm", Range::non_negative(), {}, "radial width of the outermost ring (0: none)", false},
          [](ConeScene& s) -> double& { return s.mesh.rim_ring_width; });
+  t.real({"sheet.coarse_inside", {}, "mm", Range::non_negative(), {},
+          "half the elements around the centre inside this radius, hanging nodes at it (0: none); inside the last contour less the tool radius", false},
+         [](ConeScene& s) -> double& { return s.mesh.coarse_inside; });
 }
 
 void add_sheet(Table& t) {

@@ -4,6 +4,7 @@
 
 #include "forward/mesh/mesh_quality.hpp"
 #include "forward/model/cyclic_symmetry.hpp"
+#include "forward/model/hanging_nodes.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
@@ -26,7 +27,9 @@ bool is_pie(const ConeScene& s) { return s.pie_angle < 360.0; }
 // Rim (= clamp radius) fixed in translation (and rotation on request); pie edges tied
 // cyclically: the DOFs of edge_theta1 are those of edge_theta0 rotated by gamma, and the axis
 // node moves along z only (tie_cyclic_edges). The rim node of edge_theta1 is a tied node: it
-// is not clamped itself but follows its clamped partner on edge_theta0 (R 0 = 0).
+// is not clamped itself but follows its clamped partner on edge_theta0 (R 0 = 0). A coarsened
+// centre's hanging nodes follow their edges' ends (model/hanging_nodes.hpp; an end on
+// edge_theta1 is expanded through its cyclic tie).
 solver::DofConstraints cone_constraints(const ConeScene& s, model::ShellModel* model) {
   const mesh::Mesh& m = model->mesh();
   solver::DofConstraints c(model->num_dofs());
@@ -41,9 +44,11 @@ solver::DofConstraints cone_constraints(const ConeScene& s, model::ShellModel* m
     if (slave[static_cast<std::size_t>(n)]) continue;
     for (int k = 0; k < clamped; ++k) c.prescribe(model::ShellModel::dof(n, k));
   }
+  model::tie_hanging_translations(m, &c);
   // Five unknowns at every node away from the ties and the clamp: the drilling rotations
   // leave the factorisation (docs/design/numerics-shell.md, "Nodal rotation frames").
   model->use_nodal_rotation_frames(&c);
+  model::tie_hanging_rotations(*model, &c);
   c.finalize();
   return c;
 }
@@ -89,6 +94,8 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const mode
                 {"elements_per_45deg", s.mesh.elements_per_45deg},
                 {"material_axes", model::to_string(s.material_axes)},
                 {"virtual_tools_deg", tool.copies_deg()}};
+  if (s.mesh.coarse_inside > 0.0)
+    j["model"].update({{"coarse_inside", s.mesh.coarse_inside}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});
   json stages = json::array();
   for (const auto& o : s.stages)
     stages.push_back({{"wall_angle", o.wall_angle_deg}, {"stepdown", o.stepdown}, {"contours", o.contours}, {"top_radius", o.top_radius}});

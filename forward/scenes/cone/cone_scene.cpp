@@ -156,6 +156,22 @@ InputViolation stage_violation(const ConeScene& s) {
   return {};
 }
 
+// A coarsened centre stays out of the tool's reach: inside the last contour's touching radius
+// less the tool radius. The explicit scheme's diagonal mass has no hanging nodes.
+InputViolation coarsening_violation(const ConeScene& s) {
+  using io::format_number;
+  if (s.mesh.coarse_inside <= 0.0) return {};
+  if (s.explicit_scheme)
+    return {"sheet.coarse_inside", format_number(s.mesh.coarse_inside),
+            "a coarsened centre is for the implicit scheme (the explicit lumped mass has no hanging nodes): set it to 0"};
+  double reach = std::numeric_limits<double>::infinity();
+  for (const auto& o : cone_scene_stages(s)) reach = std::min(reach, toolpath::cone_contour_touch_radius(o, o.contours) - o.tool_radius);
+  if (s.mesh.coarse_inside > reach)
+    return {"sheet.coarse_inside", format_number(s.mesh.coarse_inside),
+            "must not exceed the last contour's touching radius less the tool radius, " + format_number(reach) + " mm"};
+  return {};
+}
+
 // The mesh must exist and its elements must not be too short for the thickness (ShellModel's
 // limit t/l <= 3): checked before the run so that the error comes before any output.
 InputViolation mesh_violation(const ConeScene& s) {
@@ -163,6 +179,8 @@ InputViolation mesh_violation(const ConeScene& s) {
   try {
     m = cone_scene_mesh(s);
   } catch (const std::invalid_argument& e) {
+    if (std::string(e.what()).find("coarse_inside") != std::string::npos)
+      return {"sheet.coarse_inside", io::format_number(s.mesh.coarse_inside), e.what()};
     return {"sheet", "", std::string("cannot mesh the sheet: ") + e.what()};
   }
   double shortest = std::numeric_limits<double>::infinity();
@@ -211,6 +229,7 @@ InputViolation cone_scene_error(const ConeScene& s) {
     return {"sheet.ring_start", format_number(s.mesh.ring_start), "must lie in [0, clamp_radius) (0: no circular layers)"};
   if (InputViolation v = stage_violation(s)) return v;
   if (InputViolation v = scheme_violation(s)) return v;
+  if (InputViolation v = coarsening_violation(s)) return v;
   return mesh_violation(s);
 }
 

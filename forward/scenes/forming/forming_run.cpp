@@ -32,7 +32,7 @@ solver::DofConstraints sheet_constraints(const FormingScene& s, model::ShellMode
         if (!c.prescribed(model::ShellModel::dof(n, k))) c.prescribe(model::ShellModel::dof(n, k));
   model::tie_hanging_translations(mesh, &c);
   model.use_nodal_rotation_frames(&c);
-  model::tie_hanging_rotations(mesh, &c);
+  model::tie_hanging_rotations(model, &c);
   c.finalize();
   return c;
 }

@@ -1,6 +1,7 @@
 // DofConstraints (supports, ties) and the cyclic ties of pies, solved by the Newton solver.
 #include "forward/mesh/disc_mesh.hpp"
 #include "forward/model/cyclic_symmetry.hpp"
+#include "forward/model/hanging_nodes.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -63,9 +64,30 @@ TEST(DofConstraints, InconsistentConstraintsAreErrors) {
   };
   expect_error([](DofConstraints& c) { c.prescribe(1, 1.0); c.prescribe(1, 2.0); }, "prescribed to");
   expect_error([](DofConstraints& c) { c.prescribe(1); c.tie(1, {{2, 1.0}}); }, "prescribed and tied");
-  expect_error([](DofConstraints& c) { c.tie(1, {{2, 1.0}}); c.tie(2, {{3, 1.0}}); }, "chains");
+  expect_error([](DofConstraints& c) { c.tie(1, {{2, 1.0}}); c.tie(2, {{1, 1.0}}); }, "through a chain");
   expect_error([](DofConstraints& c) { c.tie(1, {{1, 1.0}}); }, "itself");
   expect_error([](DofConstraints& c) { c.prescribe(9); }, "out of range");
+}
+
+TEST(DofConstraints, ATiedMasterIsReplacedByItsOwnExpansion) {
+  // u1 = 0.5 u0 + 0.5 u2, u2 = 2 u3 + 0.25 u4 (u4 prescribed to 4 per unit load), u5 = u1 - u0:
+  // u1 = 0.5 u0 + u3 + 0.5, u5 = -0.5 u0 + u3 + 0.5 at load factor 1.
+  DofConstraints c(6);
+  c.tie(5, {{1, 1.0}, {0, -1.0}});
+  c.tie(1, {{0, 0.5}, {2, 0.5}});
+  c.tie(2, {{3, 2.0}, {4, 0.25}});
+  c.prescribe(4, 4.0);
+  c.finalize();
+  ASSERT_EQ(c.num_reduced(), 2);
+  const Eigen::VectorXd u = c.expand(Eigen::Vector2d(3.0, 7.0)) + c.prescribed_values(1.0);
+  EXPECT_DOUBLE_EQ(u[0], 3.0);
+  EXPECT_DOUBLE_EQ(u[3], 7.0);
+  EXPECT_DOUBLE_EQ(u[4], 4.0);
+  EXPECT_DOUBLE_EQ(u[2], 2.0 * 7.0 + 1.0);
+  EXPECT_DOUBLE_EQ(u[1], 0.5 * 3.0 + 0.5 * 15.0);
+  EXPECT_DOUBLE_EQ(u[5], u[1] - u[0]);
+  // Terms on the same unknown are summed: u5 has one term on u0 (-0.5) and one on u3 (1).
+  EXPECT_EQ(c.expansion(5).size(), 2u);
 }
 
 TEST(CyclicSymmetry, PieReproducesTheHomogeneousExpansionOfADisc) {
@@ -94,6 +116,66 @@ TEST(CyclicSymmetry, PieReproducesTheHomogeneousExpansionOfADisc) {
     err = std::max(err, (model.displacement(n) - 0.01 * Eigen::Vector3d(m.nodes[static_cast<std::size_t>(n)].x(), m.nodes[static_cast<std::size_t>(n)].y(), 0.0)).norm());
   std::printf("cyclic pie: largest displacement error %.3e mm (rim displacement 0.1 mm)\n", err);
   EXPECT_LT(err, 1e-12);
+}
+
+TEST(CyclicSymmetry, CoarsenedPieReproducesTheHomogeneousExpansion) {
+  // The same expansion on a 90 deg pie whose centre is coarsened (disc_mesh's coarse_inside): the
+  // hanging nodes next to the pie's edges have a master on an edge, and on edge_theta1 that master
+  // is itself tied (a chain the constraints expand). A linear field is reproduced exactly.
+  mesh::DiscOptions o;
+  o.radius = 10.0;
+  o.angle_deg = 90.0;
+  o.elements_per_45deg = 4;
+  o.coarse_inside = 7.0;
+  const mesh::Mesh m = mesh::disc_mesh(o);
+  ASSERT_EQ(m.constrained_nodes.size(), 4u);
+  ShellModel model(m, 0.5, aluminium(false), {});
+  DofConstraints c(model.num_dofs());
+  model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", 90.0, &c);
+  model::tie_hanging_translations(m, &c);
+  for (int n : m.node_sets.at("rim")) {
+    const Eigen::Vector3d& p = m.nodes[static_cast<std::size_t>(n)];
+    if (c.tied(ShellModel::dof(n, 0))) continue;
+    c.prescribe(ShellModel::dof(n, 0), 0.01 * p.x());
+    c.prescribe(ShellModel::dof(n, 1), 0.01 * p.y());
+  }
+  for (int n = 0; n < m.num_nodes(); ++n)
+    if (!c.tied(ShellModel::dof(n, 2))) c.prescribe(ShellModel::dof(n, 2));
+  EXPECT_EQ(model::tie_hanging_rotations(model, &c), 4);  // no frames: every hanging node's x, y rotations
+  c.finalize();
+  NewtonOptions no;
+  no.linear = true;
+  no.initial_increment = no.max_increment = 1.0;
+  NewtonSolver s(model, c, no);
+  ASSERT_TRUE(s.solve().converged);
+  double err = 0.0;
+  for (int n = 0; n < m.num_nodes(); ++n)
+    err = std::max(err, (model.displacement(n) - 0.01 * Eigen::Vector3d(m.nodes[static_cast<std::size_t>(n)].x(), m.nodes[static_cast<std::size_t>(n)].y(), 0.0)).norm());
+  std::printf("coarsened cyclic pie: largest displacement error %.3e mm (rim displacement 0.1 mm)\n", err);
+  EXPECT_LT(err, 1e-12);
+}
+
+TEST(CyclicSymmetry, HangingNodesNextToAPiesEdgesKeepTheirRotationsInNodalFrames) {
+  // With nodal rotation frames the edge nodes of a pie are not framed (their rotations are the
+  // cyclic ties' masters or slaves in x, y, z): the two hanging nodes next to the edges keep their
+  // own rotations, the two between framed masters are tied.
+  mesh::DiscOptions o;
+  o.radius = 10.0;
+  o.angle_deg = 90.0;
+  o.elements_per_45deg = 4;
+  o.coarse_inside = 7.0;
+  const mesh::Mesh m = mesh::disc_mesh(o);
+  ShellModel model(m, 0.5, aluminium(false), {});
+  DofConstraints c(model.num_dofs());
+  model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", 90.0, &c);
+  model::tie_hanging_translations(m, &c);
+  model.use_nodal_rotation_frames(&c);
+  EXPECT_EQ(model::tie_hanging_rotations(model, &c), 2);
+  for (const mesh::ConstrainedNode& h : m.constrained_nodes) {
+    EXPECT_TRUE(c.tied(ShellModel::dof(h.node, 0)));
+    EXPECT_TRUE(model.has_rotation_frame(h.node));
+  }
+  c.finalize();
 }
 
 // The disc (angle 360) or 90 deg pie of an orthotropic Hill sheet (card C.3's F, G, H, N) whose rim
