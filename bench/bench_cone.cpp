@@ -10,7 +10,8 @@
 // and are selected with --benchmark_filter; --benchmark_filter=cone50_ runs the pie trade (the
 // first 10 contours of cone50 on the 45, 90 and 360 degree meshes of one layout), and
 // cone70_fine_loose_60 the 60 fine contours with loose Newton tolerances (the speed/accuracy
-// trade of docs/results/benchmarks.md, "Looser Newton tolerances").
+// trade of docs/results/benchmarks.md, "Looser Newton tolerances"), cone70_fine_floor_60 with a
+// coarsened floor, cone70_fine_fast_60 with both.
 // --benchmark_repetitions=N repeats a scene N times and adds Google Benchmark's median (the
 // "_median" row) over the repetitions.
 #include "bench/bench_main.hpp"
@@ -49,6 +50,8 @@ const Case kCases[] = {
     {"cone50_disc360_10", "experiments/aa3003o/scenes/cone50_disc360_10.toml", 1, false},
     {"cone70_fine_60", "experiments/aa3003o/scenes/cone70_pie45_fine.toml", 1, false},
     {"cone70_fine_loose_60", "experiments/aa3003o/scenes/cone70_pie45_fine_loose.toml", 1, false},
+    {"cone70_fine_floor_60", "experiments/aa3003o/scenes/cone70_pie45_fine_floor.toml", 1, false},
+    {"cone70_fine_fast_60", "experiments/aa3003o/scenes/cone70_pie45_fine_fast.toml", 1, false},
     {"vwall_pie45", "experiments/aa3003o/scenes/vwall_pie45.toml", 1, false},
     {"vwall_pie45_polar", "experiments/aa3003o/scenes/vwall_pie45_polar.toml", 1, false},
 };
