@@ -121,6 +121,17 @@ std::pair<double, int> pie_expansion_error(const mesh::Mesh& m) {
   return {err, tied_rotations};
 }
 
+// small_disc's 90 deg pie (4 elements per kite side) with its centre coarsened inside 7 mm: the
+// hanging layer at 8 mm has 4 hanging nodes, two of them next to the pie's edges.
+mesh::Mesh coarsened_small_pie() {
+  mesh::DiscOptions o;
+  o.radius = 10.0;
+  o.angle_deg = 90.0;
+  o.elements_per_45deg = 4;
+  o.coarse_inside = 7.0;
+  return mesh::disc_mesh(o);
+}
+
 TEST(CyclicSymmetry, PieReproducesTheHomogeneousExpansionOfADisc) {
   const double err = pie_expansion_error(small_disc(90.0)).first;
   std::printf("cyclic pie: largest displacement error %.3e mm (rim displacement 0.1 mm)\n", err);
@@ -131,12 +142,7 @@ TEST(CyclicSymmetry, CoarsenedPieReproducesTheHomogeneousExpansion) {
   // The same expansion on a 90 deg pie whose centre is coarsened (disc_mesh's coarse_inside): the
   // hanging nodes next to the pie's edges have a master on an edge, and on edge_theta1 that master
   // is itself tied (a chain the constraints expand). A linear field is reproduced exactly.
-  mesh::DiscOptions o;
-  o.radius = 10.0;
-  o.angle_deg = 90.0;
-  o.elements_per_45deg = 4;
-  o.coarse_inside = 7.0;
-  const mesh::Mesh m = mesh::disc_mesh(o);
+  const mesh::Mesh m = coarsened_small_pie();
   ASSERT_EQ(m.constrained_nodes.size(), 4u);
   const auto [err, tied_rotations] = pie_expansion_error(m);
   EXPECT_EQ(tied_rotations, 4);  // no frames: every hanging node's x, y rotations
@@ -148,12 +154,7 @@ TEST(CyclicSymmetry, HangingNodesNextToAPiesEdgesKeepTheirRotationsInNodalFrames
   // With nodal rotation frames the edge nodes of a pie are not framed (their rotations are the
   // cyclic ties' masters or slaves in x, y, z): the two hanging nodes next to the edges keep their
   // own rotations, the two between framed masters are tied.
-  mesh::DiscOptions o;
-  o.radius = 10.0;
-  o.angle_deg = 90.0;
-  o.elements_per_45deg = 4;
-  o.coarse_inside = 7.0;
-  const mesh::Mesh m = mesh::disc_mesh(o);
+  const mesh::Mesh m = coarsened_small_pie();
   ShellModel model(m, 0.5, aluminium(false), {});
   DofConstraints c(model.num_dofs());
   model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", 90.0, &c);
