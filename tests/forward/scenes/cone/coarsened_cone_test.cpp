@@ -9,7 +9,6 @@
 #include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -22,9 +21,8 @@ namespace {
 std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) + "/" + rel; }
 
 ConeResult run(const ConeScene& s, const std::string& name) {
-  const fs::path d = fs::temp_directory_path() / ("spifit_coarsened_cone_" + name + "_" + std::to_string(::getpid()));
-  const auto out = io::OutputDirectory::prepare(d.string(), true);
-  ConeResult r = run_cone_scene(s, RunFiles(out));
+  const fs::path d = test::fresh_temp_path(name);
+  ConeResult r = run_cone_scene(s, RunFiles(io::OutputDirectory::prepare(d.string(), false)));
   fs::remove_all(d);
   return r;
 }
