@@ -1,6 +1,7 @@
 #include "forward/model/explicit_mass.hpp"
 
 #include "forward/io/binary_archive.hpp"
+#include "forward/model/bulk_viscosity.hpp"
 #include "forward/model/rotation_frames.hpp"
 #include "forward/model/shell_model.hpp"
 
@@ -52,13 +53,9 @@ double element_omega_squared(ShellModel& model, int e, double m, double i) {
 
 double element_length(const ShellModel& model, int e) {
   const auto& q = model.mesh().quads[static_cast<std::size_t>(e)];
-  const auto& x = model.positions();
-  const Eigen::Vector3d& a = x[static_cast<std::size_t>(q[0])];
-  const Eigen::Vector3d& b = x[static_cast<std::size_t>(q[1])];
-  const Eigen::Vector3d& c = x[static_cast<std::size_t>(q[2])];
-  const Eigen::Vector3d& d = x[static_cast<std::size_t>(q[3])];
-  const double area = 0.5 * (c - a).cross(d - b).norm();
-  return area / std::max((c - a).norm(), (d - b).norm());
+  element::NodeVectors x;
+  for (std::size_t a = 0; a < 4; ++a) x[a] = model.position(q[a]);
+  return diagonal_area(x) / std::max((x[2] - x[0]).norm(), (x[3] - x[1]).norm());
 }
 
 std::string describe_element(const ShellModel& model, int e) {
@@ -88,7 +85,9 @@ ExplicitMass explicit_mass(ShellModel& model, const ExplicitMassInputs& in) {
     const double m = in.density * t * area / 4.0;                                       // eq. 6.61, per node
     const double i = o.rotational_scaling * m * std::max(t * t / 12.0, area / 18.0);    // eq. 6.62
     const double omega2 = element_omega_squared(model, e, m, i) + in.contact_stiffness / (in.density * t);
-    unscaled[static_cast<std::size_t>(e)] = omega2 > 0.0 ? 2.0 / std::sqrt(omega2) : std::numeric_limits<double>::infinity();
+    // The bulk viscosity's linear term damps the highest mode by the fraction b1 of critical.
+    unscaled[static_cast<std::size_t>(e)] =
+        omega2 > 0.0 ? 2.0 / std::sqrt(omega2) * damped_step_fraction(o.bulk_viscosity_linear) : std::numeric_limits<double>::infinity();
     out.element_length[static_cast<std::size_t>(e)] = element_length(model, e);
   }
   model.revert();
@@ -122,11 +121,12 @@ ExplicitMass explicit_mass(ShellModel& model, const ExplicitMassInputs& in) {
   return out;
 }
 
-double current_time_step(const ShellModel& model, const ExplicitMass& mass, double safety) {
+double current_time_step(const ShellModel& model, const ExplicitMass& mass, double safety, const BulkViscosity* viscosity) {
   double step = std::numeric_limits<double>::infinity();
   for (int e = 0; e < model.num_elements(); ++e) {
     const auto k = static_cast<std::size_t>(e);
-    step = std::min(step, mass.element_step[k] * element_length(model, e) / mass.element_length[k]);
+    const double fraction = viscosity ? viscosity->compression_fraction(e) : 1.0;
+    step = std::min(step, mass.element_step[k] * fraction * element_length(model, e) / mass.element_length[k]);
   }
   return safety * step;
 }

@@ -23,6 +23,7 @@ class BinaryReader;
 namespace spifit::model {
 
 class ShellModel;
+class BulkViscosity;
 
 struct ExplicitMassInputs {
   double density = 2.7e-9;           // t/mm^3
@@ -32,7 +33,7 @@ struct ExplicitMassInputs {
 
 struct ExplicitMass {
   Eigen::VectorXd diagonal;                 // per DOF of the model: translational mass [t], rotational inertia [t mm^2]
-  std::vector<double> element_step;         // stable step of each element with its scaling [s]
+  std::vector<double> element_step;         // stable step of each element with its scaling (and the bulk viscosity's linear damping) [s]
   std::vector<double> element_length;       // each element's characteristic length at start-up (the recheck's reference) [mm]
   std::vector<double> element_factor;       // density factor of each element (mass_scaling, or more where selective)
   double time_step = 0.0;                   // safety x the smallest element_step [s]
@@ -50,8 +51,9 @@ ExplicitMass explicit_mass(ShellModel& model, const ExplicitMassInputs& inputs);
 double element_length(const ShellModel& model, int e);
 
 // The stable step now: each element's start-up step scaled by how its characteristic length
-// changed since (thinning and shear shorten it), times the safety factor.
-double current_time_step(const ShellModel& model, const ExplicitMass& mass, double safety);
+// changed since (thinning and shear shorten it) and, with a bulk viscosity, by its compression
+// fraction at the last rates, times the safety factor.
+double current_time_step(const ShellModel& model, const ExplicitMass& mass, double safety, const BulkViscosity* viscosity = nullptr);
 
 // Checkpoints of an explicit run, bit-exact: a resumed run keeps the mass and the element steps
 // and lengths of its start, not those of the deformed geometry it resumes from (which would

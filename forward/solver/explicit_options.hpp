@@ -20,6 +20,11 @@ struct ExplicitOptions {
   double time_scaling = 1.0;
   // Mass-proportional damping C = damping x M [1/s] (thesis eq. 5.1 with c2 = 0).
   double damping = 0.0;
+  // Bulk viscosity of the membrane (model/bulk_viscosity.hpp): an in-plane pressure against the
+  // element's area rate, linear in it (b1, the fraction of critical damping it gives the
+  // highest mode) and quadratic in its compression (b2). 0: off.
+  double bulk_viscosity_linear = 0.0;
+  double bulk_viscosity_quadratic = 0.0;
   // Time step = safety x the smallest element bound (Irons: the largest element frequency
   // bounds the model's).
   double safety = 0.9;

@@ -75,14 +75,29 @@ bool ExplicitSolver::step(double dt, double lambda0, double lambda1, ElementEval
   }
   problem_.accept_trial();
   problem_.commit(lambda1);
-  a = -r.cwiseQuotient(m_) - options_.damping * vh;
+  a = acceleration(r, vh, dt);
   if (contact_) {
     const Eigen::VectorXd next = dt * (vh + dt * a);  // the next step's increment without contact forces
     a += constraints_.reduce(contact_(dt, lambda1 + (lambda1 - lambda0), next)).cwiseQuotient(m_);
   }
   state_.v = vh + 0.5 * dt * a;
-  state_.damping_work += dt * options_.damping * vh.dot(m_.cwiseProduct(vh));
   return true;
+}
+
+Eigen::VectorXd ExplicitSolver::acceleration(const Eigen::VectorXd& r, const Eigen::VectorXd& v, double dt) {
+  Eigen::VectorXd f = options_.damping * m_.cwiseProduct(v);
+  if (velocity_forces_) f += constraints_.reduce(velocity_forces_(v));
+  // The central-difference pairing: a step's force works over half the moves on either side of
+  // it, here the last step's force and this one's over this step's move dt v. Paired with the
+  // move of its own step only, the work was off by the order of dt: 1e-3 of the energy of a
+  // damped breathing mode at 200 steps a period, 5e-4 at 800; paired, 1.3e-6 at 200
+  // (BulkViscosity.BreathingModeOfOneElementDecaysAtTheClosedFormDampingRatio).
+  if (dt > 0.0) {
+    const double last = state_.damping_force.size() == f.size() ? v.dot(state_.damping_force) : 0.0;
+    state_.damping_work += 0.5 * dt * (last + v.dot(f));
+  }
+  state_.damping_force = f;
+  return (-r - f).cwiseQuotient(m_);
 }
 
 bool ExplicitSolver::start(double lambda, ElementEvaluation* failure) {
@@ -91,7 +106,7 @@ bool ExplicitSolver::start(double lambda, ElementEvaluation* failure) {
   Eigen::VectorXd r;
   const bool ok = residual(lambda, &r, failure);
   problem_.revert();
-  if (ok) state_.a = -r.cwiseQuotient(m_) - options_.damping * state_.v;
+  if (ok) state_.a = acceleration(r, state_.v, 0.0);
   return ok;
 }
 

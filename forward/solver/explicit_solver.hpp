@@ -86,6 +86,13 @@ class ExplicitSolver {
   using ContactForces = std::function<Eigen::VectorXd(double dt, double lambda_next, const Eigen::VectorXd& next_increment)>;
   void set_contact_forces(ContactForces f) { contact_ = std::move(f); }
 
+  // Forces that depend on the velocity (the bulk viscosity, model/bulk_viscosity.hpp): given
+  // the reduced velocity, the forces at the committed configuration with the sign of internal
+  // forces (full DOF vector). Like the mass-proportional damping they take the half-step
+  // velocity, and their work counts as damping work. Set before run().
+  using VelocityForces = std::function<Eigen::VectorXd(const Eigen::VectorXd& v)>;
+  void set_velocity_forces(VelocityForces f) { velocity_forces_ = std::move(f); }
+
  private:
   NonlinearProblem& problem_;
   const DofConstraints& constraints_;
@@ -97,6 +104,10 @@ class ExplicitSolver {
   std::vector<Eigen::VectorXd> re_;
   std::vector<ElementEvaluation> ev_;
   ContactForces contact_;
+  VelocityForces velocity_forces_;
+  // The acceleration of the internal (residual r) and damping forces at velocity v; keeps the
+  // damping force and adds its work over this step's move dt v (dt = 0: none).
+  Eigen::VectorXd acceleration(const Eigen::VectorXd& r, const Eigen::VectorXd& v, double dt);
   // Residual (internal - external) reduced at the problem's trial configuration and lambda;
   // false with the failure when an element fails.
   bool residual(double lambda, Eigen::VectorXd* r, ElementEvaluation* failure);

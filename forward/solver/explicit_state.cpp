@@ -9,6 +9,7 @@ void save_explicit_state(io::BinaryWriter& w, const ExplicitState& s) {
   w.boolean(s.started);
   w.vector(s.v);
   w.vector(s.a);
+  w.vector(s.damping_force);
   for (double x : {s.damping_work, s.lambda, s.time}) w.f64(x);
   w.i64(s.steps);
   w.i64(s.cut_steps);
@@ -22,6 +23,7 @@ ExplicitState load_explicit_state(io::BinaryReader& r) {
   s.started = r.boolean();
   s.v = r.vector();
   s.a = r.vector();
+  s.damping_force = r.vector();
   s.damping_work = r.f64();
   s.lambda = r.f64();
   s.time = r.f64();
@@ -31,7 +33,8 @@ ExplicitState load_explicit_state(io::BinaryReader& r) {
   s.max_step = r.f64();
   s.step_bound = r.f64();
   const std::int64_t outputs = r.i64();
-  if (s.v.size() != s.a.size()) throw io::ArchiveError("explicit state: velocity and acceleration of different sizes");
+  if (s.v.size() != s.a.size() || (s.damping_force.size() != 0 && s.damping_force.size() != s.v.size()))
+    throw io::ArchiveError("explicit state: velocity, acceleration and damping force of different sizes");
   if (s.steps < 0 || s.cut_steps < 0 || outputs < 0 || outputs > 2'000'000'000)
     throw io::ArchiveError("explicit state: invalid step or output point count");
   s.outputs = static_cast<int>(outputs);

@@ -17,6 +17,7 @@ struct ExplicitState {
   bool started = false;        // the first acceleration has been computed (run() does not redo it)
   Eigen::VectorXd v, a;        // reduced velocity and acceleration
   double damping_work = 0.0;   // work of the damping forces so far [N mm]
+  Eigen::VectorXd damping_force;  // reduced damping force of the last step (empty: none), paired with half the next move
   double lambda = 0.0;         // load factor reached: an output point
   double time = 0.0;           // simulated time [s]
   long steps = 0, cut_steps = 0;

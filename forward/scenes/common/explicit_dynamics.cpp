@@ -4,6 +4,7 @@
 #include "forward/io/input_error.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -25,6 +26,8 @@ std::vector<std::pair<std::string, double>> decisive_options(const FeRunSetup& s
           {"solver.target_time_step", o.target_time_step},
           {"solver.time_scaling", o.time_scaling},
           {"solver.damping", o.damping},
+          {"solver.bulk_viscosity_linear", o.bulk_viscosity_linear},
+          {"solver.bulk_viscosity_quadratic", o.bulk_viscosity_quadratic},
           {"solver.time_step_safety", o.safety},
           {"solver.max_steps", o.max_steps},
           {"the steps between time-step re-estimates", static_cast<double>(o.recheck_every)},
@@ -71,7 +74,21 @@ void ExplicitDynamics::start() {
 }
 
 void ExplicitDynamics::build() {
-  solver_ = std::make_unique<solver::ExplicitSolver>(model_, constraints_, mass_.diagonal, *setup_.explicit_scheme);
+  const solver::ExplicitOptions& o = *setup_.explicit_scheme;
+  solver_ = std::make_unique<solver::ExplicitSolver>(model_, constraints_, mass_.diagonal, o);
+  if (o.bulk_viscosity_linear > 0.0 || o.bulk_viscosity_quadratic > 0.0) {
+    // Each element's plane-stress wave speed at its scaled density.
+    std::vector<double> density, wave_speed;
+    const material::MaterialParams<double>& m = setup_.material;
+    for (double f : mass_.element_factor) {
+      density.push_back(setup_.density * f);
+      wave_speed.push_back(std::sqrt(m.E / (density.back() * (1.0 - m.nu * m.nu))));
+    }
+    viscosity_ = std::make_unique<model::BulkViscosity>(model_, constraints_, std::move(density), std::move(wave_speed), o.bulk_viscosity_linear,
+                                                        o.bulk_viscosity_quadratic);
+    model::BulkViscosity* bv = viscosity_.get();
+    solver_->set_velocity_forces([bv](const Eigen::VectorXd& v) { return bv->forces(v); });
+  }
   if (!uses_mst(setup_)) return;
   const toolpath::ToolPath& path = setup_.tool_path;
   const LoadMap& map = setup_.load_map;

@@ -5,6 +5,7 @@
 // Built at a fresh run's start, or restored from the run's checkpoint. A resumed run keeps the
 // mass and element steps of its start: rebuilt from the deformed geometry they would differ,
 // and so would every step after.
+#include "forward/model/bulk_viscosity.hpp"
 #include "forward/model/explicit_mass.hpp"
 #include "forward/model/moving_sphere_contact.hpp"
 #include "forward/scenes/common/fe_run.hpp"
@@ -27,6 +28,7 @@ class ExplicitDynamics : public CheckpointPart {
   solver::ExplicitSolver& solver() { return *solver_; }
   const model::ExplicitMass& mass() const { return mass_; }
   model::MovingSphereContact* mst() { return mst_.get(); }  // null with the penalty contact
+  const model::BulkViscosity* viscosity() const { return viscosity_.get(); }  // null without bulk viscosity
 
   // At every output point.
   void record_output(double kinetic, double internal) { kinetic_internal_.push_back({kinetic, internal}); }
@@ -47,10 +49,12 @@ class ExplicitDynamics : public CheckpointPart {
   model::ExplicitMass mass_;
   std::unique_ptr<solver::ExplicitSolver> solver_;
   std::unique_ptr<model::MovingSphereContact> mst_;
+  std::unique_ptr<model::BulkViscosity> viscosity_;
   std::vector<std::pair<double, double>> kinetic_internal_;
 
   model::ExplicitMassInputs mass_inputs() const;
-  // The solver on mass_, and the MST (its forces fed to the solver) when the contact is one.
+  // The solver on mass_, the bulk viscosity when asked for, and the MST (its forces fed to the
+  // solver) when the contact is one.
   void build();
 };
 

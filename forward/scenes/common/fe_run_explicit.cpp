@@ -64,6 +64,7 @@ nlohmann::json dynamics_json(const solver::ExplicitSummary& r, const solver::Exp
                       {"target_time_step", o.target_time_step},
                       {"time_scaling", o.time_scaling},
                       {"damping", o.damping},
+                      {"bulk_viscosity", {{"linear", o.bulk_viscosity_linear}, {"quadratic", o.bulk_viscosity_quadratic}}},
                       {"time_step_safety", o.safety},
                       {"mass", mass.mass},
                       {"added_mass", mass.added_mass},
@@ -170,7 +171,7 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
     return step(ir);
   };
   const model::ExplicitMass& mass = dyn.mass();
-  const auto bound = [&] { return model::current_time_step(*model_, mass, o.safety); };
+  const auto bound = [&] { return model::current_time_step(*model_, mass, o.safety, dyn.viscosity()); };
   const solver::ExplicitSummary r = dyn.solver().run(explicit_schedule(setup_, duration), bound, after_step, at_output);
 
   FeRunOutcome out = step.finish(r.completed, r.lambda, r.message, control_.resume ? restored.marks_reached : -1);

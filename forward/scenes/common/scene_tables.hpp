@@ -107,6 +107,8 @@ nlohmann::json tool_solver_json(const Scene& s) {
     j["target_time_step"] = o.target_time_step;
     j["time_scaling"] = o.time_scaling;
     j["damping"] = o.damping;
+    j["bulk_viscosity_linear"] = o.bulk_viscosity_linear;
+    j["bulk_viscosity_quadratic"] = o.bulk_viscosity_quadratic;
     j["time_step_safety"] = o.safety;
     j["max_steps"] = o.max_steps;
   }

@@ -63,6 +63,11 @@ void add_explicit_inputs(io::InputTable<Scene>& t) {
          [](Scene& s) -> double& { return s.explicit_options.time_scaling; });
   t.real({"solver.damping", {}, "1/s", Range::non_negative(), {}, "explicit: mass-proportional damping coefficient", true},
          [](Scene& s) -> double& { return s.explicit_options.damping; });
+  t.real({"solver.bulk_viscosity_linear", {}, "", Range{0.0, 1.0, false, true}, {},
+          "explicit: bulk viscosity against the elements' area rate, linear term b1 (about the fraction of critical damping of the highest mode)", true},
+         [](Scene& s) -> double& { return s.explicit_options.bulk_viscosity_linear; });
+  t.real({"solver.bulk_viscosity_quadratic", {}, "", Range::non_negative(), {}, "explicit: bulk viscosity, quadratic term b2 (in compression only)", true},
+         [](Scene& s) -> double& { return s.explicit_options.bulk_viscosity_quadratic; });
   t.real({"solver.time_step_safety", {}, "", Range{0.0, 1.0, true, false}, {}, "explicit: time step over the smallest element bound", false},
          [](Scene& s) -> double& { return s.explicit_options.safety; });
   t.real({"solver.max_steps", {}, "", Range::at_least(1.0), {}, "explicit: a run needing more steps stops at start-up", false},

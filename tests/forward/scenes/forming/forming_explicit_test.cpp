@@ -1,5 +1,5 @@
 // The explicit scheme on a forming scene: the thesis §7.1 indent with mass scaling against the
-// implicit run of the same scene (force and energy balance), the same files twice, the start-up
+// implicit run of the same scene (force and energy balance, also with bulk viscosity), the same files twice, the start-up
 // refusal of a run that would need too many steps, and checkpoints: a run stopped after a
 // checkpoint and resumed writes the uninterrupted run's files byte for byte.
 #include "forward/io/input_error.hpp"
@@ -56,6 +56,27 @@ TEST(ExplicitIndent, MatchesTheImplicitForceAndClosesItsEnergyBalance) {
   EXPECT_EQ(j.at("solver").at("scheme"), "explicit");
   EXPECT_GT(j.at("explicit").at("steps").get<long>(), 1000);
   EXPECT_DOUBLE_EQ(j.at("explicit").at("mass_scaling").get<double>(), 1e6);
+}
+
+// The bulk viscosity with Abaqus/Explicit's coefficients: the force stays, its work joins the
+// energy balance as damping work.
+TEST(ExplicitIndent, BulkViscosityKeepsTheForceAndClosesTheEnergyBalanceWithItsWork) {
+  const FormingResult implicit = run_forming_scene(indent(2.0));
+  ASSERT_TRUE(implicit.ok()) << implicit.message;
+  FormingScene s = explicit_indent(2.0, 1e6);
+  s.explicit_options.bulk_viscosity_linear = 0.06;
+  s.explicit_options.bulk_viscosity_quadratic = 1.2;
+  const FormingResult r = run_forming_scene(s);
+  ASSERT_TRUE(r.ok()) << r.message;
+  EXPECT_NEAR(r.force.peak().z() / implicit.force.peak().z(), 1.0, 5e-3);
+  const model::ModelEnergies& en = r.final_energies;
+  EXPECT_GT(en.damping, 0.0);
+  EXPECT_LT(std::abs(en.balance_error()), 0.01 * en.external_work) << "balance error " << en.balance_error() << " N mm";
+  const nlohmann::json j = r.to_json();
+  EXPECT_DOUBLE_EQ(j.at("explicit").at("bulk_viscosity").at("quadratic").get<double>(), 1.2);
+  std::printf("bulk viscosity: peak Fz %.2f N (implicit %.2f N), damping work %.4g of %.4g N mm, balance %.3g, %ld steps\n",
+              r.force.peak().z(), implicit.force.peak().z(), en.damping, en.external_work, en.balance_error() / en.external_work,
+              j.at("explicit").at("steps").get<long>());
 }
 
 // The Moving Spherical Tool (thesis §5.3): no penetration and Coulomb's law at every contact
@@ -213,6 +234,16 @@ void stop_and_resume(FormingScene s, const std::string& name) {
 // 100 steps, across the checkpoint), the mass of the start and the energies carry over.
 TEST(ExplicitIndentResume, PenaltyRunStoppedAfterACheckpointResumesBitForBit) {
   stop_and_resume(explicit_indent(0.5, 1e6), "explicit_penalty");
+}
+
+// The damping forces of the last step (mass-proportional and bulk viscosity) carry over: the
+// next step's damping work pairs with them.
+TEST(ExplicitIndentResume, DampedRunWithBulkViscosityResumesBitForBit) {
+  FormingScene s = explicit_indent(0.5, 1e6);
+  s.explicit_options.damping = 50.0;
+  s.explicit_options.bulk_viscosity_linear = 0.06;
+  s.explicit_options.bulk_viscosity_quadratic = 1.2;
+  stop_and_resume(s, "explicit_damped");
 }
 
 // The Moving Spherical Tool: its followed thickness, neighbourhoods, last forces and work carry over too.
