@@ -3,6 +3,7 @@
 #include "forward/model/explicit_mass.hpp"
 #include "forward/model/shell_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -21,6 +22,10 @@ double diagonal_area(const element::NodeVectors& x, element::NodeVectors* gradie
   return 0.5 * twice;
 }
 
+double characteristic_length(const element::NodeVectors& x, double area) {
+  return area / std::max((x[2] - x[0]).norm(), (x[3] - x[1]).norm());
+}
+
 double damped_step_fraction(double xi) { return std::sqrt(1.0 + xi * xi) - xi; }
 
 BulkViscosity::BulkViscosity(const ShellModel& model, const solver::DofConstraints& constraints, std::vector<double> density,
@@ -36,9 +41,8 @@ BulkViscosity::BulkViscosity(const ShellModel& model, const solver::DofConstrain
   if (density_.size() != ne || wave_speed_.size() != ne) throw std::invalid_argument("BulkViscosity: per-element data of another size than the model");
 }
 
-double BulkViscosity::stress(int e, double rate) const {
+double BulkViscosity::stress(int e, double rate, double length) const {
   const auto k = static_cast<std::size_t>(e);
-  const double length = element_length(model_, e);
   const double quadratic = rate < 0.0 ? quadratic_ * quadratic_ * length * rate * std::abs(rate) : 0.0;
   return density_[k] * length * (linear_ * wave_speed_[k] * rate + quadratic);
 }
@@ -64,7 +68,7 @@ Eigen::VectorXd BulkViscosity::forces(const Eigen::VectorXd& v) {
     const double rate = area > 0.0 ? area_rate / area : 0.0;
     rate_[static_cast<std::size_t>(e)] = rate;
     if (rate == 0.0) continue;
-    const double resultant = stress(e, rate) * model_.element_thickness(e);  // in-plane force per length [N/mm]
+    const double resultant = stress(e, rate, characteristic_length(corners, area)) * model_.element_thickness(e);  // in-plane force per length [N/mm]
     for (std::size_t a = 0; a < 4; ++a) f.segment<3>(ShellModel::dof(q[a], 0)) += resultant * gradient[a];
   }
   return f;

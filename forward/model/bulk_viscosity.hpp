@@ -26,6 +26,10 @@ class ShellModel;
 // and, when asked, the area's gradient with respect to each corner.
 double diagonal_area(const element::NodeVectors& x, element::NodeVectors* gradient = nullptr);
 
+// An element's characteristic length from its corners and diagonal area: the area over the
+// longer diagonal (the explicit scheme's element length).
+double characteristic_length(const element::NodeVectors& x, double area);
+
 // The fraction of an undamped stable step that stays stable with the fraction xi of critical
 // damping in the highest mode: sqrt(1 + xi^2) - xi.
 double damped_step_fraction(double xi);
@@ -41,8 +45,8 @@ class BulkViscosity {
   // the sign of internal forces (full DOF vector, translations only). Keeps each element's rate.
   Eigen::VectorXd forces(const Eigen::VectorXd& v);
 
-  // The viscous stress of element e at an area rate [MPa; rate in 1/s], at its current length.
-  double stress(int e, double rate) const;
+  // The viscous stress of element e at an area rate [MPa; rate in 1/s] and characteristic length [mm].
+  double stress(int e, double rate, double length) const;
   // Element e's area rate in the last forces() [1/s].
   double rate(int e) const { return rate_[static_cast<std::size_t>(e)]; }
   // The part of element e's stable step with the linear term's damping alone (the steps of

@@ -55,7 +55,7 @@ double element_length(const ShellModel& model, int e) {
   const auto& q = model.mesh().quads[static_cast<std::size_t>(e)];
   element::NodeVectors x;
   for (std::size_t a = 0; a < 4; ++a) x[a] = model.position(q[a]);
-  return diagonal_area(x) / std::max((x[2] - x[0]).norm(), (x[3] - x[1]).norm());
+  return characteristic_length(x, diagonal_area(x));
 }
 
 std::string describe_element(const ShellModel& model, int e) {

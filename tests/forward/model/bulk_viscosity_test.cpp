@@ -82,15 +82,15 @@ TEST(BulkViscosity, StressIsLinearInExpansionAndAddsTheQuadraticTermInCompressio
   const double b1 = 0.06, b2 = 1.2, L = 10.0 / std::sqrt(2.0), c = wave_speed();
   BulkViscosity bv = one.viscosity(b1, b2);
   const double rate = 40.0;  // 1/s
-  EXPECT_NEAR(bv.stress(0, rate), kDensity * L * b1 * c * rate, 1e-12);
-  EXPECT_NEAR(bv.stress(0, -rate), -kDensity * L * (b1 * c * rate + b2 * b2 * L * rate * rate), 1e-12);
+  EXPECT_NEAR(bv.stress(0, rate, L), kDensity * L * b1 * c * rate, 1e-12);
+  EXPECT_NEAR(bv.stress(0, -rate, L), -kDensity * L * (b1 * c * rate + b2 * b2 * L * rate * rate), 1e-12);
   // A uniform expansion v = k r doubles the area rate (2k); its power s h dA/dt dissipates.
   const double k = 20.0;
   const Eigen::VectorXd v = one.velocity(k, 0.0, Eigen::Vector3d::Zero());
   const Eigen::VectorXd f = bv.forces(v);
   EXPECT_NEAR(bv.rate(0), 2.0 * k, 1e-9);
   const double power = one.cons.expand(v).dot(f);
-  EXPECT_NEAR(power, bv.stress(0, 2.0 * k) * 1.0 * (2.0 * k) * 100.0, 1e-9);
+  EXPECT_NEAR(power, bv.stress(0, 2.0 * k, L) * 1.0 * (2.0 * k) * 100.0, 1e-9);
   EXPECT_GT(power, 0.0);
   // In compression the quadratic term shortens the stable step below the linear one's.
   bv.forces(one.velocity(-k, 0.0, Eigen::Vector3d::Zero()));
