@@ -5,7 +5,9 @@
 // the mean-|F| error over the path (forces compared at the same travel), the largest change of
 // the last section's z (mm; line test: section E), the largest kinetic over internal energy once
 // the internal energy has reached a tenth of its final value, and the relative energy-balance
-// error at the end. Cases ending in /bulk_viscosity add the membrane's bulk viscosity.
+// error at the end. Cases ending in /bulk_viscosity add the membrane's bulk viscosity; cases
+// ending in /one_point_0.003 (or 0.01) integrate each element at its centre with that hourglass
+// stiffness.
 // Long: select cases with --benchmark_filter (e.g. explicit/indent or explicit/line_half/.*/1e6).
 #include "bench/bench_main.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
@@ -31,6 +33,7 @@ struct Case {
   double mass_scaling = 1.0;
   double time_scaling = 1.0;
   bool bulk_viscosity = false;  // b1 = 0.06, b2 = 1.2 (the defaults of Abaqus/Explicit)
+  double hourglass = 0.0;        // > 0: the one-point element with this hourglass stiffness
 };
 
 scene::FormingScene read(const std::string& file) {
@@ -78,6 +81,7 @@ void explicit_case(benchmark::State& state, const Case& c) {
     s.explicit_options.bulk_viscosity_linear = 0.06;
     s.explicit_options.bulk_viscosity_quadratic = 1.2;
   }
+  s.hourglass_stiffness = c.hourglass;
   scene::FormingResult r;
   for (auto _ : state) r = scene::run_forming_scene(s);
   if (!r.ok()) {
@@ -107,9 +111,9 @@ void explicit_case(benchmark::State& state, const Case& c) {
   state.counters["kinetic_ratio"] = ratio;
   state.counters["balance_error"] = balance;
   state.counters["threads"] = omp_get_max_threads();
-  std::printf("# %s %s%s mass_scaling %.0e time_scaling %g: %.1f s (implicit %.1f s), %.0f steps, peak Fz %+.2f %%, mean |F| %+.2f %%, section %.3f mm, "
+  std::printf("# %s %s%s hourglass %g mass_scaling %.0e time_scaling %g: %.1f s (implicit %.1f s), %.0f steps, peak Fz %+.2f %%, mean |F| %+.2f %%, section %.3f mm, "
               "kinetic/internal %.3g, balance %.2g\n",
-              c.scene.c_str(), c.mst ? "mst" : "penalty", c.bulk_viscosity ? " bulk_viscosity" : "", c.mass_scaling, c.time_scaling, r.wall_seconds, ref.wall_seconds, steps, 100.0 * peak_error,
+              c.scene.c_str(), c.mst ? "mst" : "penalty", c.bulk_viscosity ? " bulk_viscosity" : "", c.hourglass, c.mass_scaling, c.time_scaling, r.wall_seconds, ref.wall_seconds, steps, 100.0 * peak_error,
               100.0 * mean_error, dz, ratio, balance);
 }
 
@@ -129,10 +133,17 @@ int main(int argc, char** argv) {
   // Bulk viscosity against the ringing of the membrane.
   for (double m : {1e5, 1e6}) cases.push_back({"indent.toml", false, m, 1.0, true});
   for (double m : {1e5, 1e6, 1e7}) cases.push_back({"line_half.toml", false, m, 1.0, true});
+  // The one-point element: a quarter of the material updates.
+  for (double hg : {0.003, 0.01})
+    for (bool mst : {false, true}) {
+      for (double m : {1e4, 1e5, 1e6}) cases.push_back({"indent.toml", mst, m, 1.0, false, hg});
+      for (double m : {1e5, 1e6}) cases.push_back({"line_half.toml", mst, m, 1.0, false, hg});
+    }
   for (const Case& c : cases) {
-    char name[160];
-    std::snprintf(name, sizeof name, "explicit/%s/%s/%.0e%s%s", c.scene.substr(0, c.scene.find('.')).c_str(), c.mst ? "mst" : "penalty",
-                  c.mass_scaling, c.time_scaling != 1.0 ? "/time_scaling_10" : "", c.bulk_viscosity ? "/bulk_viscosity" : "");
+    char name[160], one_point[32] = "";
+    if (c.hourglass > 0.0) std::snprintf(one_point, sizeof one_point, "/one_point_%g", c.hourglass);
+    std::snprintf(name, sizeof name, "explicit/%s/%s/%.0e%s%s%s", c.scene.substr(0, c.scene.find('.')).c_str(), c.mst ? "mst" : "penalty",
+                  c.mass_scaling, c.time_scaling != 1.0 ? "/time_scaling_10" : "", c.bulk_viscosity ? "/bulk_viscosity" : "", one_point);
     benchmark::RegisterBenchmark(name, explicit_case, c)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
   }
   return spifit::bench::run_registered_benchmarks(argc, argv);

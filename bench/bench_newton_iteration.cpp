@@ -62,7 +62,7 @@ Case& plastic_plate(int n) {
   const auto summary = s.solve(kLambda);
   int plastic = 0;
   for (int e = 0; e < m.num_elements(); ++e)
-    for (int q = 0; q < element::ShellQ4::kPoints; ++q)
+    for (int q = 0; q < m.element(e).points(); ++q)
       for (int l = 0; l < m.element(e).section(q).layers(); ++l)
         if (m.element(e).section(q).layer_state(l).eqps > 0.0) ++plastic;
   if (!summary.converged) c->error = "pre-solve did not converge: " + summary.message;

@@ -24,6 +24,7 @@ constexpr double kTieXi[4] = {0.0, 0.0, -1.0, 1.0};
 constexpr double kTieEta[4] = {-1.0, 1.0, 0.0, 0.0};
 constexpr int kTieDir[4] = {0, 0, 1, 1};
 
+}  // namespace
 
 // Mid-surface tangents f_a = dx/dy_a and director derivatives dd_a = dd/dy_a at a Gauss point
 // (y_a: element frame), and the tangents g_a that the in-plane shear strain uses: the element
@@ -31,6 +32,8 @@ constexpr int kTieDir[4] = {0, 0, 1, 1};
 struct PointKinematics {
   Eigen::Vector3d f0, f1, dd0, dd1, g0, g1;
 };
+
+namespace {
 
 PointKinematics point_kinematics(const Eigen::Matrix<double, 2, 4>& dN, const Eigen::Matrix<double, 2, 4>& dN_shear,
                                  bool centre_shear, const NodeVectors& x, const NodeVectors& d) {
@@ -57,6 +60,17 @@ void shell_strains(const Point& pg, const Point& ps, const PointKinematics& k, V
       k.g0.dot(k.g1) - ps.F0ref.dot(ps.F1ref);
   kappa << k.f0.dot(k.dd0), k.f1.dot(k.dd1), k.f0.dot(k.dd1) + k.f1.dot(k.dd0);
   kappa -= pg.kappa_ref;
+}
+
+// The centre's strains (e, kappa), element frame, and its kinematics k.
+template <class Point>
+Vec6 centre_strains(const Point& pc, const NodeVectors& x, const NodeVectors& d, PointKinematics* k) {
+  *k = point_kinematics(pc.dN, pc.dN, false, x, d);
+  Vec3 e, kappa;
+  shell_strains(pc, pc, *k, e, kappa);
+  Vec6 out;
+  out << e, kappa;
+  return out;
 }
 
 ElementStatus point_failure(int point, const SectionStatus& ss) {
@@ -106,6 +120,28 @@ void strain_operator(const Point& pg, const Point& ps, const std::array<Tying, 4
     }
   }
   B.bottomRows<2>() = pg.K * Bnat;
+}
+
+// rp += B^T (s6, Q) without forming B (strain_operator's rows; the residual of the one-point
+// element, which needs five of these per element and no tangent in explicit runs).
+template <class Point, class Tying>
+void add_strain_operator_transpose(const Point& pg, const Point& ps, const std::array<Tying, 4>& tying, const PointKinematics& k,
+                                   const double (&c)[4], const std::array<Eigen::Vector3d, 4>& a_t,
+                                   const std::array<Eigen::Vector3d, 4>& d_t, const Vec6& s6, const Eigen::Vector2d& Q, Vec24& rp) {
+  const Eigen::Vector2d qn = pg.K.transpose() * Q;  // B_shear^T Q = Bnat^T K^T Q
+  for (int I = 0; I < 4; ++I) {
+    const double n0 = pg.dN(0, I), n1 = pg.dN(1, I);
+    Eigen::Vector3d fx = (n0 * s6(0)) * k.f0 + (n1 * s6(1)) * k.f1 + s6(2) * (ps.dN(0, I) * k.g1 + ps.dN(1, I) * k.g0) +
+                         (n0 * s6(3) + n1 * s6(5)) * k.dd0 + (n1 * s6(4) + n0 * s6(5)) * k.dd1;
+    Eigen::Vector3d fd = (n0 * s6(3) + n1 * s6(5)) * k.f0 + (n1 * s6(4) + n0 * s6(5)) * k.f1;
+    for (std::size_t t = 0; t < 4; ++t) {
+      const double q = qn(kTieDir[t]) * c[t];
+      fx += (q * tying[t].dN(I)) * d_t[t];
+      fd += (q * tying[t].N(I)) * a_t[t];
+    }
+    rp.segment<3>(6 * I) += fx;
+    rp.segment<3>(6 * I + 3) += fd;
+  }
 }
 
 // Tangent of one Gauss point added to kp: material part B^T D B with D = diag(d6, ks, ks), and
@@ -260,8 +296,20 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
     tp.dN = quad_shape_derivatives(kTieXi[t], kTieEta[t]).row(kTieDir[t]).transpose();
     tp.gamma_ref = combine(tp.dN, X).dot(combine(tp.N, D));
   }
-  sections_.assign(4, ShellSection(law, rule, thickness));
+  const bool reduced = options_.hourglass_stiffness > 0.0;
+  if (!(std::isfinite(options_.hourglass_stiffness) && options_.hourglass_stiffness >= 0.0))
+    throw std::invalid_argument("hourglass stiffness must be a finite fraction >= 0");
+  sections_.assign(reduced ? 1 : 4, ShellSection(law, rule, thickness));
   for (ShellSection& sec : sections_) sec.set_layer_tangents(options_.layer_tangents);
+  if (reduced) {
+    // Plane-stress isotropic elasticity (the same in every in-plane frame, engineering shear):
+    // membrane h0 C, bending h0^3/12 C.
+    Eigen::Matrix3d c;
+    c << 1.0, p.nu, 0.0, p.nu, 1.0, 0.0, 0.0, 0.0, 0.5 * (1.0 - p.nu);
+    c *= p.E / (1.0 - p.nu * p.nu);
+    hourglass_stiffness_.topLeftCorner<3, 3>() = options_.hourglass_stiffness * thickness * c;
+    hourglass_stiffness_.bottomRightCorner<3, 3>() = options_.hourglass_stiffness * thickness * thickness * thickness / 12.0 * c;
+  }
 }
 
 ShellQ4::TransverseShear ShellQ4::transverse_shear(const NodeVectors& x, const NodeVectors& d) const {
@@ -281,16 +329,43 @@ ShellQ4::TransverseShear ShellQ4::transverse_shear(const NodeVectors& x, const N
   return out;
 }
 
+std::array<Vec6, 4> ShellQ4::strain_variation(const NodeVectors& x, const NodeVectors& d, const Vec6& centre,
+                                              std::array<PointKinematics, 4>* kinematics) const {
+  std::array<Vec6, 4> out;
+  for (std::size_t q = 0; q < 4; ++q) {
+    const PointGeometry& pg = points_[q];
+    const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
+    const PointKinematics k = point_kinematics(pg.dN, ps.dN, options_.centre_membrane_shear, x, d);
+    if (kinematics) (*kinematics)[q] = k;
+    Vec3 e, kappa;
+    shell_strains(pg, ps, k, e, kappa);
+    out[q] << e, kappa;
+    out[q] -= centre;
+  }
+  return out;
+}
+
 ElementEnergy ShellQ4::energy(const NodeVectors& x, const NodeVectors& d) const {
   ElementEnergy out;
   const double ks = options_.shear_factor * shear_modulus_ * h0_;
   const TransverseShear shear = transverse_shear(x, d);
   for (std::size_t q = 0; q < 4; ++q) {
     const double w = points_[q].weight;
-    const SectionEnergy se = sections_[q].energy();
-    out.elastic += w * se.elastic;
-    out.plastic += w * se.plastic;
     out.transverse_shear += w * 0.5 * ks * shear.gamma[q].squaredNorm();
+    if (sections_.size() == 4) {
+      const SectionEnergy se = sections_[q].energy();
+      out.elastic += w * se.elastic;
+      out.plastic += w * se.plastic;
+    }
+  }
+  if (sections_.size() == 1) {
+    // The centre's section over the whole area, and the hourglass part.
+    const SectionEnergy se = sections_[0].energy();
+    out.elastic += area_ * se.elastic;
+    out.plastic += area_ * se.plastic;
+    PointKinematics k;
+    const std::array<Vec6, 4> dv = strain_variation(x, d, centre_strains(centre_, x, d, &k));
+    for (std::size_t q = 0; q < 4; ++q) out.elastic += points_[q].weight * 0.5 * dv[q].dot(hourglass_stiffness_ * dv[q]);
   }
   return out;
 }
@@ -306,6 +381,7 @@ void ShellQ4::load_state(io::BinaryReader& r) {
 }
 
 ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent) {
+  if (sections_.size() == 1) return compute_reduced(x, d, residual, tangent);
   ElementStatus status;
   Vec24 rp = Vec24::Zero();  // derivative with respect to p = (x_I, d_I) per node
   Mat24 kp;
@@ -348,6 +424,80 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
   Mat24 ku;
   if (tangent && symmetric_material_) mirror_upper_blocks(kp);
   director_to_dofs(d, rp, tangent ? &kp : nullptr, &ru, tangent ? &ku : nullptr, symmetric_material_);
+  if (!ru.allFinite()) {
+    status.ok = false;
+    status.reason = "non-finite element forces";
+    status.suggested_scale = 0.25;
+    return status;
+  }
+  if (residual) *residual = ru;
+  if (tangent) {
+    add_drilling_stiffness(d, options_.drilling_factor, area_, ku);
+    *tangent = ku;
+  }
+  return status;
+}
+
+ElementStatus ShellQ4::compute_reduced(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent) {
+  const double ks = options_.shear_factor * shear_modulus_ * h0_;
+  const TransverseShear shear = transverse_shear(x, d);
+  const PointGeometry& pc = centre_;
+  PointKinematics kc;
+  const Vec6 ec = centre_strains(pc, x, d, &kc);
+
+  // The layers at the centre, weighted with the whole area.
+  Vec6 s6m;
+  Mat6 d6m = Mat6::Zero();
+  const SectionStatus ss = sections_[0].update(pc.Q * ec.head<3>(), pc.Q * ec.tail<3>(), &s6m, tangent ? &d6m : nullptr);
+  if (!ss.ok) return point_failure(0, ss);
+  Vec6 s6;
+  Mat6 d6;
+  to_element_frame(pc.Q, s6m, d6m, tangent != nullptr, s6, d6);
+
+  // Energy area psi(e_c) + sum_q w_q (dv_q . H dv_q) / 2 with dv_q = e_q - e_c, and the MITC4
+  // shear at the four points: its gradient is area B_c^T s6 + sum_q w_q B_q^T (H dv_q + shear)
+  // - B_c^T sum_q w_q H dv_q.
+  const double cc[4] = {0.5, 0.5, 0.5, 0.5};
+  Eigen::Matrix<double, 8, 24> Bc;
+  if (tangent) {
+    Bc.setZero();
+    strain_operator(pc, pc, tying_, kc, cc, shear.a_t, shear.d_t, Bc);
+  }
+  std::array<PointKinematics, 4> kq;
+  const std::array<Vec6, 4> dv = strain_variation(x, d, ec, &kq);
+  Vec6 centre_force = area_ * s6;
+  Vec24 rp = Vec24::Zero();
+  Mat24 kp;
+  if (tangent) kp.setZero();
+  for (std::size_t q = 0; q < 4; ++q) {
+    const PointGeometry& pg = points_[q];
+    const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
+    const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
+    const Vec6 hdv = hourglass_stiffness_ * dv[q];
+    centre_force -= pg.weight * hdv;
+    const Eigen::Vector2d Q = ks * shear.gamma[q];
+    add_strain_operator_transpose(pg, ps, tying_, kq[q], c, shear.a_t, shear.d_t, Vec6(pg.weight * hdv), Eigen::Vector2d(pg.weight * Q), rp);
+    if (tangent) {
+      // (B_q - B_c)^T H (B_q - B_c), and the point's geometric and shear terms.
+      Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
+      strain_operator(pg, ps, tying_, kq[q], c, shear.a_t, shear.d_t, B);
+      const Eigen::Matrix<double, 6, 24> dB = B.topRows<6>() - Bc.topRows<6>();
+      kp.noalias() += dB.transpose() * (pg.weight * hourglass_stiffness_) * dB;
+      add_point_tangent(pg, ps, tying_, hdv, Mat6::Zero(), Q, ks, c, B, false, kp);
+    }
+  }
+  add_strain_operator_transpose(pc, pc, tying_, kc, cc, shear.a_t, shear.d_t, centre_force, Eigen::Vector2d::Zero(), rp);
+  if (tangent) {
+    // The centre's material and geometric terms (add_point_tangent weighs with the centre's
+    // own weight: the forces and stiffness come scaled by its inverse).
+    const double inv = 1.0 / pc.weight;
+    add_point_tangent(pc, pc, tying_, Vec6(inv * centre_force), Mat6(inv * area_ * d6), Eigen::Vector2d::Zero(), 0.0, cc, Bc, false, kp);
+  }
+
+  Vec24 ru;
+  Mat24 ku;
+  director_to_dofs(d, rp, tangent ? &kp : nullptr, &ru, tangent ? &ku : nullptr);
+  ElementStatus status;
   if (!ru.allFinite()) {
     status.ok = false;
     status.reason = "non-finite element forces";

@@ -45,7 +45,14 @@ struct ShellOptions {
   // false: residuals alone skip the layers' consistent tangents (ShellSection::set_layer_tangents;
   // explicit runs assemble no tangent).
   bool layer_tangents = true;
+  // > 0: one in-plane point (the centre) carries the layers, and the strains' variation over
+  // the element (e, kappa at the 2 x 2 points minus the centre's) gets an elastic section
+  // stiffness of this fraction (physical hourglass stabilisation, Belytschko & Bindeman 1993).
+  // Its tangent is exact too. 0: the four points carry layers.
+  double hourglass_stiffness = 0.0;
 };
+
+struct PointKinematics;  // shell_q4.cpp
 
 using Vec24 = Eigen::Matrix<double, 24, 1>;
 using Mat24 = Eigen::Matrix<double, 24, 24>;
@@ -90,10 +97,12 @@ class ShellQ4 {
   // Energies at the committed nodes x and directors d (the sections' committed states).
   ElementEnergy energy(const NodeVectors& x, const NodeVectors& d) const;
   double reference_area() const;
+  // The in-plane points that carry layers: 4 (2 x 2 Gauss), or 1 (the centre, over the whole
+  // area) with hourglass stabilisation.
+  int points() const { return static_cast<int>(sections_.size()); }
   const ShellSection& section(int point) const { return sections_[static_cast<std::size_t>(point)]; }
   // The options the element was built with (its rolling direction among them).
   const ShellOptions& options() const { return options_; }
-  static constexpr int kPoints = 4;
 
  private:
   struct PointGeometry {
@@ -110,6 +119,12 @@ class ShellQ4 {
     Eigen::Vector4d dN;     // natural derivative along its direction (xi for B/D, eta for A/C)
     double gamma_ref = 0.0; // a_alpha . d in the reference configuration
   };
+  // The one-point version of compute (hourglass_stiffness > 0).
+  ElementStatus compute_reduced(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent);
+  // The strains (e, kappa) at the 2 x 2 points minus the centre's, element frame (and the
+  // points' kinematics, if asked).
+  std::array<Vec6, 4> strain_variation(const NodeVectors& x, const NodeVectors& d, const Vec6& centre,
+                                       std::array<PointKinematics, 4>* kinematics = nullptr) const;
   // MITC4 transverse shear strains (element frame) at the four Gauss points, and the tying
   // points' a_alpha and d (shared by compute and energy).
   struct TransverseShear {
@@ -129,6 +144,7 @@ class ShellQ4 {
   std::array<TyingPoint, 4> tying_;  // B (0,-1), D (0,1) for gamma_xi; A (-1,0), C (1,0) for gamma_eta
   std::vector<ShellSection> sections_;
   double area_ = 0.0;
+  Mat6 hourglass_stiffness_ = Mat6::Zero();  // section stiffness of the strain variation (element frame)
 };
 
 }  // namespace spifit::element

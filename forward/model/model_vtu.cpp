@@ -24,12 +24,13 @@ mesh::VtuFrame vtu_frame(const ShellModel& model) {
     const auto& el = model.element(e);
     double pmax = 0.0;
     Eigen::Vector3d sb = Eigen::Vector3d::Zero(), sm = sb, st = sb;
-    for (int p = 0; p < element::ShellQ4::kPoints; ++p) {
+    const double share = 1.0 / el.points();
+    for (int p = 0; p < el.points(); ++p) {
       const auto& sec = el.section(p);
       for (int l = 0; l < layers; ++l) pmax = std::max(pmax, sec.layer_state(l).eqps);
-      sb += 0.25 * sec.layer_state(0).stress;
-      sm += 0.25 * sec.layer_state(layers / 2).stress;
-      st += 0.25 * sec.layer_state(layers - 1).stress;
+      sb += share * sec.layer_state(0).stress;
+      sm += share * sec.layer_state(layers / 2).stress;
+      st += share * sec.layer_state(layers - 1).stress;
     }
     eq_max.values.push_back(pmax);
     for (const auto* v : {&sb, &sm, &st}) {

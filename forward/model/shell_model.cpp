@@ -192,9 +192,10 @@ void ShellModel::committed_corners(int e, element::NodeVectors* x, element::Node
 }
 
 double ShellModel::element_thickness(int e) const {
+  const element::ShellQ4& el = elements_[static_cast<std::size_t>(e)];
   double h = 0.0;
-  for (int p = 0; p < element::ShellQ4::kPoints; ++p) h += 0.25 * elements_[static_cast<std::size_t>(e)].section(p).thickness();
-  return h;
+  for (int p = 0; p < el.points(); ++p) h += el.section(p).thickness();
+  return h / el.points();
 }
 
 solver::ElementEvaluation ShellModel::evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {

@@ -66,6 +66,10 @@ void add_sheet(Table& t) {
   add_mesh(t);
   t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
             [](ConeScene& s) -> int& { return s.thickness_points; });
+  t.real({"sheet.hourglass_stiffness", {}, "", Range::closed(0.0, 1.0), {},
+          "> 0: one in-plane point per element (about a quarter of the material updates), with this fraction of the elastic "
+          "section stiffness on the strains' variation over the element (hourglass control); 0: 2 x 2 points", true},
+         [](ConeScene& s) -> double& { return s.hourglass_stiffness; });
   t.text({"sheet.thickness_rule", {}, "", {}, {"gauss", "surface"}, "through-thickness rule (surface: Simpson with the surface points)", false},
          {[](const ConeScene& s) -> std::string { return element::to_string(s.thickness_rule); },
           [](ConeScene& s, const std::string& v) { return element::thickness_rule_from_string(v, &s.thickness_rule); }});

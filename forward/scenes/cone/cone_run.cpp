@@ -94,6 +94,7 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const mode
                 {"elements_per_45deg", s.mesh.elements_per_45deg},
                 {"material_axes", model::to_string(s.material_axes)},
                 {"virtual_tools_deg", tool.copies_deg()}};
+  if (s.hourglass_stiffness > 0.0) j["model"]["hourglass_stiffness"] = s.hourglass_stiffness;
   if (s.mesh.coarse_inside > 0.0)
     j["model"].update({{"coarse_inside", s.mesh.coarse_inside}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});
   json stages = json::array();
@@ -118,6 +119,7 @@ FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
   f.thickness = scene.thickness;
   f.material = scene.card.params;
   f.model.shell.thickness_points = scene.thickness_points;
+  f.model.shell.hourglass_stiffness = scene.hourglass_stiffness;
   f.model.shell.thickness_rule = scene.thickness_rule;
   f.model.material_axes = scene.material_axes;
   f.tool_radius = scene.tool_radius;

@@ -35,6 +35,9 @@ struct ConeScene {
   bool clamp_rotations = false;    // thesis: translations only
   mesh::DiscOptions mesh;          // radius and angle follow clamp_radius and pie_angle
   int thickness_points = 5;
+  // > 0: each element carries its layers at its centre only, with this fraction of the elastic
+  // section stiffness on the strains' variation over it (element::ShellOptions). 0: 2 x 2 points.
+  double hourglass_stiffness = 0.0;
   // [sheet] material_axes: "fixed" (default; rolling direction = x everywhere, a rolled sheet) or
   // "polar" (rolling direction = the radial direction of each element: the same material in every
   // pie, as the cyclic ties of a pie assume; docs/design/cone.md, "Material axes").

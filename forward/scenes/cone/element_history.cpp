@@ -108,7 +108,8 @@ ElementHistoryRow element_history_row(const model::ShellModel& model, int e, con
                                 std::to_string(layers));
   ElementHistoryRow row;
   row.centre = centre_polar_strains(X, D, x, d);
-  for (int p = 0; p < element::ShellQ4::kPoints; ++p) row.thickness += 0.25 * el.section(p).thickness();
+  const double share = 1.0 / el.points();
+  for (int p = 0; p < el.points(); ++p) row.thickness += share * el.section(p).thickness();
   // Material frame (ShellQ4: rolling direction projected on the initial tangent plane; the
   // element's xi direction if the rolling direction is almost normal to it).
   const CentreFrame f = centre_frame(X);
@@ -123,10 +124,10 @@ ElementHistoryRow element_history_row(const model::ShellModel& model, int e, con
     h.zeta = rule.zeta[static_cast<std::size_t>(l)];
     h.strain = row.centre.membrane + h.zeta * 0.5 * row.thickness * row.centre.bending;
     Eigen::Vector3d stress = Eigen::Vector3d::Zero();
-    for (int p = 0; p < element::ShellQ4::kPoints; ++p) {
+    for (int p = 0; p < el.points(); ++p) {
       const auto& st = el.section(p).layer_state(l);
-      stress += 0.25 * st.stress;
-      h.eqps += 0.25 * st.eqps;
+      stress += share * st.stress;
+      h.eqps += share * st.eqps;
     }
     h.stress = rotate_tensor_components(stress, c, s);
     h.von_mises = von_mises_plane_stress(h.stress);

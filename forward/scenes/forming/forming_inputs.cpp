@@ -29,6 +29,10 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
          [](FormingScene& s) -> double& { return s.fine_band; });
   t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
             [](FormingScene& s) -> int& { return s.thickness_points; });
+  t.real({"sheet.hourglass_stiffness", {}, "", Range::closed(0.0, 1.0), {},
+          "> 0: one in-plane point per element (about a quarter of the material updates), with this fraction of the elastic "
+          "section stiffness on the strains' variation over the element (hourglass control); 0: 2 x 2 points", true},
+         [](FormingScene& s) -> double& { return s.hourglass_stiffness; });
 }
 
 void add_output(io::InputTable<FormingScene>& t) {

@@ -46,6 +46,7 @@ FeRunSetup forming_setup(const FormingScene& s) {
   f.thickness = s.thickness;
   f.material = s.card.params;
   f.model.shell.thickness_points = s.thickness_points;
+  f.model.shell.hourglass_stiffness = s.hourglass_stiffness;
   f.tool_radius = s.radius;
   f.contact = s.contact;
   const double length = f.tool_path.length();
@@ -113,6 +114,7 @@ nlohmann::json forming_inputs(const FormingScene& s, const model::ShellModel& mo
   j["material"] = s.card.name;
   j["model"] = {{"elements", model.num_elements()}, {"nodes", model.num_nodes()}, {"half", s.half},
                 {"thickness", s.thickness}, {"length", s.length}, {"thickness_points", s.thickness_points}};
+  if (s.hourglass_stiffness > 0.0) j["model"]["hourglass_stiffness"] = s.hourglass_stiffness;
   if (s.coarse_levels > 0)
     j["model"].update({{"coarse_levels", s.coarse_levels}, {"fine_band", s.fine_band}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});
   j["tool"] = {{"radius", s.radius}, {"travel", length}, {"feed", s.feed}, {"spin_rpm", s.spin}, {"gcode", s.gcode}};

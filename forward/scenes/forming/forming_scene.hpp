@@ -38,6 +38,9 @@ struct FormingScene {
   int coarse_levels = 0;
   double fine_band = 20.0;
   int thickness_points = 5;
+  // > 0: each element carries its layers at its centre only, with this fraction of the elastic
+  // section stiffness on the strains' variation over it (element::ShellOptions). 0: 2 x 2 points.
+  double hourglass_stiffness = 0.0;
   // Tool.
   double radius = 5.0;
   double feed = 2.0;          // mm/s (force.csv time = travel / feed)
