@@ -204,6 +204,29 @@ void add_drilling_stiffness(const NodeVectors& d, double drilling_factor, double
   }
 }
 
+// The element's residual and tangent on its DOFs from their derivatives with respect to the
+// positions and directors (director_to_dofs), the drilling stiffness added; a failure if the
+// forces are not finite.
+ElementStatus dof_results(const NodeVectors& d, const Vec24& rp, const Mat24* kp, bool symmetric, double drilling_factor, double area,
+                          Vec24* residual, Mat24* tangent) {
+  Vec24 ru;
+  Mat24 ku;
+  director_to_dofs(d, rp, kp, &ru, kp ? &ku : nullptr, symmetric);
+  ElementStatus status;
+  if (!ru.allFinite()) {
+    status.ok = false;
+    status.reason = "non-finite element forces";
+    status.suggested_scale = 0.25;
+    return status;
+  }
+  if (residual) *residual = ru;
+  if (kp && tangent) {
+    add_drilling_stiffness(d, drilling_factor, area, ku);
+    *tangent = ku;
+  }
+  return status;
+}
+
 }  // namespace
 
 void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Vec24* ru, Mat24* ku, bool symmetric) {
@@ -382,7 +405,6 @@ void ShellQ4::load_state(io::BinaryReader& r) {
 
 ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent) {
   if (sections_.size() == 1) return compute_reduced(x, d, residual, tangent);
-  ElementStatus status;
   Vec24 rp = Vec24::Zero();  // derivative with respect to p = (x_I, d_I) per node
   Mat24 kp;
   if (tangent) kp.setZero();
@@ -420,22 +442,8 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
 
   // With a symmetric material tangent the node blocks below the diagonal are mirrored from
   // those above (in kp's material part here, in ku's director transformation below).
-  Vec24 ru;
-  Mat24 ku;
   if (tangent && symmetric_material_) mirror_upper_blocks(kp);
-  director_to_dofs(d, rp, tangent ? &kp : nullptr, &ru, tangent ? &ku : nullptr, symmetric_material_);
-  if (!ru.allFinite()) {
-    status.ok = false;
-    status.reason = "non-finite element forces";
-    status.suggested_scale = 0.25;
-    return status;
-  }
-  if (residual) *residual = ru;
-  if (tangent) {
-    add_drilling_stiffness(d, options_.drilling_factor, area_, ku);
-    *tangent = ku;
-  }
-  return status;
+  return dof_results(d, rp, tangent ? &kp : nullptr, symmetric_material_, options_.drilling_factor, area_, residual, tangent);
 }
 
 ElementStatus ShellQ4::compute_reduced(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent) {
@@ -494,22 +502,7 @@ ElementStatus ShellQ4::compute_reduced(const NodeVectors& x, const NodeVectors& 
     add_point_tangent(pc, pc, tying_, Vec6(inv * centre_force), Mat6(inv * area_ * d6), Eigen::Vector2d::Zero(), 0.0, cc, Bc, false, kp);
   }
 
-  Vec24 ru;
-  Mat24 ku;
-  director_to_dofs(d, rp, tangent ? &kp : nullptr, &ru, tangent ? &ku : nullptr);
-  ElementStatus status;
-  if (!ru.allFinite()) {
-    status.ok = false;
-    status.reason = "non-finite element forces";
-    status.suggested_scale = 0.25;
-    return status;
-  }
-  if (residual) *residual = ru;
-  if (tangent) {
-    add_drilling_stiffness(d, options_.drilling_factor, area_, ku);
-    *tangent = ku;
-  }
-  return status;
+  return dof_results(d, rp, tangent ? &kp : nullptr, false, options_.drilling_factor, area_, residual, tangent);
 }
 
 void ShellQ4::commit() {

@@ -12,6 +12,8 @@
 //    projected on the tangent plane) and rotated into the material frame for the layers;
 //    each of the 2x2 Gauss points carries a ShellSection (1..11 layers,
 //    logarithmic-strain plasticity in plane stress).
+//    With hourglass_stiffness > 0 the centre alone carries one, and the strains' variation
+//    over the element gets an elastic stiffness (docs/design/explicit.md, "One-point element").
 //  * Transverse shear: MITC4 assumed strains (Dvorkin & Bathe 1984), tied at the mid-edges;
 //    elastic, k G h0 with k = 5/6. No shear locking, no spurious modes.
 //  * Six DOFs per node: three translations and three rotation increments about the global

@@ -2,6 +2,7 @@
 // stiffness on the strains' variation over the element.
 #include "forward/element/director.hpp"
 #include "forward/element/shell_q4.hpp"
+#include "tests/support/shell_finite_differences.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
@@ -129,21 +130,7 @@ int zero_energy_modes(const ShellOptions& o) {
   const material::ReturnMapping<double, 3> law(aa3003(false));
   const ThicknessRule rule = gauss_legendre_rule(5);
   ShellQ4 el(kX, kD, 0.8, law, rule, o);
-  Mat24 k;
-  const double h = 1e-7;
-  for (int j = 0; j < 24; ++j) {
-    const std::size_t node = static_cast<std::size_t>(j / 6);
-    const int c = j % 6;
-    Vec24 r[2];
-    for (int s = 0; s < 2; ++s) {
-      NodeVectors x = kX, d = kD;
-      const double step = s == 0 ? h : -h;
-      if (c < 3) x[node](c) += step;
-      else d[node] = rotate_by_vector(kD[node], step * Eigen::Vector3d::Unit(c - 3));
-      EXPECT_TRUE(el.compute(x, d, &r[s], nullptr).ok);
-    }
-    k.col(j) = (r[0] - r[1]) / (2.0 * h);
-  }
+  const Mat24 k = test::fd_tangent(el, kX, kD, 1e-7);
   Eigen::SelfAdjointEigenSolver<Mat24> es(0.5 * (k + k.transpose()));
   const double top = es.eigenvalues().cwiseAbs().maxCoeff();
   int zeros = 0;
@@ -191,21 +178,7 @@ TEST(ShellQ4OnePoint, TangentMatchesFiniteDifferencesAfterPlasticPrestrainAndLar
   deform(kX, kD, 0.08, 0.07, Eigen::Vector3d(0.9, -1.4, 0.6), &x, &d);
   Mat24 k;
   ASSERT_TRUE(el.compute(x, d, &r, &k).ok);
-  Mat24 kfd;
-  const double h = 1e-7;
-  for (int j = 0; j < 24; ++j) {
-    const std::size_t node = static_cast<std::size_t>(j / 6);
-    const int c = j % 6;
-    Vec24 rr[2];
-    for (int s = 0; s < 2; ++s) {
-      NodeVectors xp = x, dp = d;
-      const double step = s == 0 ? h : -h;
-      if (c < 3) xp[node](c) += step;
-      else dp[node] = rotate_by_vector(d[node], step * Eigen::Vector3d::Unit(c - 3));
-      ASSERT_TRUE(el.compute(xp, dp, &rr[s], nullptr).ok);
-    }
-    kfd.col(j) = (rr[0] - rr[1]) / (2.0 * h);
-  }
+  const Mat24 kfd = test::fd_tangent(el, x, d, 1e-7);
   // On the rotations normal to the directors (the drilling rows hold the regularisation only).
   Mat24 P = Mat24::Identity();
   for (std::size_t i = 0; i < 4; ++i) P.block<3, 3>(6 * static_cast<int>(i) + 3, 6 * static_cast<int>(i) + 3) -= d[i] * d[i].transpose();

@@ -1,5 +1,6 @@
 #include "forward/element/director.hpp"
 #include "forward/element/shell_q4.hpp"
+#include "tests/support/shell_finite_differences.hpp"
 
 #include <gtest/gtest.h>
 
@@ -41,25 +42,7 @@ void deform(const Fixture& f, double s, double b, const Eigen::Vector3d& rigid, 
   }
 }
 
-// Central differences of the residual with respect to the 24 DOFs (translations added,
-// rotations applied to the directors exactly as the solver does).
-Mat24 fd_tangent(ShellQ4& el, const NodeVectors& x, const NodeVectors& d, double h) {
-  Mat24 k;
-  for (int j = 0; j < 24; ++j) {
-    const std::size_t node = static_cast<std::size_t>(j / 6);
-    const int c = j % 6;
-    Vec24 r[2];
-    for (int s = 0; s < 2; ++s) {
-      NodeVectors xp = x, dp = d;
-      const double step = s == 0 ? h : -h;
-      if (c < 3) xp[node](c) += step;
-      else dp[node] = rotate_by_vector(d[node], step * Eigen::Vector3d::Unit(c - 3));
-      EXPECT_TRUE(el.compute(xp, dp, &r[s], nullptr).ok);
-    }
-    k.col(j) = (r[0] - r[1]) / (2.0 * h);
-  }
-  return k;
-}
+using test::fd_tangent;
 
 double tangent_error(ShellQ4& el, const NodeVectors& x, const NodeVectors& d, double h) {
   Vec24 r;
