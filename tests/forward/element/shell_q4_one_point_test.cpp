@@ -69,14 +69,10 @@ double gradient_error(const ShellOptions& o) {
   const double h = 1e-6;
   double err = 0.0;
   for (int j = 0; j < 24; ++j) {
-    const std::size_t node = static_cast<std::size_t>(j / 6);
-    const int c = j % 6;
     double e[2];
     for (int s = 0; s < 2; ++s) {
       NodeVectors xp = x, dp = d;
-      const double step = s == 0 ? h : -h;
-      if (c < 3) xp[node](c) += step;
-      else dp[node] = rotate_by_vector(d[node], step * Eigen::Vector3d::Unit(c - 3));
+      test::perturb(j, s == 0 ? h : -h, &xp, &dp);
       e[s] = fresh_energy(law, rule, o, xp, dp);
     }
     err = std::max(err, std::abs((e[0] - e[1]) / (2.0 * h) - r(j)));
