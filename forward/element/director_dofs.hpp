@@ -1,0 +1,18 @@
+#pragma once
+// From an element's derivatives with respect to its nodes' positions and directors (6 per node)
+// to its DOFs (translations and rotation increments): director_to_dofs (declared in shell_q4.hpp,
+// shared with the contact), and the helpers of ShellQ4's two integration paths.
+#include "forward/element/shell_q4.hpp"
+
+namespace spifit::element {
+
+// The node blocks (J, I), J > I, of a symmetric 24 x 24 matrix from its blocks (I, J).
+void mirror_upper_blocks(Mat24& k);
+
+// The element's residual and tangent on its DOFs from their derivatives rp and kp (kp null:
+// the residual alone) with respect to the positions and directors (director_to_dofs), the
+// drilling stiffness added; a failure if the forces are not finite.
+ElementStatus dof_results(const NodeVectors& d, const Vec24& rp, const Mat24* kp, bool symmetric, double drilling_factor, double area,
+                          Vec24* residual, Mat24* tangent);
+
+}  // namespace spifit::element
