@@ -245,11 +245,9 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   sections_.assign(reduced ? 1 : 4, ShellSection(law, rule, thickness));
   for (ShellSection& sec : sections_) sec.set_layer_tangents(options_.layer_tangents);
   if (reduced) {
-    // Plane-stress isotropic elasticity (the same in every in-plane frame, engineering shear):
-    // membrane h0 C, bending h0^3/12 C.
-    Eigen::Matrix3d c;
-    c << 1.0, p.nu, 0.0, p.nu, 1.0, 0.0, 0.0, 0.0, 0.5 * (1.0 - p.nu);
-    c *= p.E / (1.0 - p.nu * p.nu);
+    // The law's plane-stress isotropic elasticity (the same in every in-plane frame, engineering
+    // shear): membrane h0 C, bending h0^3/12 C.
+    const Eigen::Matrix3d c = law.elastic_matrix();
     hourglass_stiffness_.topLeftCorner<3, 3>() = options_.hourglass_stiffness * thickness * c;
     hourglass_stiffness_.bottomRightCorner<3, 3>() = options_.hourglass_stiffness * thickness * thickness * thickness / 12.0 * c;
   }
