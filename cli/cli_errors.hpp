@@ -12,9 +12,11 @@
 namespace spifit::cli {
 
 // io::OutputDirectory::prepare / existing with their errors on --out. prepare_output warns on
-// stderr (unless quiet) of the entries --force kept because spifit did not write them.
+// stderr (unless quiet) of the entries --force kept because spifit did not write them; both note
+// a lock taken over from a process that ended while it wrote there. existing_output (a resume of
+// the scene or fit file `input`) refuses a directory whose run of that file is complete.
 io::OutputDirectory prepare_output(const std::string& out, bool force, const std::vector<std::string>& inputs, bool quiet);
-io::OutputDirectory existing_output(const std::string& out);
+io::OutputDirectory existing_output(const std::string& out, const std::string& input, bool quiet);
 
 // Runs f; an io::InputError without a file whose key is a field in `options` is rethrown with
 // the key of the command-line option (field -> option).

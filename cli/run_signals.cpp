@@ -85,10 +85,13 @@ void RunWatch::loop() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (!wake_.wait_for(lock, std::chrono::milliseconds(100), [this] { return stop_; })) {
     if (const int sig = g_signal.load(); sig != 0) {
-      // The command has not finished (stop() would have come first): its final summary is this.
-      if (heartbeat_.finish(interrupted_(sig))) {
+      // The command has not finished (stop() would have come first): its final summary is this,
+      // and its message (how to go on) goes to stderr too.
+      const nlohmann::json summary = interrupted_(sig);
+      if (heartbeat_.finish(summary)) {
         std::fflush(stdout);
-        std::cerr << "spifit: interrupted by " << signal_name(sig) << "\n";
+        const auto m = summary.find("message");
+        std::cerr << "spifit: " << (m != summary.end() && m->is_string() ? m->get<std::string>() : "interrupted by " + signal_name(sig)) << "\n";
         std::_Exit(interrupted_exit_code(sig));
       }
       return;

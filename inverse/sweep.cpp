@@ -57,7 +57,8 @@ SweepPoint run_point(const SweepSpec& s, const std::vector<const scene::Observab
     }
     std::unique_ptr<scene::SceneResult> r;
     if (dir) {
-      const auto out = io::OutputDirectory::prepare((dir->path() / sub).string(), false);
+      // Under the sweep directory, whose lock the sweep holds.
+      const auto out = io::OutputDirectory::prepare((dir->path() / sub).string(), false, {}, io::OutputDirectory::Locking::none);
       if (record) dir->record();  // points/ in the sweep directory's manifest
       r = sc->run(scene::RunFiles(out), {});
     } else {
@@ -273,7 +274,8 @@ JobHandler sweep_point_handler(const SweepSpec& s, const std::string& out) {
       io::BinaryReader r(job, kPointJobKind, kPointVersion);
       const std::vector<double> values = r.f64s();
       const std::string sub = r.string();
-      if (!*dir && !out.empty()) *dir = io::OutputDirectory::existing(out);
+      // The sweep (rank 0) holds the directory's lock; its jobs write their points for it.
+      if (!*dir && !out.empty()) *dir = io::OutputDirectory::existing(out, io::OutputDirectory::Locking::none);
       p = run_point(s, observables_of(s), values, dir->has_value() ? &**dir : nullptr, sub, false);
     } catch (const std::exception& e) {
       p.ok = false;

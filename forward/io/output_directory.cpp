@@ -29,11 +29,33 @@ bool is_temporary(const std::string& name) { return name.size() > 5 && name[0] =
 // A manifest line that names an entry of the directory itself (nothing outside it, nothing nested).
 bool plain_entry(const std::string& name) { return !name.empty() && name != "." && name != ".." && name.find('/') == std::string::npos; }
 
+// The entries of dir but its lock file, which belongs to whoever writes there now.
 std::vector<std::string> entries(const fs::path& dir, std::error_code& ec) {
   std::vector<std::string> out;
-  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) out.push_back(it->path().filename().string());
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    std::string name = it->path().filename().string();
+    if (name != DirectoryLock::kFile) out.push_back(std::move(name));
+  }
   std::sort(out.begin(), out.end());
   return out;
+}
+
+// The directory's lock, or the OutputDirectoryError that says who holds it.
+std::shared_ptr<DirectoryLock> lock_directory(const fs::path& p, const std::string& path) {
+  using R = OutputDirectoryError::Reason;
+  DirectoryLock::Refusal refusal;
+  std::shared_ptr<DirectoryLock> lock = DirectoryLock::take(p, &refusal);
+  if (lock) return lock;
+  switch (refusal.reason) {
+    case DirectoryLock::Refusal::Reason::held:
+      throw OutputDirectoryError(R::locked, path,
+                                 "in use: a live spifit process is writing there (" + refusal.holder.describe() +
+                                     "); wait for it to end, or stop it (kill " + std::to_string(refusal.holder.pid) + ") and try again");
+    case DirectoryLock::Refusal::Reason::permission_denied:
+      throw OutputDirectoryError(R::permission_denied, path, "permission denied: cannot write in the output directory (" + refusal.message + ")");
+    case DirectoryLock::Refusal::Reason::cannot_create: break;
+  }
+  throw OutputDirectoryError(R::cannot_create, path, "cannot lock the output directory: " + refusal.message);
 }
 
 std::set<std::string> read_manifest(const fs::path& file) {
@@ -57,7 +79,7 @@ struct OutputDirectory::Manifest {
 
   // Adds name; rewrites the file when it is new. Call with the mutex held.
   void add(const std::string& name, const fs::path& dir) {
-    if (!plain_entry(name) || name == kManifest || is_temporary(name) || foreign.count(name) || !listed.insert(name).second) return;
+    if (!plain_entry(name) || name == kManifest || name == DirectoryLock::kFile || is_temporary(name) || foreign.count(name) || !listed.insert(name).second) return;
     write(dir);
   }
   void write(const fs::path& dir) const {
@@ -68,19 +90,28 @@ struct OutputDirectory::Manifest {
   }
 };
 
-OutputDirectory::OutputDirectory(fs::path p, std::shared_ptr<Manifest> m, std::vector<std::string> kept)
-    : path_(std::move(p)), manifest_(std::move(m)), kept_(std::move(kept)) {}
+OutputDirectory::OutputDirectory(fs::path p, std::shared_ptr<Manifest> m, std::vector<std::string> kept, std::shared_ptr<DirectoryLock> lock)
+    : path_(std::move(p)), manifest_(std::move(m)), kept_(std::move(kept)), lock_(std::move(lock)) {}
 
-OutputDirectory OutputDirectory::prepare(const std::string& path, bool replace, const std::vector<std::string>& inputs) {
+OutputDirectory OutputDirectory::prepare(const std::string& path, bool replace, const std::vector<std::string>& inputs, Locking locking) {
   using R = OutputDirectoryError::Reason;
   const fs::path p(path);
   std::error_code ec;
   std::vector<std::string> kept;
+  std::shared_ptr<DirectoryLock> lock;
   if (fs::exists(p, ec)) {
     if (!fs::is_directory(p, ec)) throw OutputDirectoryError(R::not_a_directory, path, "exists and is not a directory");
-    const bool empty = fs::is_empty(p, ec);
-    if (ec) throw OutputDirectoryError(R::cannot_clear, path, "cannot read the output directory: " + ec.message());
-    if (!empty && !replace) throw OutputDirectoryError(R::not_empty, path, "output directory exists and is not empty");
+    const bool empty = entries(p, ec).empty();
+    if (ec) {
+      const bool denied = ec == std::errc::permission_denied || ec == std::errc::operation_not_permitted;
+      throw OutputDirectoryError(denied ? R::permission_denied : R::cannot_clear, path,
+                                 std::string(denied ? "permission denied: " : "") + "cannot read the output directory: " + ec.message());
+    }
+    if (!empty && !replace) {
+      // A live run's directory: say so, rather than suggest replacing it.
+      if (locking == Locking::take) lock = lock_directory(p, path);
+      throw OutputDirectoryError(R::not_empty, path, "output directory exists and is not empty");
+    }
     if (!empty) {
       // Only what an earlier spifit run wrote is removed, never an arbitrary directory, and never
       // one that holds this run's own inputs.
@@ -102,6 +133,8 @@ OutputDirectory OutputDirectory::prepare(const std::string& path, bool replace, 
           throw OutputDirectoryError(R::holds_input, path, "holds an input of this run (" + in + "); choose another output directory");
         }
       }
+      // Nothing is removed while another process writes there.
+      if (locking == Locking::take) lock = lock_directory(p, path);
       std::string failed;
       for (const auto& name : entries(p, ec)) {
         const bool spifit = remove.count(name) || (is_temporary(name) && remove.count(name.substr(1, name.size() - 5)));
@@ -118,27 +151,33 @@ OutputDirectory OutputDirectory::prepare(const std::string& path, bool replace, 
     }
   } else {
     fs::create_directories(p, ec);
-    if (ec) throw OutputDirectoryError(R::cannot_create, path, "cannot create the output directory: " + ec.message());
+    if (ec) {
+      const bool denied = ec == std::errc::permission_denied || ec == std::errc::operation_not_permitted || ec == std::errc::read_only_file_system;
+      throw OutputDirectoryError(denied ? R::permission_denied : R::cannot_create, path,
+                                 std::string(denied ? "permission denied: " : "") + "cannot create the output directory: " + ec.message());
+    }
   }
+  if (locking == Locking::take && !lock) lock = lock_directory(p, path);
   auto m = std::make_shared<Manifest>();
   m->file = p / kManifest;
   m->foreign.insert(kept.begin(), kept.end());
   m->write(p);
-  return OutputDirectory(p, std::move(m), std::move(kept));
+  return OutputDirectory(p, std::move(m), std::move(kept), std::move(lock));
 }
 
-OutputDirectory OutputDirectory::existing(const std::string& path) {
+OutputDirectory OutputDirectory::existing(const std::string& path, Locking locking) {
   std::error_code ec;
   if (!fs::is_directory(path, ec))
     throw OutputDirectoryError(OutputDirectoryError::Reason::missing, path, "no output directory to resume (a resume continues an earlier run's directory)");
   const fs::path p(path);
-  if (!fs::exists(p / kManifest, ec)) return OutputDirectory(p, nullptr, {});
+  std::shared_ptr<DirectoryLock> lock = locking == Locking::take ? lock_directory(p, path) : nullptr;
+  if (!fs::exists(p / kManifest, ec)) return OutputDirectory(p, nullptr, {}, std::move(lock));
   auto m = std::make_shared<Manifest>();
   m->file = p / kManifest;
   m->listed = read_manifest(m->file);
   for (const auto& name : entries(p, ec))
     if (name != kManifest && !is_temporary(name) && !m->listed.count(name)) m->foreign.insert(name);
-  return OutputDirectory(p, std::move(m), {});
+  return OutputDirectory(p, std::move(m), {}, std::move(lock));
 }
 
 void OutputDirectory::write_file(const std::string& name, const std::string& contents) const {

@@ -147,10 +147,14 @@ double TomlTable::number(const std::string& key, double fallback) const {
 int TomlTable::integer(const std::string& key, int fallback) const {
   if (!has(key)) return fallback;
   const toml::value& v = impl_->table->at(key);
-  if (!v.is_integer()) fail(key, std::string("expected an integer, got ") + type_name(v));
-  const auto i = v.as_integer();
-  if (i < -1000000000 || i > 1000000000) fail(key, "integer out of range");
-  return static_cast<int>(i);
+  constexpr double kLimit = 1e9;  // what an int holds, with room: no count spifit takes comes near it
+  // A whole number written as a float (200.0, 1e3) is taken as the integer it is.
+  double x = 0.0;
+  if (v.is_integer()) x = static_cast<double>(v.as_integer());
+  else if (v.is_floating() && std::isfinite(v.as_floating()) && v.as_floating() == std::floor(v.as_floating())) x = v.as_floating();
+  else fail(key, std::string("expected a whole number, got ") + (v.is_floating() ? value_text(key) : std::string(type_name(v))));
+  if (std::abs(x) > kLimit) fail(key, "too large for a count: at most 1000000000 (and far less is meant: see the key's valid range)");
+  return static_cast<int>(x);
 }
 std::string TomlTable::string(const std::string& key) const {
   if (!has(key)) fail(key, "required key is missing");

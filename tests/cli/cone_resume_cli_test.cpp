@@ -47,13 +47,13 @@ TEST(ConeResumeCli, RefusesWhatItCannotResume) {
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("excludes"), std::string::npos) << r.err;
 
-  // A finished run without checkpoints.
+  // A finished run (here without checkpoints): complete, nothing to resume.
   r = spifit::test::run_spifit("-q run " + scene.string() + " --out " + out.string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_FALSE(fs::exists(out / "checkpoint"));
   r = spifit::test::run_spifit("run " + scene.string() + " --out " + out.string() + " --resume");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find((out / "checkpoint" / "state.bin").string() + ": cannot resume: no checkpoint"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the run in this directory is complete (summary.json: status ok): nothing to resume"), std::string::npos) << r.err;
   fs::remove_all(out);
   fs::remove(scene);
 }

@@ -51,6 +51,15 @@ TEST(FitResumeCli, AKilledFeFitResumesToTheUninterruptedResult) {
   std::printf("killed after %zu of %zu evaluations\n", kept - 1, all - 1);
   EXPECT_LT(kept, all);
 
+  // A resume after the data changed is refused, naming the evaluations file.
+  const std::string original = spifit::test::slurp(data);
+  std::ofstream(data, std::ios::app) << "\n";
+  r = run_spifit("fit " + fit.string() + " --out " + out.string() + " --resume");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("evaluations.jsonl"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("changed"), std::string::npos) << r.err;
+  std::ofstream(data, std::ios::trunc) << original;
+
   r = run_spifit("fit " + fit.string() + " --out " + out.string() + " --resume");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("resuming: "), std::string::npos) << r.out;
@@ -59,13 +68,10 @@ TEST(FitResumeCli, AKilledFeFitResumesToTheUninterruptedResult) {
   // The resumed fit ran only what the killed one had not finished.
   EXPECT_LT(b["scene_runs"].get<long>(), a["scene_runs"].get<long>());
 
-  // A resume after the data changed is refused, naming the evaluations file; so is one with
-  // nothing to resume.
-  std::ofstream(data, std::ios::app) << "\n";
+  // A resume of the finished fit, or of nothing, is refused.
   r = run_spifit("fit " + fit.string() + " --out " + out.string() + " --resume");
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("evaluations.jsonl"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("changed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the run in this directory is complete"), std::string::npos) << r.err;
   const fs::path fresh = temp_path("fresh");
   fs::remove_all(fresh);
   r = run_spifit("fit " + fit.string() + " --out " + fresh.string() + " --resume");

@@ -91,7 +91,9 @@ inline void check_golden_outputs(const std::vector<std::string>& scenes) {
     entry["summary"] = strip_ignored(result->to_json());
     for (const auto& e : fs::recursive_directory_iterator(out)) {
       const std::string name = fs::relative(e.path(), out).string();
-      if (!e.is_regular_file() || name == "summary.json" || name == io::OutputDirectory::kManifest || name.rfind("checkpoint", 0) == 0) continue;
+      if (!e.is_regular_file() || name == "summary.json" || name == io::OutputDirectory::kManifest || name == io::DirectoryLock::kFile ||
+          name.rfind("checkpoint", 0) == 0)
+        continue;
       entry["files"][name] = fingerprint(io::read_text_file(e.path().string()));
     }
     if (update) {
