@@ -4,7 +4,10 @@
 #include "forward/material/material_inputs.hpp"
 #include "forward/material/swift_hardening.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iterator>
 #include <numbers>
 #include <sstream>
 
@@ -72,8 +75,12 @@ void read_law_table(const io::TomlTable& t, const std::string& table, MaterialPa
 
 }  // namespace
 
+namespace {
+constexpr double kHillSpread = 1e6;  // largest over smallest of F + G, G + H, H + F, N, L, M
+}  // namespace
+
 MaterialCard read_material_card(const io::TomlTable& root) {
-  root.allow_only({"card", "elastic", "hill", "swift", "armstrong_frederick", "ziegler", "density"});
+  root.allow_only({"card", "elastic", "hill", "swift", "armstrong_frederick", "ziegler", "density", "fitted"});
   MaterialCard card;
   card.file = root.file();
   auto& p = card.params;
@@ -94,6 +101,17 @@ MaterialCard read_material_card(const io::TomlTable& root) {
     card.name = dot == std::string::npos ? stem : stem.substr(0, dot);
   }
   card.density = root.number("density", card.density);
+  if (auto f = root.table("fitted")) {
+    f->allow_only({"fit_file", "start_card", "data", "spifit_version", "date", "usable"});
+    FitProvenance p;
+    p.fit_file = f->string("fit_file", "");
+    p.start_card = f->string("start_card", "");
+    if (f->has("data")) p.data = f->string_list("data");
+    p.spifit_version = f->string("spifit_version", "");
+    p.date = f->string("date", "");
+    p.usable = f->boolean("usable", true);
+    card.fitted = p;
+  }
 
   auto elastic = root.table("elastic");
   if (!elastic) root.fail("elastic", "required table [elastic] (E, nu) is missing");
@@ -145,7 +163,38 @@ void validate_material_card(const MaterialCard& card) {
     throw InputError(card.file, "hill.F/G/H", format_number(p.F) + "/" + format_number(p.G) + "/" + format_number(p.H),
                      "not a convex yield surface: " + msg);
   }
+  // Beyond any real sheet: measured r-values lie between about 0.2 and 6, so F + G, G + H, H + F
+  // and N stay within a factor of about 50 of each other; a million is no anisotropy but a typo
+  // (or a unit), and its yield surface a needle the return mapping cannot resolve.
+  const double sums[] = {p.F + p.G, p.G + p.H, p.H + p.F, p.N, p.L, p.M};
+  const double largest = *std::max_element(std::begin(sums), std::end(sums)), smallest = *std::min_element(std::begin(sums), std::end(sums));
+  if (!(largest <= kHillSpread * smallest)) {
+    const char* key = largest == sums[0] || largest == sums[2] ? "hill.F" : largest == sums[1] ? "hill.G" : largest == sums[3] ? "hill.N" : largest == sums[4] ? "hill.L" : "hill.M";
+    const double value = largest == sums[0] || largest == sums[2] ? p.F : largest == sums[1] ? p.G : largest == sums[3] ? p.N : largest == sums[4] ? p.L : p.M;
+    bad(key, value, "the Hill coefficients differ by more than a factor of a million (F + G, G + H, H + F, N, L, M from " + format_number(smallest) +
+                        " to " + format_number(largest) + "): beyond any real sheet, whose r-values lie between about 0.2 and 6");
+  }
   if (!(card.density > 0)) bad("density", card.density, "must be > 0 t/mm^3");
+}
+
+std::vector<std::string> material_card_warnings(const MaterialCard& card) {
+  std::vector<std::string> out;
+  const Hill48 h = card.hill();
+  const double deg[] = {0.0, 45.0, 90.0};
+  for (double d : deg) {
+    const double r = r_value_at_angle(h, d * std::numbers::pi / 180.0);
+    if (!(r >= 0.1 && r <= 10.0)) {
+      char buf[200];
+      std::snprintf(buf, sizeof buf, "its r-value at %.0f deg to RD is %.4g, beyond any measured sheet (about 0.2 to 6)", d, r);
+      out.push_back(buf);
+    }
+  }
+  if (card.params.plastic) {
+    const double s0 = swift_yield_stress(card.params, 0.0);
+    if (!(s0 >= 1.0 && s0 <= 5000.0))
+      out.push_back("its initial yield stress K eps0^n = " + format_number(s0) + " MPa is beyond any sheet metal (about 20 to 2000 MPa): is the unit right (MPa)?");
+  }
+  return out;
 }
 
 std::string material_card_to_toml(const MaterialCard& card) {
@@ -165,6 +214,14 @@ std::string material_card_to_toml(const MaterialCard& card) {
   if (!card.description.empty()) os << "description = \"" << esc(card.description) << "\"\n";
   if (!card.source.empty()) os << "source = \"" << esc(card.source) << "\"\n";
   os << "units = \"mm-N-MPa\"\n\n";
+  if (card.fitted) {
+    const FitProvenance& f = *card.fitted;
+    os << "[fitted]  # this card was written by a fit\n";
+    if (!f.usable) os << "usable = false   # the fit's result is NOT USABLE (its fit.json says why)\n";
+    os << "fit_file = \"" << esc(f.fit_file) << "\"\nstart_card = \"" << esc(f.start_card) << "\"\ndata = [";
+    for (std::size_t i = 0; i < f.data.size(); ++i) os << (i ? ", " : "") << "\"" << esc(f.data[i]) << "\"";
+    os << "]\nspifit_version = \"" << esc(f.spifit_version) << "\"\ndate = \"" << esc(f.date) << "\"\n\n";
+  }
   os << "[elastic]\nE = " << format_number(p.E) << "\nnu = " << format_number(p.nu) << "\n\n";
   os << "[hill]  # thesis notation, eq. 3.5 (factor 1/2)\nF = " << format_number(p.F) << "\nG = " << format_number(p.G)
      << "\nH = " << format_number(p.H) << "\nN = " << format_number(p.N) << "\nL = " << format_number(p.L)
@@ -188,6 +245,12 @@ std::string describe_material_card(const MaterialCard& card) {
   if (!card.description.empty()) os << "description    " << card.description << "\n";
   if (!card.source.empty()) os << "source         " << card.source << "\n";
   if (!card.file.empty()) os << "file           " << card.file << "\n";
+  if (card.fitted) {
+    const FitProvenance& f = *card.fitted;
+    os << "fitted         by spifit " << f.spifit_version << " on " << f.date << " from " << f.fit_file << " (start card " << f.start_card
+       << ")" << (f.usable ? "" : ": the fit was NOT USABLE") << "\n";
+    for (const auto& d : f.data) os << "  data         " << d << "\n";
+  }
   os << "elastic        E = " << format_number(p.E) << " MPa, nu = " << format_number(p.nu) << "\n";
   os << "yield          Hill 1948 (thesis notation, eq. 3.5)" << (h.is_von_mises() ? " = von Mises" : "") << ": F = "
      << format_number(h.F) << ", G = " << format_number(h.G) << ", H = " << format_number(h.H)
@@ -229,6 +292,7 @@ std::string describe_material_card(const MaterialCard& card) {
   std::snprintf(line, sizeof line, "Abaqus         *POTENTIAL R11..R23 = %.4f, %.4f, %.4f, %.4f, %.4f, %.4f\n", a.R11,
                 a.R22, a.R33, a.R12, a.R13, a.R23);
   os << line;
+  for (const auto& w : material_card_warnings(card)) os << "warning        " << w << "\n";
   return os.str();
 }
 

@@ -247,14 +247,19 @@ TEST(FormingSweep, CrossKeyChecksRejectGridValuesAtReadTime) {
     EXPECT_EQ(e.value(), "4");
     EXPECT_NE(e.message().find("odd number of thickness points"), std::string::npos) << e.what();
   }
-  // The indent at x = 3 mm misses a sheet 4 mm wide.
+  // The indent at x = 3 mm misses a sheet 4 mm wide (a tool of 1 mm radius, smaller than the sheet).
   const fs::path indent = tmp.path / "off_centre.toml";
   std::ofstream(indent) << "[scene]\nkind = \"indent\"\nmaterial = \"" << src("materials/aa3003o_c3c4.toml") << "\"\n"
-                        << "[sheet]\nlength = 10.0\nthickness = 0.3\nelements = 4\n"
+                        << "[sheet]\nlength = 10.0\nthickness = 0.3\nelements = 4\n[tool]\nradius = 1.0\n"
                         << "[[path]]\nx = 3.0\ny = 0.0\nz = 0.0\n[[path]]\nx = 3.0\ny = 0.0\nz = -0.5\n";
   const fs::path g = write_sweep(tmp.path, sweep_head(indent, "\"peak_fz\"") + "[inputs.\"sheet.length\"]\nvalues = [10.0, 4.0]\n");
   const std::string e = read_error(g);
   for (const char* part : {"inputs.sheet.length.values = 4", "never goes below"}) EXPECT_NE(e.find(part), std::string::npos) << e;
+  // A sheet narrower than the tool: the plausibility check names the tool.
+  const fs::path h = write_sweep(tmp.path, sweep_head(indent, "\"peak_fz\"") + "[inputs.\"sheet.length\"]\nvalues = [10.0, 1.5]\n");
+  const std::string narrow = read_error(h);
+  for (const char* part : {"inputs.sheet.length.values = 1.5", "tool.radius = 1: the tool (diameter 2 mm) is larger than the sheet it forms (1.5 mm"})
+    EXPECT_NE(narrow.find(part), std::string::npos) << narrow;
 }
 
 // The bundled FE sweep files read (the runs are on demand: README, docs/reference/cli.md).

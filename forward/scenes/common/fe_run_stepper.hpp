@@ -2,6 +2,7 @@
 // FeRun's bookkeeping between two increments (fe_run.cpp, fe_run_explicit.cpp): counts, marks,
 // wall times, checkpoints, the periodic writes and the stop options. Internal to FeRun.
 #include "forward/io/input_error.hpp"
+#include "forward/scenes/common/failure_words.hpp"
 #include "forward/scenes/common/fe_run.hpp"
 #include "forward/scenes/common/run_checkpoint.hpp"
 
@@ -118,7 +119,7 @@ class FeRun::Stepper {
         out.message = "time limit of " + io::format_number(run_.control_.time_limit_seconds) + " s passed at tool travel " +
                       std::to_string(out.travel_reached) + " mm, after " + std::to_string(log.increments) + " increments";
       } else if (!converged) {
-        out.message = "at tool travel " + std::to_string(out.travel_reached) + " mm: " + failure;
+        out.message = "at tool travel " + std::to_string(out.travel_reached) + " mm: " + failure_in_words(failure);
       }
     }
     for (auto& o : run_.observers_) o->write(WriteReason::end);

@@ -48,6 +48,9 @@ class Scene {
   // The contours of a cone's path (all stages): contour numbers run from 1 to it. 0 for kinds
   // without contours.
   virtual int contours() const { return 0; }
+  // What is legal but physically odd about the inputs (sheet_tool_checks.hpp), one sentence
+  // each: what a command tells the user before it runs the scene.
+  virtual std::vector<std::string> input_warnings() const { return {}; }
 
   // Named inputs: the kind's own (its InputTable) and the card's parameters (material_inputs).
   // input: std::invalid_argument for a name that is neither. set_input: "" when set, else why

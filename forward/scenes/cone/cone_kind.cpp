@@ -21,6 +21,9 @@ class ConeSceneFile final : public TableScene<ConeScene> {
 
  protected:
   std::string check_inputs() const override { return cone_scene_error(data_).text(); }
+
+ public:
+  std::vector<std::string> input_warnings() const override { return sheet_and_tool_warnings(cone_sheet_and_tool(data_)); }
 };
 
 const ConeResult& cone(const SceneResult& r) { return dynamic_cast<const ConeResult&>(r); }

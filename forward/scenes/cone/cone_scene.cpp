@@ -215,8 +215,21 @@ ConeScene read_cone_scene(const std::string& path) {
   return s;
 }
 
+SheetAndTool cone_sheet_and_tool(const ConeScene& s) {
+  SheetAndTool st;
+  st.thickness = s.thickness;
+  st.sheet_size = 2.0 * s.clamp_radius;
+  st.size_key = "sheet.clamp_radius";
+  st.tool_radius = s.tool_radius;
+  st.penalty = s.contact.penalty;
+  st.feed = s.feed;
+  st.card = &s.card;
+  return st;
+}
+
 InputViolation cone_scene_error(const ConeScene& s) {
   using io::format_number;
+  if (const InputViolation v = sheet_and_tool_error(cone_sheet_and_tool(s))) return v;
   if (s.thickness_rule == element::ThicknessRuleKind::surface && (s.thickness_points < 3 || s.thickness_points % 2 == 0))
     return {"sheet.thickness_rule", "\"surface\"", "the surface rule needs an odd number of thickness points >= 3"};
   double top = 0.0;

@@ -10,6 +10,7 @@
 #include "forward/mesh/disc_mesh.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
+#include "forward/scenes/common/sheet_tool_checks.hpp"
 #include "forward/scenes/cone/cone_observables.hpp"
 #include "forward/solver/explicit_options.hpp"
 #include "forward/solver/newton_solver.hpp"
@@ -105,6 +106,8 @@ ConeScene read_cone_scene(const std::string& path);
 // inside the clamp, each stage's path options, a mesh whose thickness over element length is
 // <= 3. None: an empty violation.
 InputViolation cone_scene_error(const ConeScene& scene);
+// The sheet and tool of the scene, for the plausibility checks (sheet_tool_checks.hpp).
+SheetAndTool cone_sheet_and_tool(const ConeScene& scene);
 
 // The stages with the scene's thickness, tool radius, feed and pie angle.
 std::vector<toolpath::ConePathOptions> cone_scene_stages(const ConeScene& scene);

@@ -26,6 +26,7 @@ class FormingSceneFile final : public TableScene<FormingScene> {
   }
   std::optional<toolpath::ToolPath> tool_centre_path() const override { return forming_centre_path(data_); }
   std::vector<std::string> section_points() const override { return data_.sections; }
+  std::vector<std::string> input_warnings() const override { return sheet_and_tool_warnings(forming_sheet_and_tool(data_)); }
 
  protected:
   std::string check_inputs() const override { return forming_scene_error(data_).text(); }

@@ -140,7 +140,20 @@ mesh::Mesh forming_sheet_mesh(const FormingScene& s) {
 
 bool is_forming_kind(const std::string& kind) { return kind == "indent" || kind == "indent_line" || kind == "line"; }
 
+SheetAndTool forming_sheet_and_tool(const FormingScene& s) {
+  SheetAndTool st;
+  st.thickness = s.thickness;
+  st.sheet_size = s.length;
+  st.size_key = "sheet.length";
+  st.tool_radius = s.radius;
+  st.penalty = s.contact.penalty;
+  st.feed = s.feed;
+  st.card = &s.card;
+  return st;
+}
+
 InputViolation forming_scene_error(const FormingScene& s) {
+  if (const InputViolation v = sheet_and_tool_error(forming_sheet_and_tool(s))) return v;
   if (s.half && s.elements % 2 != 0)
     return {"sheet.elements", std::to_string(s.elements), "a half model needs an even number of elements across"};
   if (const InputViolation v = thickness_violation(s)) return v;

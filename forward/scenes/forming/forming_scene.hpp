@@ -8,6 +8,7 @@
 #include "forward/material/material_card.hpp"
 #include "forward/mesh/mesh.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
+#include "forward/scenes/common/sheet_tool_checks.hpp"
 #include "forward/solver/explicit_options.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -86,6 +87,8 @@ bool is_forming_kind(const std::string& kind);
 // Also the sheet's thickness over its shortest element edge against the shell's limit
 // (model::ShellModelOptions: t/l <= 3), on "sheet.thickness" with the mesh keys in the message.
 InputViolation forming_scene_error(const FormingScene& scene);
+// The sheet and tool of the scene, for the plausibility checks (sheet_tool_checks.hpp).
+SheetAndTool forming_sheet_and_tool(const FormingScene& scene);
 // The sheet's mesh (sheet.length, elements, half, grading, coarse_levels, fine_band); std::invalid_argument on
 // meaningless values.
 mesh::Mesh forming_sheet_mesh(const FormingScene& scene);
