@@ -149,10 +149,12 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
   cmd->callback([o, &g, &exit_code] {
     const auto scene = scene::read_scene(o->scene);  // input errors before touching --out
+    if (!g.quiet)
+      for (const auto& w : scene->input_warnings()) std::cerr << "spifit: warning: " << o->scene << ": " << w << "\n";
     const scene::SceneKind* kind = scene::find_scene_kind(scene->kind());
     if (o->resume && !kind->resumable)
       throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + scene->kind() + " (it writes no checkpoints)");
-    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, scene->input_files(), g.quiet);
+    const auto dir = o->resume ? existing_output(o->out, o->scene, g.quiet) : prepare_output(o->out, o->force, scene->input_files(), g.quiet);
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
     std::shared_ptr<ProgressMeter> meter;

@@ -1,6 +1,7 @@
 // `spifit fit` and `spifit synth`: thin wrappers over inverse/.
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
+#include "cli/fit_progress_lines.hpp"
 #include "cli/job_process.hpp"
 #include "cli/mpi_session.hpp"
 #include "cli/run_signals.hpp"
@@ -26,6 +27,8 @@
 
 #include <atomic>
 #include <cstdio>
+#include <mutex>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -60,12 +63,13 @@ auto failed_on_error(scene::RunHeartbeat& heartbeat, RunWatch& watch, F f) {
 namespace {
 
 // The fitted card for production FE codes (approximations stated in each deck): DIR/exports/
-// with notes.json; a deck that cannot be written is a note, not a failed fit.
-void write_card_exports(const material::MaterialCard& card, const io::OutputDirectory& dir) {
+// with notes.json; a deck that cannot be written is a note, not a failed fit. suffix: the end of
+// the deck names ("_NOT_USABLE" for a fit that is not usable).
+void write_card_exports(const material::MaterialCard& card, const std::string& suffix, const io::OutputDirectory& dir) {
   nlohmann::json export_notes = nlohmann::json::object();
   for (auto f : {reports::ExportFormat::abaqus, reports::ExportFormat::lsdyna, reports::ExportFormat::calculix}) {
     std::vector<std::string> notes;
-    const std::string name = "exports/card_" + reports::to_string(f) + reports::default_extension(f);
+    const std::string name = "exports/card_" + reports::to_string(f) + suffix + reports::default_extension(f);
     try {
       dir.write_file(name, reports::export_card(card, f, &notes));
       export_notes[name] = notes;
@@ -79,6 +83,12 @@ void write_card_exports(const material::MaterialCard& card, const io::OutputDire
 }  // namespace
 
 namespace {
+
+std::string join(const std::vector<std::string>& texts, const std::string& sep) {
+  std::string out;
+  for (const auto& t : texts) out += (out.empty() ? "" : sep) + t;
+  return out;
+}
 
 // The command line of a worker rank's job process: quiet, the rank's --threads.
 std::vector<std::string> job_args(const GlobalOptions& g, std::vector<std::string> command) {
@@ -139,7 +149,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       exit_code = 0;
       return;
     }
-    const auto dir = o->resume ? existing_output(o->out) : prepare_output(o->out, o->force, problem.input_files, g.quiet);
+    const auto dir = o->resume ? existing_output(o->out, o->file, g.quiet) : prepare_output(o->out, o->force, problem.input_files, g.quiet);
     if (problem.scene_runs) {
       prepare_fe_runs(problem, dir, o->resume, g.quiet);
     } else if (o->resume) {
@@ -149,7 +159,16 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     // status "interrupted", the FE evaluations that finished kept for --resume.
     scene::RunHeartbeat heartbeat(scene::RunFiles(dir), {{"kind", "fit"}, {"fit", problem.name}, {"fit_file", o->file}});
     const auto runs = problem.scene_runs;
-    auto progress = [runs] { return runs ? nlohmann::json{{"forward_runs", runs->runs()}} : nlohmann::json::object(); };
+    // Its iterations and FE runs: lines on stderr (unless --quiet) and the running summary.
+    auto lines = std::make_shared<FitProgressLines>(::isatty(STDERR_FILENO) != 0);
+    auto print_lock = std::make_shared<std::mutex>();
+    const bool quiet = g.quiet;
+    auto fit_progress = std::make_shared<inverse::FitProgress>([lines, print_lock, quiet](const inverse::FitProgressEvent& e) {
+      if (quiet) return;
+      std::lock_guard<std::mutex> lock(*print_lock);
+      if (const auto text = lines->update(e)) std::fputs(text->c_str(), stderr);
+    });
+    auto progress = [fit_progress] { return fit_progress_json(fit_progress->snapshot()); };
     RunWatch watch(heartbeat, progress, [&heartbeat, runs, progress, o](int sig) {
       nlohmann::json j = heartbeat.running();
       for (const char* k : {"pid", "host", "heartbeat", "heartbeat_interval"}) j.erase(k);
@@ -158,7 +177,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       j["message"] = "interrupted by " + signal_name(sig) +
                      (runs ? "; the FE evaluations that finished are kept in runs/evaluations.jsonl: resume with spifit fit " + o->file + " --out " +
                                  o->out + " --resume"
-                           : "");
+                           : " (a fit of material points takes seconds and does not resume: run it again with --force)");
       return j;
     });
     heartbeat.write();  // once the signals are handled
@@ -166,24 +185,43 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     // counts agree to about 1e-10, not to the bit); the FE evaluations of a Jacobian go to the
     // workers all at once (parallel_evaluations).
     const int threads = g.threads > 0 ? g.threads : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-    const auto result = failed_on_error(heartbeat, watch, [&] { return inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart}); });
-    inverse::write_fit_outputs(problem, result, dir);
-    write_card_exports(result.card, dir);
+    const auto result =
+        failed_on_error(heartbeat, watch, [&] { return inverse::run_fit(problem, {o->algorithm, threads, o->seed, o->multistart, fit_progress}); });
+    {
+      std::lock_guard<std::mutex> lock(*print_lock);
+      if (const auto end = lines->finish(); end && !g.quiet) std::fputs(end->c_str(), stderr);
+    }
+    const auto card = inverse::write_fit_outputs(problem, result, dir);
+    const std::string suffix = inverse::fitted_file_suffix(result.usable);
+    write_card_exports(card, suffix, dir);
     // Report for people: report.md, report.html, plots/*.svg (gnuplot; without it, no plots).
     const auto report = reports::render_fit_report(dir.path(), {});
     dir.record();  // report.md, report.html, plots/ in the manifest
     for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
     watch.stop();  // the final summary is this one
     heartbeat.stop();
+    const std::string card_file = o->out + "/card" + suffix + ".toml";
     nlohmann::json summary{{"status", result.usable ? "ok" : "failed"},
                            {"kind", "fit"},
                            {"fit", problem.name},
+                           {"fit_file", o->file},
                            {"wall_seconds", result.wall_seconds},
                            {"termination", result.termination}};
+    if (!result.usable) summary["message"] = "the fit's result is not usable: " + join(result.not_usable, "; ");
     dir.write_file("summary.json", summary.dump(2) + "\n");
-    if (!g.quiet) std::cout << inverse::fit_table(problem, result);
+    if (!g.quiet) {
+      std::cout << inverse::fit_table(problem, result);
+      // The report's warnings, as its red box lists them.
+      for (const auto& f : report.findings) std::cout << "WARNING: " << f << "\n";
+      if (result.usable) std::cout << "card: " << card_file << " (report: " << o->out << "/report.html)\n";
+    }
+    std::cout.flush();
     if (!result.usable) {
-      std::cerr << "spifit: fit " << problem.name << " failed: " << result.termination << "\n";
+      // The reasons are among the warnings printed above; with --quiet, here.
+      std::cerr << "spifit: fit " << problem.name << ": the result is NOT USABLE";
+      if (g.quiet)
+        for (const auto& why : result.not_usable) std::cerr << "\n  - " << why;
+      std::cerr << "\n  its card is written as " << card_file << "; do not use it as a material card (report: " << o->out << "/report.html)\n";
       exit_code = 1;
       return;
     }

@@ -7,6 +7,8 @@
 #include "cli/run_signals.hpp"
 #include "forward/runtime/omp_wait_policy.hpp"
 
+#include <glog/logging.h>
+
 #include <iostream>
 #include <memory>
 #include <omp.h>
@@ -61,8 +63,21 @@ std::string subcommand_of(int argc, char** argv) {
 
 }  // namespace
 
+// Ceres logs through glog, which without initialisation starts its first message with "Logging
+// before InitGoogleLogging()" and writes log files under /tmp once initialised. spifit says in
+// its own words what a user needs: glog goes to stderr only, and only for fatal errors (with
+// --verbose also warnings and errors: the optimiser's own remarks).
+namespace {
+void quiet_glog(const char* program) {
+  FLAGS_logtostderr = true;
+  FLAGS_minloglevel = google::GLOG_FATAL;
+  google::InitGoogleLogging(program);
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   spifit::runtime::ensure_passive_omp_wait(argv);
+  quiet_glog(argv[0]);
   spifit::cli::start_signal_thread();  // before any other thread (OpenMP, Ceres) exists
   std::unique_ptr<spifit::cli::mpi::Session> mpi;
   try {
@@ -104,6 +119,7 @@ int main(int argc, char** argv) {
   spifit::cli::add_synth_command(app, g, exit_code, command_line);
   app.parse_complete_callback([&] {
     if (g.threads > 0) omp_set_num_threads(g.threads);
+    if (g.verbose) FLAGS_minloglevel = google::GLOG_WARNING;
   });
   try {
     app.parse(argc, argv);

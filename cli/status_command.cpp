@@ -4,6 +4,7 @@
 // Exit codes: 0 ok or running and alive, 1 anything else (failed, interrupted, dead, ...),
 // 2 not a spifit output directory.
 #include "cli/commands.hpp"
+#include "cli/progress_meter.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/common/run_heartbeat.hpp"
@@ -91,6 +92,23 @@ std::string progress_of(const json& j) {
   }
   if (p.contains("marks_reached") && p["marks_reached"].is_number())
     add(std::to_string(p["marks_reached"].get<long>()) + (p.contains("marks") ? " of " + std::to_string(p["marks"].get<long>()) : "") + " marks");
+  // A fit: its iteration, where it is among the iteration's FE runs, and the time left of it.
+  if (p.contains("iteration") && p["iteration"].is_number()) {
+    std::string s = (p.contains("phase") && p["phase"].is_string() ? p["phase"].get<std::string>() + ": " : "") + "iteration " +
+                    std::to_string(p["iteration"].get<long>());
+    if (p.contains("cost") && p["cost"].is_number()) {
+      char buf[64];
+      std::snprintf(buf, sizeof buf, ", cost %.6g", p["cost"].get<double>());
+      s += buf;
+    }
+    if (p.contains("iteration_runs") && p["iteration_runs"].is_number()) {
+      const long done = p["iteration_runs"].get<long>(), of = p.contains("iteration_runs_expected") ? p["iteration_runs_expected"].get<long>() : 0;
+      s += ", " + std::to_string(done) + (of > 0 && done <= of ? " of " + std::to_string(of) : "") + " FE runs of it done";
+      if (p.contains("iteration_seconds_left") && p["iteration_seconds_left"].is_number())
+        s += ", about " + clock_time(p["iteration_seconds_left"].get<double>()) + " left in it";
+    }
+    add(s);
+  }
   if (p.contains("forward_runs") && p["forward_runs"].is_number()) add(std::to_string(p["forward_runs"].get<long>()) + " forward runs");
   if (p.contains("runs_done") && p["runs_done"].is_number()) add(std::to_string(p["runs_done"].get<long>()) + " runs done");
   return out;

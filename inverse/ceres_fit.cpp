@@ -13,16 +13,19 @@ namespace spifit::inverse {
 
 namespace {
 
+// The cost of every iteration, and the iteration to whoever follows the fit's progress.
 class CostHistory final : public ceres::IterationCallback {
  public:
-  explicit CostHistory(std::vector<double>* h) : h_(h) {}
+  CostHistory(std::vector<double>* h, FitProgress* progress) : h_(h), progress_(progress) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     h_->push_back(s.cost);
+    if (progress_) progress_->iteration_finished(s.iteration, s.cost);
     return ceres::SOLVER_CONTINUE;
   }
 
  private:
   std::vector<double>* h_;
+  FitProgress* progress_;
 };
 
 }  // namespace
@@ -77,7 +80,7 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
   so.gradient_tolerance = fp.settings.gradient_tolerance;
   so.num_threads = std::max(1, options.threads);
   so.logging_type = ceres::SILENT;
-  CostHistory history(&out.cost_history);
+  CostHistory history(&out.cost_history, options.progress.get());
   so.callbacks.push_back(&history);
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);

@@ -35,6 +35,7 @@ void analyse_conflicts(const FitProblem& fp, const FitRunOptions& options, FitRe
     one.settings = fp.settings;
     FitRunOptions o = options;
     o.algorithm = "levenberg_marquardt";
+    if (o.progress) o.progress->set_phase(e->name() + " alone");
     const FitResult r = fit_with_ceres(one, o);
     FitResult::Alone a;
     a.experiment = e->name();

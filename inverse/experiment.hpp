@@ -27,6 +27,14 @@ struct ExperimentCurve {
   std::string x_words, y_words;  // what the axes show, e.g. "shear strain γ"; "": the names
 };
 
+// Whether measured values are plausible for their experiment (measurement_plausibility.hpp):
+// level 0 fine, 1 odd but possible (a note with the fit), 2 implausible (an input error naming
+// the data file: most often a wrong unit in its header).
+struct MagnitudeCheck {
+  int level = 0;
+  std::string message;  // what was compared, in words
+};
+
 class Experiment {
  public:
   virtual ~Experiment() = default;
@@ -51,6 +59,10 @@ class Experiment {
   virtual ExperimentCurve compare(const ParameterPoint& p) const = 0;
   // Names and units of the compared quantities, without running anything.
   virtual ExperimentCurve axes() const = 0;
+  // The measured values against what a forming engineer expects of this experiment: by default
+  // their largest magnitude against the simulated one at `start` (compare_magnitudes; cheap for
+  // material points); FE experiments compare with the scales of their scene instead, without a run.
+  virtual MagnitudeCheck check_magnitudes(const ParameterPoint& start) const;
   // How often residuals were asked for so far (with doubles or Jets; an FE experiment's answers
   // from a resumed fit's kept evaluations included). compare() does not count.
   long evaluations() const { return evaluations_.load(std::memory_order_relaxed); }

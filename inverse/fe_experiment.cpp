@@ -3,6 +3,7 @@
 #include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/forming/forming_result.hpp"
 #include "inverse/fe_evaluation_job.hpp"
+#include "inverse/measurement_plausibility.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -60,6 +61,11 @@ class FeExperiment : public Experiment {
   bool supports_jets() const override { return false; }
   int parallel_evaluations() const override { return runs_->pool() ? runs_->pool()->workers() : 0; }
   std::string scene_file() const override { return scene_->file(); }
+  // Against the scene's scales: an FE run is too dear to make for a plausibility check.
+  MagnitudeCheck check_magnitudes(const ParameterPoint& start) const final {
+    const ExperimentCurve a = axes();
+    return fe_magnitudes(a.y_name, a.y_unit, measured_values(), *scene_, start.material);
+  }
   // The residuals at p: kept from an earlier (killed) fit when the runs keep evaluations, else
   // computed (and kept).
   bool residuals(const ParameterPoint& p, double* r) const final {
@@ -79,6 +85,7 @@ class FeExperiment : public Experiment {
 
  protected:
   virtual bool compute(const ParameterPoint& p, double* r) const = 0;
+  virtual std::vector<double> measured_values() const = 0;
   // On a worker of the runs' pool: the same numbers compute() gives, computed there, with those
   // of the other experiments on this scene file (one job per scene file and point).
   bool compute_elsewhere(const ParameterPoint& p, double* r) const {
@@ -130,6 +137,7 @@ class FeScalarExperiment final : public FeExperiment {
 
  private:
   bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
+  std::vector<double> measured_values() const override { return {s_.value}; }
   bool eval(const ParameterPoint& p, double* r, double* simulated) const {
     const auto res = run_at(p);
     if (!res) return false;
@@ -171,6 +179,7 @@ class CurveFeExperiment : public FeExperiment {
 
  private:
   bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
+  std::vector<double> measured_values() const override { return c_.ys; }
   bool eval(const ParameterPoint& p, double* r, std::vector<double>* sim) const {
     const auto res = run_at(p);
     return res && curve_residuals(simulated(*res, p), c_.xs, c_.ys, sqrt_w_, scale_, r, sim);

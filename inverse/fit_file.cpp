@@ -187,10 +187,17 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   const std::string name = e.string("name", fe ? fe_scene->name() : sc.name);
   if (fe) {
     for (const auto& f : fe_scene->input_files()) fp.input_files.push_back(f);
+    for (const auto& w : fe_scene->input_warnings()) {
+      const std::string note = "scene " + scene_path + ": " + w;
+      if (std::find(fp.notes.begin(), fp.notes.end(), note) == fp.notes.end()) fp.notes.push_back(note);
+    }
   } else {
     fp.input_files.push_back(scene_path);
   }
-  if (e.has("data")) fp.input_files.push_back(resolve_path(path, e.string("data")));
+  if (e.has("data")) {
+    fp.input_files.push_back(resolve_path(path, e.string("data")));
+    fp.data_files.push_back(fp.input_files.back());
+  }
   // Names become file names (DIR/experiments/NAME.csv): plain and unique.
   const bool plain = !name.empty() && name[0] != '.' &&
                      std::all_of(name.begin(), name.end(), [](char ch) {
@@ -213,6 +220,37 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
     return read_fe_experiment(e, path, FeExperimentBase{name, fe_scene, fp.scene_runs, noise, noise_relative, weight});
   }
   return read_material_point_experiment(e, path, {name, std::move(sc), noise, noise_relative, weight});
+}
+
+}  // namespace
+
+namespace {
+
+// The measured values of each experiment against what its scene and the start card make
+// plausible (measurement_plausibility.hpp): implausible ones are an input error naming the data
+// file, its column and the unit its header gives (or the experiment's value); odd ones a note.
+void check_measured_magnitudes(const std::vector<io::TomlTable>& tables, const std::string& path, FitProblem& fp) {
+  const ParameterPoint start = fp.parameters->point(fp.parameters->initial_internal().data());
+  for (std::size_t i = 0; i < fp.experiments.size() && i < tables.size(); ++i) {
+    const Experiment& e = *fp.experiments[i];
+    const MagnitudeCheck c = e.check_magnitudes(start);
+    if (c.level == 0) continue;
+    const io::TomlTable& t = tables[i];
+    if (c.level == 1) {
+      fp.notes.push_back("experiment " + e.name() + ": " + c.message + ".");
+      continue;
+    }
+    if (!t.has("data")) t.fail("value", c.message);
+    const std::string data = resolve_path(path, t.string("data"));
+    const std::string column = e.axes().y_name;
+    std::string unit;
+    try {
+      const MeasurementTable m = read_measurement_csv(data);
+      if (m.units.count(column)) unit = m.units.at(column);
+    } catch (const InputError&) {
+    }
+    throw InputError(data, "column " + column, unit.empty() ? "(no unit)" : "[" + unit + "]", c.message);
+  }
 }
 
 }  // namespace
@@ -249,6 +287,7 @@ FitProblem read_fit_file(const std::string& path) {
   read_parameters(root, card, normalise, fe_scenes, fp);
   if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
   check_card_at_bounds(path, fp);
+  check_measured_magnitudes(exps, path, fp);
   return fp;
 }
 

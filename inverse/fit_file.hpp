@@ -42,6 +42,8 @@ struct FitProblem {
   // Every file the fit reads (fit file, card, scenes and what they read, data): what a resume
   // checks has not changed, and what must not lie in the output directory.
   std::vector<std::string> input_files;
+  // The measurement files of the experiments (a fitted card's provenance), in fit-file order.
+  std::vector<std::string> data_files;
 };
 
 // Throws io::InputError naming file, key and value (unknown parameter, bad bounds, missing

@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <ctime>
 #include <filesystem>
 
 namespace spifit::inverse {
@@ -126,6 +128,7 @@ FitRecord fit_record(const FitProblem& fp, const FitResult& r) {
   rec.seed = r.seed;
   rec.termination = r.termination;
   rec.usable = r.usable;
+  rec.not_usable = r.not_usable;
   rec.iterations = r.iterations;
   rec.forward_runs = r.forward_runs;
   if (fp.scene_runs) {
@@ -159,9 +162,50 @@ FitRecord fit_record(const FitProblem& fp, const FitResult& r) {
   return rec;
 }
 
-void write_fit_outputs(const FitProblem& fp, const FitResult& r, const io::OutputDirectory& out) {
+const char* fitted_file_suffix(bool usable) { return usable ? "" : "_NOT_USABLE"; }
+
+std::string fit_date() {
+  std::time_t t = std::time(nullptr);
+  if (const char* epoch = std::getenv("SOURCE_DATE_EPOCH")) {
+    char* end = nullptr;
+    const long long s = std::strtoll(epoch, &end, 10);
+    if (end != epoch && *end == '\0' && s >= 0) t = static_cast<std::time_t>(s);
+  }
+  std::tm utc{};
+  gmtime_r(&t, &utc);
+  char buf[16];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d", &utc);
+  return buf;
+}
+
+material::MaterialCard fitted_card(const FitProblem& fp, const FitResult& r, const std::string& date) {
+  material::MaterialCard card = r.card;
+  const material::MaterialCard& start = fp.parameters->base();
+  card.name = fp.name;
+  card.description = std::string(r.usable ? "" : "NOT USABLE: ") + "fitted by spifit to the experiments of " + fp.file +
+                     (fp.description.empty() ? "" : " (" + fp.description + ")");
+  card.source = "spifit " SPIFIT_VERSION " fit " + fp.file + ", started from card " + start.name;
+  card.file.clear();
+  material::FitProvenance p;
+  p.fit_file = fp.file;
+  p.start_card = start.file.empty() ? start.name : start.file;
+  p.data = fp.data_files;
+  p.spifit_version = SPIFIT_VERSION;
+  p.date = date;
+  p.usable = r.usable;
+  card.fitted = p;
+  return card;
+}
+
+material::MaterialCard write_fit_outputs(const FitProblem& fp, const FitResult& r, const io::OutputDirectory& out) {
   out.write_file("fit.json", to_json(fit_record(fp, r)).dump(2) + "\n");
-  out.write_file("card.toml", "# Fitted by spifit " SPIFIT_VERSION " from " + fp.file + "\n" + material::material_card_to_toml(r.card));
+  const material::MaterialCard card = fitted_card(fp, r, fit_date());
+  std::string head = "# Fitted by spifit " SPIFIT_VERSION " from " + fp.file + "\n";
+  if (!r.usable) {
+    head += "# NOT USABLE: this fit's result cannot be trusted:\n";
+    for (const auto& why : r.not_usable) head += "#   - " + why + "\n";
+  }
+  out.write_file(std::string("card") + fitted_file_suffix(r.usable) + ".toml", head + material::material_card_to_toml(card));
   std::filesystem::create_directories(out.path() / "experiments");
   const ParameterPoint start = fp.parameters->point(fp.parameters->initial_internal().data());
   const ParameterPoint solution = fp.parameters->point_at(r.values);
@@ -176,6 +220,7 @@ void write_fit_outputs(const FitProblem& fp, const FitResult& r, const io::Outpu
     }
     out.write_file("experiments/" + e->name() + ".csv", t.str());
   }
+  return card;
 }
 
 std::string fit_table(const FitProblem& fp, const FitResult& r) {
@@ -206,9 +251,6 @@ std::string fit_table(const FitProblem& fp, const FitResult& r) {
     std::snprintf(line, sizeof line, "  experiment %-22s %-6s %4d points  cost %.4g  rms %.4g\n", e.name.c_str(), e.kind.c_str(), e.points, e.cost, e.rms);
     s += line;
   }
-  for (const auto& n : fp.notes) s += "NOTE: " + n + "\n";
-  for (const auto& w : u.warnings) s += "WARNING: " + w + "\n";
-  for (const auto& c : r.conflicts) s += "CONFLICT: " + c + "\n";
   if (r.multistart.starts > 1) {
     std::snprintf(line, sizeof line, "multi-start: %d of %d starts reached the best cost (seed in fit.json)\n", r.multistart.at_best, r.multistart.starts);
     s += line;

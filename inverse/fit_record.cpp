@@ -415,6 +415,7 @@ json to_json(const FitRecord& rec) {
   if (rec.seed) j["seed"] = *rec.seed;
   j["termination"] = rec.termination;
   if (rec.usable) j["usable"] = *rec.usable;
+  if (!rec.not_usable.empty()) j["not_usable_because"] = rec.not_usable;
   if (rec.iterations) j["iterations"] = *rec.iterations;
   if (rec.forward_runs) j["forward_runs"] = *rec.forward_runs;
   if (rec.scene_runs) {
@@ -466,6 +467,7 @@ FitRecord fit_record_from_json(const json& j, const std::string& file) {
     read_correlation(r, j, rec);
     read_parameters(r, j, rec);
     read_uncertainty(r, j, rec);
+    read_texts(r, j, "not_usable_because", rec.not_usable);
     read_texts(r, j, "warnings", rec.warnings);
     read_texts(r, j, "conflicts", rec.conflicts);
     read_per_experiment(r, j, rec);

@@ -95,6 +95,7 @@ struct FitRecord {
   std::string fit_file, algorithm, termination, cost_definition;
   std::optional<unsigned> seed;
   std::optional<bool> usable;
+  std::vector<std::string> not_usable;  // key "not_usable_because": why usable is false (absent when usable)
   std::optional<int> iterations;
   std::optional<long> forward_runs;
   double wall_seconds = kNaN, cost_initial = kNaN, cost_final = kNaN;

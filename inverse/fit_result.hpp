@@ -3,7 +3,10 @@
 // the fitted values and card, costs, history, uncertainty, per-experiment fits and conflicts,
 // multi-start spread; and the run options.
 #include "inverse/fit_file.hpp"
+#include "inverse/fit_progress.hpp"
 #include "inverse/uncertainty.hpp"
+
+#include <memory>
 
 #include <string>
 #include <vector>
@@ -24,6 +27,9 @@ struct FitResult {
   std::string algorithm, termination;
   unsigned seed = 0;  // NLopt seed (0 for the deterministic Ceres algorithms)
   bool usable = false;
+  // Why the result is not usable as a card, in plain words (fit_assessment.hpp; run_fit fills it
+  // and sets usable = false when it is not empty).
+  std::vector<std::string> not_usable;
   std::vector<double> initial, values;  // physical values of the free parameters
   double cost_initial = 0.0, cost_final = 0.0;  // 1/2 sum of squared conditioned residuals
   int iterations = 0;
@@ -74,6 +80,8 @@ struct FitRunOptions {
   int threads = 1;        // parallel evaluation of experiments (Ceres num_threads)
   unsigned seed = 42;     // NLopt's stochastic algorithms and multi-start draws (in fit.json)
   int multistart = 0;     // overrides the fit file's multistart when > 0
+  // Told of every iteration and FE forward run (null: nobody listens); run_fit configures it.
+  std::shared_ptr<FitProgress> progress = nullptr;
 };
 
 }  // namespace spifit::inverse

@@ -32,6 +32,7 @@ FitResult run_multistart(const FitProblem& fp, const FitRunOptions& options, int
     one.experiments = fp.experiments;
     one.settings = fp.settings;
     FitRunOptions o = options;
+    if (o.progress) o.progress->set_phase("start " + std::to_string(s + 1) + " of " + std::to_string(starts));
     results.push_back(is_nlopt_algorithm(o.algorithm.empty() ? fp.settings.algorithm : o.algorithm) ? fit_with_nlopt(one, o)
                                                                                                      : fit_with_ceres(one, o));
     start_points.push_back(x0);

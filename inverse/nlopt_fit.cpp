@@ -27,6 +27,7 @@ const AlgorithmName kAlgorithms[] = {
 
 struct Objective {
   const FitProblem* problem;
+  FitProgress* progress = nullptr;
   long evaluations = 0, failures = 0;
   double best = std::numeric_limits<double>::infinity();
   std::vector<double> best_x;
@@ -47,6 +48,7 @@ double objective(unsigned n, const double* x, double* grad, void* data) {
     o->best_x = xv;
     o->history.push_back(cost);
   }
+  if (o->progress) o->progress->iteration_finished(static_cast<int>(o->evaluations), o->best);
   return cost;
 }
 
@@ -92,7 +94,7 @@ FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
     opt.set_local_optimizer(local);
   }
   if (alg->algorithm == nlopt::GN_ISRES || alg->algorithm == nlopt::GN_CRS2_LM) opt.set_population(0);
-  Objective obj{&fp, 0, 0, std::numeric_limits<double>::infinity(), {}, {}};
+  Objective obj{&fp, options.progress.get(), 0, 0, std::numeric_limits<double>::infinity(), {}, {}};
   opt.set_min_objective(objective, &obj);
   Eigen::VectorXd r0;
   out.cost_initial = evaluate_residuals(fp, x, &r0) ? 0.5 * r0.squaredNorm() : kFailedRunCost;

@@ -2,10 +2,13 @@
 
 #include "inverse/ceres_fit.hpp"
 #include "inverse/conflicts.hpp"
+#include "inverse/fit_assessment.hpp"
 #include "inverse/multistart.hpp"
 #include "inverse/nlopt_fit.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <set>
 
 namespace spifit::inverse {
 namespace {
@@ -31,9 +34,25 @@ void record_runs(const FitProblem& problem, FitResult* r) {
   }
 }
 
+// What an iteration asks of the FE scenes: the point and 2p central-difference neighbours per
+// scene file, run `width` at a time (threads, or an MPI job's workers).
+void configure_progress(const FitProblem& problem, const FitRunOptions& options) {
+  if (!options.progress) return;
+  std::set<std::string> files;
+  int width = std::max(1, options.threads);
+  for (const auto& e : problem.experiments) {
+    if (!e->scene_file().empty()) files.insert(e->scene_file());
+    width = std::max(width, e->parallel_evaluations());
+  }
+  const long p = problem.parameters->num_free();
+  options.progress->configure(static_cast<long>(files.size()) * (1 + 2 * p), width);
+  if (problem.scene_runs) problem.scene_runs->on_run([progress = options.progress](double s) { progress->run_finished(s); });
+}
+
 }  // namespace
 
 FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
+  configure_progress(problem, options);
   const std::string alg = options.algorithm.empty() ? problem.settings.algorithm : options.algorithm;
   const int starts = options.multistart > 0 ? options.multistart : problem.multistart;
   FitResult r = starts > 1 ? run_multistart(problem, options, starts)
@@ -41,9 +60,12 @@ FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
   if (problem.per_experiment && r.usable) {
     const auto t0 = std::chrono::steady_clock::now();
     analyse_conflicts(problem, options, &r);
+    if (options.progress) options.progress->set_phase("");
     r.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   record_runs(problem, &r);
+  r.not_usable = unusable_reasons(problem, r);
+  if (!r.not_usable.empty()) r.usable = false;
   return r;
 }
 

@@ -122,8 +122,11 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
       failure.message += std::string(failure.message.empty() ? "" : "; ") + e.what();
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    std::lock_guard<std::mutex> lock(mutex_);
-    log_.push_back({scene.file(), experiment, seconds, retry, r && r->ok()});
+    {
+      std::lock_guard<std::mutex> lock(mutex_);
+      log_.push_back({scene.file(), experiment, seconds, retry, r && r->ok()});
+    }
+    if (on_run_) on_run_(seconds);
     return r;
   };
   std::shared_ptr<const scene::SceneResult> r = attempt(false);
@@ -152,10 +155,14 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
 }
 
 void SceneRuns::add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures) const {
-  std::lock_guard<std::mutex> lock(mutex_);
-  runs_ += static_cast<long>(runs.size());
-  log_.insert(log_.end(), runs.begin(), runs.end());
-  failures_.insert(failures_.end(), failures.begin(), failures.end());
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    runs_ += static_cast<long>(runs.size());
+    log_.insert(log_.end(), runs.begin(), runs.end());
+    failures_.insert(failures_.end(), failures.begin(), failures.end());
+  }
+  if (on_run_)
+    for (const auto& r : runs) on_run_(r.seconds);
 }
 
 std::string SceneRuns::shared_answer(const std::string& key, const std::function<std::string()>& ask) const {

@@ -65,6 +65,10 @@ class SceneRuns {
   std::string shared_answer(const std::string& key, const std::function<std::string()>& ask) const;
   const material::MaterialParams<double>& base() const { return base_; }
 
+  // Told of every run that ends, here or (add_remote) on a worker: its wall seconds. Set it
+  // before the runs start.
+  void on_run(std::function<void(double seconds)> f) { on_run_ = std::move(f); }
+
   long runs() const;                   // forward runs made (retries included)
   std::vector<Failure> failures() const;  // in the order they happened
   std::vector<Run> run_log() const;       // every run made, in the order they ended
@@ -84,6 +88,7 @@ class SceneRuns {
   mutable std::deque<std::string> answer_order_;
   mutable std::vector<Run> log_;
   mutable long runs_ = 0;
+  std::function<void(double)> on_run_;
 };
 
 // The runs of one scene file of a fit: runs made (retries included), points that failed (after

@@ -2,6 +2,7 @@
 
 #include "forward/io/input_error.hpp"
 #include "inverse/ceres_cost.hpp"
+#include "inverse/fit_assessment.hpp"
 
 #include <ceres/ceres.h>
 
@@ -69,8 +70,7 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
         u.ci95_lower[k] = out.values[k] / f;
         u.ci95_upper[k] = out.values[k] * f;
       }
-      const double span = spec.upper - spec.lower;
-      if (out.values[k] <= spec.lower + 1e-6 * span || out.values[k] >= spec.upper - 1e-6 * span) {
+      if (bound_side(spec, out.values[k]) != 0) {
         u.warnings.push_back(spec.name + " ended at its bound (" + io::format_number(out.values[k]) +
                              "): the data push it further, or it is poorly determined; its interval is not meaningful.");
       }

@@ -50,6 +50,13 @@ void write_header(std::ostringstream& os, const std::string& prefix, const std::
   if (!card.description.empty()) write_comment(os, prefix, "description: " + card.description, width, "  ");
   if (!card.source.empty()) write_comment(os, prefix, "source: " + card.source, width, "  ");
   if (!card.file.empty()) write_comment(os, prefix, "card file: " + card.file, width, "  ");
+  if (card.fitted) {
+    const material::FitProvenance& f = *card.fitted;
+    if (!f.usable) write_comment(os, prefix, "NOT USABLE: the fit that wrote this card did not give a usable result (its fit.json says why)", width, "  ");
+    write_comment(os, prefix, "fitted by spifit " + f.spifit_version + " on " + f.date + " from fit file " + f.fit_file + ", start card " + f.start_card,
+                  width, "  ");
+    for (const auto& d : f.data) write_comment(os, prefix, "data: " + d, width, "  ");
+  }
   write_comment(os, prefix, "units: mm, N, s, t (tonne); stress MPa; density t/mm^3", width);
   write_comment(os, prefix, "conventions and approximations (docs/reference/outputs.md):", width);
   for (std::size_t i = 0; i < notes.size(); ++i) {

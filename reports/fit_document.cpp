@@ -5,8 +5,11 @@
 #include "reports/fit_sections.hpp"
 #include "reports/report_format.hpp"
 
+#include "forward/material/swift_hardening.hpp"
+
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace spifit::reports {
 
@@ -47,8 +50,9 @@ void add_intro_and_warnings(Document& d, const FitReportContent& c) {
   const FitRecord& rec = c.record;
   Inline intro{{"Fit file "}, {rec.fit_file.empty() ? "(unknown)" : rec.fit_file, false, true}};
   if (!rec.spifit_version.empty()) intro.push_back({", spifit " + rec.spifit_version});
+  const std::string card = fitted_card_file(rec);
   intro.push_back({". Fitted card: "});
-  intro.push_back({"card.toml", false, true, "card.toml"});
+  intro.push_back({card, false, true, card});
   intro.push_back({"; all numbers: "});
   intro.push_back({"fit.json", false, true, "fit.json"});
   intro.push_back({"."});
@@ -79,12 +83,12 @@ void add_summary(Document& d, const FitReportContent& c) {
   row("algorithm", rec.algorithm.empty() ? "n/a" : rec.algorithm);
   row("termination", rec.termination.empty() ? "n/a" : rec.termination);
   if (rec.seed && !is_ceres(rec.algorithm)) row("seed", fmt(*rec.seed, 12));
-  // A usable result whose experiments conflict is amber: the card fits none of them well.
-  if (rec.usable && !*rec.usable) row("result usable", "NO", CellStyle::bad);
-  else if (rec.usable && !rec.conflicts.empty())
-    row("result usable", "yes, with " + std::to_string(rec.conflicts.size()) + (rec.conflicts.size() == 1 ? " conflict" : " conflicts") +
-                             " between experiments (see the warnings)",
-        CellStyle::warn);
+  // A usable result with warnings is amber: read them before using the card.
+  std::size_t warnings = 0;
+  for (const auto& f : c.verdict.findings) warnings += f.level == 2 ? 1 : 0;
+  if (rec.usable && !*rec.usable) row("result usable", "NO (see the warnings): " + fitted_card_file(rec), CellStyle::bad);
+  else if (rec.usable && warnings > 0)
+    row("result usable", "yes, with " + std::to_string(warnings) + (warnings == 1 ? " warning" : " warnings") + " (see above)", CellStyle::warn);
   else if (rec.usable) row("result usable", "yes", CellStyle::good);
   row("iterations", fmt(number(rec.iterations), 10));
   row("forward runs", fmt(number(rec.forward_runs), 12));
@@ -146,6 +150,61 @@ void add_parameters(Document& d, const FitReportContent& c) {
     for (const auto& f : rec.fixed) fx.rows.push_back({cell(f.name), cell(f.expression.empty() ? fmt(f.value, 10) : f.expression)});
     d.table(fx);
   }
+}
+
+// Where a card parameter's value comes from in this fit.
+std::string parameter_origin(const FitRecord& rec, const std::string& name) {
+  for (const auto& q : rec.parameters)
+    if (q.name == name) return "fitted";
+  for (const auto& f : rec.fixed)
+    if (f.name == name) return f.expression.empty() ? "fixed in the fit file" : "= " + f.expression;
+  // N sets L and M (thesis: N = L = M).
+  if (name == "hill.L" || name == "hill.M") return parameter_origin(rec, "hill.N") == "fitted" ? "= hill.N (fitted)" : "start card";
+  return "start card";
+}
+
+// The whole card as written, fixed parameters too, and what it predicts at 0, 45 and 90 degrees
+// to RD (closed forms of Hill 1948, thesis eq. C.2; initial yield stress K eps0^n scaled by the
+// uniaxial factor).
+void add_card(Document& d, const FitReportContent& c) {
+  if (!c.card) return;
+  const material::MaterialCard& card = *c.card;
+  const auto& p = card.params;
+  d.heading(2, "The fitted card", "card");
+  Table t;
+  t.id = "card";
+  t.header = {"parameter", "unit", "value", "from"};
+  t.right = {false, false, true, false};
+  auto in_use = [&](const std::string& name) {
+    if (name.rfind("swift.", 0) == 0) return p.plastic;
+    if (name.rfind("af.", 0) == 0) return p.kinematic == material::KinematicLaw::armstrong_frederick;
+    if (name.rfind("ziegler.", 0) == 0) return p.kinematic == material::KinematicLaw::ziegler;
+    return true;
+  };
+  for (const auto& in : material::material_inputs()) {
+    if (!in_use(in.info.name)) continue;
+    t.rows.push_back({cell(in.info.name), cell(in.info.unit.empty() ? "-" : in.info.unit), cell(fmt(material::material_field(p, in.field))),
+                      cell(parameter_origin(c.record, in.info.name))});
+    if (in.info.name == "hill.N") {
+      t.rows.push_back({cell("hill.L"), cell("-"), cell(fmt(p.L)), cell(parameter_origin(c.record, "hill.L"))});
+      t.rows.push_back({cell("hill.M"), cell("-"), cell(fmt(p.M)), cell(parameter_origin(c.record, "hill.M"))});
+    }
+  }
+  d.table(t);
+  const material::Hill48 h = card.hill();
+  Table r;
+  r.id = "card_predictions";
+  r.header = {"angle to RD", "r-value", "initial yield stress"};
+  r.right = {true, true, true};
+  const double s0 = p.plastic ? material::swift_yield_stress(p, 0.0) : kNaN;
+  for (double deg : {0.0, 45.0, 90.0}) {
+    const double a = deg * std::numbers::pi / 180.0;
+    r.rows.push_back({cell(fmt(deg, 3) + "°"), cell(fmt(material::r_value_at_angle(h, a), 4)),
+                      cell(with_unit(fmt(s0 / material::uniaxial_stress_factor(h, a), 4), "MPa"))});
+  }
+  d.table(r);
+  d.para({{"What the card predicts in uniaxial tension (Hill 1948 closed forms, thesis eq. C.2; yield stress K ε0ⁿ over the "
+           "uniaxial factor of each direction)."}});
 }
 
 void add_experiments(Document& d, const FitReportContent& c) {
@@ -342,7 +401,8 @@ void add_correlation(Document& d, const FitRecord& rec) {
       Cell x = cell(format_fixed(v, 3));
       if (a == b) x.style = CellStyle::diagonal;
       else if (std::isfinite(v) && std::abs(v) >= verdict_limits::kCorrWarn) x.style = CellStyle::bad;
-      else x.shade = v;
+      else if (std::isfinite(v) && std::abs(v) >= verdict_limits::kCorrNote) x.style = CellStyle::warn;
+      else x.shade = std::abs(v);  // the strength of the correlation, whatever its sign
       r.push_back(x);
     }
     t.rows.push_back(r);
@@ -377,8 +437,15 @@ void add_singular_values(Document& d, const FitRecord& rec) {
 
 void add_files(Document& d, const FitReportContent& c) {
   d.heading(2, "Files", "files");
-  std::vector<Inline> files{{{"card.toml", false, true, "card.toml"}, {": the fitted material card"}},
+  const std::string card = fitted_card_file(c.record);
+  const bool usable = card == "card.toml";
+  std::vector<Inline> files{{{card, false, true, card}, {usable ? ": the fitted material card" : ": the fitted material card of a fit that is NOT USABLE"}},
                             {{"fit.json", false, true, "fit.json"}, {": every number of this report"}}};
+  for (const auto& x : c.exports) {
+    std::string what = ": the fitted card for another FE code (approximations stated in its header)";
+    if (x == "exports/notes.json") what = ": the notes of every exported deck";
+    files.push_back({{x, false, true, x}, {what}});
+  }
   for (const auto& x : c.record.experiments) {
     const std::string f = data_file_of(x);
     files.push_back({{f, false, true, path_inside(f).empty() ? "" : f}, {": measured and simulated values of " + x.name}});
@@ -397,6 +464,7 @@ Document fit_report_document(const FitReportContent& c) {
   add_intro_and_warnings(d, c);
   add_summary(d, c);
   add_parameters(d, c);
+  add_card(d, c);
   add_experiments(d, c);
   add_per_experiment(d, c.record);
   add_information_shares(d, c.record);

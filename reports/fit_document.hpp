@@ -8,6 +8,9 @@
 #include "reports/fit_verdict.hpp"
 #include "reports/report_document.hpp"
 
+#include "forward/material/material_card.hpp"
+
+#include <optional>
 #include <vector>
 
 namespace spifit::reports {
@@ -19,6 +22,8 @@ struct FitReportContent {
   FitVerdict verdict;
   FitPlots plots;
   bool plots_written = false;  // any image under plots/ (the Files section names the folder)
+  std::vector<std::string> exports;  // the files under exports/ (relative to DIR, sorted)
+  std::optional<material::MaterialCard> card;  // the fitted card as written (absent: not readable)
 };
 
 Document fit_report_document(const FitReportContent& content);

@@ -7,6 +7,8 @@
 #include "reports/fit_document.hpp"
 #include "reports/report_files.hpp"
 
+#include <algorithm>
+
 namespace spifit::reports {
 
 namespace fs = std::filesystem;
@@ -53,6 +55,16 @@ ReportSummary render_fit_report(const fs::path& dir, const ReportOptions& option
   }
   render_plots(dir, options, c, summary);
   c.plots_written = !summary.plots.empty();
+  std::error_code ec;
+  for (fs::directory_iterator it(dir / "exports", ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file()) c.exports.push_back("exports/" + it->path().filename().string());
+  std::sort(c.exports.begin(), c.exports.end());
+  try {
+    const fs::path card = dir / fitted_card_file(c.record);
+    if (fs::is_regular_file(card, ec)) c.card = material::load_material_card(card.string());
+  } catch (const io::InputError& e) {
+    summary.warnings.push_back(std::string("the fitted card cannot be read: ") + e.what());
+  }
 
   const ReportFiles files = write_report_files(dir, fit_report_document(c));
   summary.markdown = files.markdown;

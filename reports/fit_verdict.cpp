@@ -1,5 +1,7 @@
 #include "reports/fit_verdict.hpp"
 
+#include "inverse/fit_assessment.hpp"
+#include "inverse/fit_output.hpp"
 #include "reports/report_format.hpp"
 
 #include <algorithm>
@@ -13,6 +15,10 @@ using namespace verdict_limits;
 namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// The rms of (simulated - measured) / divisor: fit.json's rms without the experiment's weight,
+// which multiplies every residual by its square root.
+double unweighted_rms(const FitRecord::Experiment& e) { return e.rms / std::sqrt(e.weight > 0 ? e.weight : 1.0); }
 
 // Which divisor conditioned the residuals: the stated noise, or (none given) the range of the
 // measured curve / the magnitude of the measured value. fit.json says so (noise_given); older
@@ -56,13 +62,18 @@ void runs_test(const ExperimentData& d, ExperimentVerdict& v) {
   if (var > 0) v.runs_z = (changes - v.expected_sign_changes) / std::sqrt(var);
 }
 
-// Verdict when the divisor is the noise (or not recognised): rms in sigma.
+// Verdict when the divisor is the noise (or not recognised): rms in sigma (the experiment's
+// weight, which scales every residual by its square root, taken out).
 void judge_against_noise(const FitRecord::Experiment& e, ExperimentVerdict& v) {
-  const double r = e.rms;
+  const double r = unweighted_rms(e);
   const bool noise = v.conditioning == Conditioning::noise;
   const char* u = noise ? "σ" : "× scale";
   char buf[320];
-  if (is_scalar(e)) {
+  if (noise && r > inverse::far_above_noise_rms(e.points)) {
+    v.level = 2;
+    v.far_above_noise = true;
+    std::snprintf(buf, sizeof buf, "FAR ABOVE THE NOISE: rms %.3g σ", r);
+  } else if (is_scalar(e)) {
     if (r > kScalarConflictSigma) {
       v.level = 2;
       std::snprintf(buf, sizeof buf, "CONFLICT: off by %.1f %s", r, u);
@@ -91,9 +102,10 @@ void judge_against_noise(const FitRecord::Experiment& e, ExperimentVerdict& v) {
 // Verdict when no noise was given: rms as a fraction of the data range / value.
 void judge_against_range(const FitRecord::Experiment& e, ExperimentVerdict& v) {
   const char* of = v.conditioning == Conditioning::range ? "of the data range" : "of the value";
-  v.level = e.rms > kRangeConflict ? 2 : e.rms > kRangeNote ? 1 : 0;
+  const double rms = unweighted_rms(e);
+  v.level = rms > kRangeConflict ? 2 : rms > kRangeNote ? 1 : 0;
   char buf[320];
-  std::snprintf(buf, sizeof buf, "%s%.2f %% %s", v.level == 2 ? "POOR: rms " : "rms ", 100.0 * e.rms, of);
+  std::snprintf(buf, sizeof buf, "%s%.2f %% %s", v.level == 2 ? "POOR: rms " : "rms ", 100.0 * rms, of);
   v.text = buf;
 }
 
@@ -111,18 +123,24 @@ void experiment_level_finding(const FitRecord::Experiment& e, const ExperimentVe
       std::snprintf(buf, sizeof buf,
                     "Experiment %s is fitted poorly: its rms residual is %.1f %% %s. No noise was given, so this cannot be "
                     "judged statistically, but the model does not follow these data.",
-                    e.name.c_str(), 100.0 * e.rms, measured_what(v.conditioning));
+                    e.name.c_str(), 100.0 * unweighted_rms(e), measured_what(v.conditioning));
+    } else if (v.far_above_noise) {
+      std::snprintf(buf, sizeof buf,
+                    "Experiment %s: its residuals are %.3g times its stated noise over %d point%s, far more than random noise of that "
+                    "size gives (%.2f): its data, their units or their noise do not match the model, so the fit is not usable.",
+                    e.name.c_str(), unweighted_rms(e), e.points, e.points == 1 ? "" : "s",
+                    inverse::far_above_noise_rms(e.points));
     } else if (is_scalar(e)) {
       std::snprintf(buf, sizeof buf,
                     "Experiment %s disagrees with the model: the fitted %s is %.1f %s away from the measured value. The data "
                     "conflict with the model or with the other experiments (or the stated noise is too small).",
-                    e.name.c_str(), yname.c_str(), e.rms, sigma_unit(v.conditioning).c_str());
+                    e.name.c_str(), yname.c_str(), unweighted_rms(e), sigma_unit(v.conditioning).c_str());
     } else {
       std::snprintf(buf, sizeof buf,
                     "Experiment %s disagrees with the model: its residuals are %.1f times the stated noise (rms %.2f; about 1 is "
                     "expected). The data conflict with the model or with the other experiments (or the stated noise is too "
                     "small); it carries %s of the total cost.",
-                    e.name.c_str(), e.rms, e.rms, format_percent(v.share_cost).c_str());
+                    e.name.c_str(), unweighted_rms(e), unweighted_rms(e), format_percent(v.share_cost).c_str());
     }
     out.push_back({2, buf});
     return;
@@ -130,20 +148,20 @@ void experiment_level_finding(const FitRecord::Experiment& e, const ExperimentVe
   if (v.level != 1) return;
   if (is_scalar(e)) {
     std::snprintf(buf, sizeof buf, "Experiment %s: the fitted %s is %.1f %s from the measured value.", e.name.c_str(), yname.c_str(),
-                  e.rms, sigma_unit(v.conditioning).c_str());
+                  unweighted_rms(e), sigma_unit(v.conditioning).c_str());
   } else if (v.above_noise) {
     std::snprintf(buf, sizeof buf,
                   "Experiment %s: residuals (rms %.2f σ) are significantly larger than the stated noise (random noise over "
                   "%d points stays below about %.2f σ): a mild disagreement with the model or the other experiments, or the "
                   "noise is understated.",
-                  e.name.c_str(), e.rms, e.points, std::sqrt(chi2_bound(e.points)));
+                  e.name.c_str(), unweighted_rms(e), e.points, std::sqrt(chi2_bound(e.points)));
   } else if (v.conditioning == Conditioning::noise) {
     std::snprintf(buf, sizeof buf,
                   "Experiment %s: residuals (rms %.2f σ) are clearly smaller than the stated noise; the noise may be overstated, "
                   "which widens the confidence intervals.",
-                  e.name.c_str(), e.rms);
+                  e.name.c_str(), unweighted_rms(e));
   } else {
-    std::snprintf(buf, sizeof buf, "Experiment %s: rms residual %.1f %% %s.", e.name.c_str(), 100.0 * e.rms, measured_what(v.conditioning));
+    std::snprintf(buf, sizeof buf, "Experiment %s: rms residual %.1f %% %s.", e.name.c_str(), 100.0 * unweighted_rms(e), measured_what(v.conditioning));
   }
   out.push_back({1, buf});
 }
@@ -263,10 +281,18 @@ ExperimentVerdict judge_experiment(const FitRecord::Experiment& e, const Experim
   return v;
 }
 
+std::string fitted_card_file(const FitRecord& rec) {
+  return std::string("card") + inverse::fitted_file_suffix(!rec.usable || *rec.usable) + ".toml";
+}
+
 FitVerdict judge_fit(const FitRecord& rec, const std::vector<ExperimentData>& data) {
   FitVerdict out;
   if (rec.usable && !*rec.usable) {
-    out.findings.push_back({2, "The fit FAILED and its result is not usable (" + rec.termination + "). Do not use card.toml."});
+    std::string why;
+    for (const auto& w : rec.not_usable) why += (why.empty() ? "" : "; ") + w;
+    if (why.empty()) why = rec.termination;  // a fit.json of an older spifit
+    out.findings.push_back({2, "The result is NOT USABLE: " + why + ". Its card is written as " + fitted_card_file(rec) +
+                                   ": do not use it as a material card."});
   } else if (rec.termination.rfind("NO_CONVERGENCE", 0) == 0 || rec.termination.rfind("FAILURE", 0) == 0) {
     out.findings.push_back({2, "The optimiser stopped without converging (" + rec.termination + "): the values may not be the best fit."});
   }

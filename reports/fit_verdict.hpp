@@ -40,6 +40,7 @@ struct ExperimentVerdict {
   double share_points = std::numeric_limits<double>::quiet_NaN();
   int level = 0;             // 0 ok, 1 note, 2 conflict
   bool above_noise = false;  // rms significantly above 1 (noise given), below the conflict level
+  bool far_above_noise = false;  // rms above inverse::far_above_noise_rms: the fit is not usable
   std::string text;          // e.g. "consistent with the noise (rms 0.98 σ)"
   // Runs test of the residual signs (curves with >= 10 non-zero residuals).
   int sign_changes = -1;
@@ -60,6 +61,10 @@ struct FitVerdict {
 
 // The verdict on one experiment, without the shares of the total cost and points.
 ExperimentVerdict judge_experiment(const inverse::FitRecord::Experiment& e, const ExperimentData& data);
+
+// The fitted card's file in the fit's directory: card.toml, or card_NOT_USABLE.toml when the
+// record says the fit is not usable.
+std::string fitted_card_file(const inverse::FitRecord& record);
 
 // data: one entry per experiment of the record (read_fit_data).
 FitVerdict judge_fit(const inverse::FitRecord& record, const std::vector<ExperimentData>& data);

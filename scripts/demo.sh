@@ -4,7 +4,7 @@
 # then the N-conflict fit, the bundled material-point scenes and the shell benchmarks.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/build.sh
+bash scripts/build.sh spifit   # only what the main job needs
 spifit=build/cli/spifit
 out=${SPIFIT_DEMO_OUT:-out}
 mkdir -p "$out"
@@ -14,7 +14,11 @@ echo "== AA3003-O identification: Hill 1948 + Swift (experiments/aa3003o/fit_cla
 echo "   -> $out/fit_classic/fit.json, card.toml, experiments/*.csv"
 echo
 echo "== Do the r45 and shear tests agree on N? (experiments/aa3003o/fit_n_conflict.toml) =="
-"$spifit" fit experiments/aa3003o/fit_n_conflict.toml --out "$out/fit_n_conflict" --force
+echo "   They do not: the joint fit is NOT USABLE and exits 1, which is the answer this fit exists to give."
+if "$spifit" fit experiments/aa3003o/fit_n_conflict.toml --out "$out/fit_n_conflict" --force; then
+  echo "spifit: fit_n_conflict was expected to end NOT USABLE (exit 1)" >&2
+  exit 1
+fi
 echo
 echo "== AA3003-O material-point scenes (results in $out/scenes/<scene>/) =="
 for scene in experiments/aa3003o/scenes/*.toml; do

@@ -180,12 +180,13 @@ TEST(Cli, FailedRunLeavesOnlyAFailedSummary) {
   fs::remove(path);
 }
 
-// spifit fit: fit.json with the keys of the issue, the fitted card, exports; errors exit 2.
+// spifit fit: fit.json with the keys of the issue, the fitted card, exports; errors exit 2. The
+// N-conflict fit is not usable (r45 is 22 sigma off): exit 1, its card and decks named so.
 TEST(Cli, FitWritesFitJsonCardAndExports) {
   const auto out = fresh_dir("fit");
   const auto r = run("fit " + src("experiments/aa3003o/fit_n_conflict.toml") + " --out " + out.string());
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("CONFLICT: experiments r45 and shear_00 disagree on hill.N"), std::string::npos) << r.out;
+  ASSERT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.out.find("WARNING: Conflict: experiments r45 and shear_00 disagree on hill.N"), std::string::npos) << r.out;
   std::ifstream f(out / "fit.json");
   const auto j = nlohmann::json::parse(f);
   for (const char* k : {"parameters", "cost_initial", "cost_final", "forward_runs", "wall_seconds", "termination", "algorithm", "correlation"}) {
@@ -194,10 +195,10 @@ TEST(Cli, FitWritesFitJsonCardAndExports) {
   const auto& n = j["parameters"]["hill.N"];
   for (const char* k : {"value", "initial", "std_error", "ci95", "lower", "upper"}) EXPECT_TRUE(n.contains(k)) << k;
   EXPECT_LT(n["ci95"][0].get<double>(), n["value"].get<double>());
-  EXPECT_TRUE(fs::exists(out / "card.toml"));
-  EXPECT_TRUE(fs::exists(out / "exports" / "card_abaqus.inp"));
-  EXPECT_TRUE(fs::exists(out / "exports" / "card_calculix.inp"));
-  EXPECT_TRUE(fs::exists(out / "exports" / "card_lsdyna.k"));
+  EXPECT_TRUE(fs::exists(out / "card_NOT_USABLE.toml"));
+  EXPECT_TRUE(fs::exists(out / "exports" / "card_abaqus_NOT_USABLE.inp"));
+  EXPECT_TRUE(fs::exists(out / "exports" / "card_calculix_NOT_USABLE.inp"));
+  EXPECT_TRUE(fs::exists(out / "exports" / "card_lsdyna_NOT_USABLE.k"));
   EXPECT_TRUE(fs::exists(out / "report.md"));
   EXPECT_TRUE(fs::exists(out / "report.html"));
   EXPECT_EQ(run("report " + out.string() + " --no-plots").code, 0);
@@ -215,7 +216,7 @@ TEST(Cli, FitWritesFitJsonCardAndExports) {
   EXPECT_EQ(old_report.code, 0) << old_report.err;
   EXPECT_NE(spifit::test::slurp(out / "report.md").find("fit.json does not count the forward runs per experiment"), std::string::npos);
   // The fitted card loads and shows.
-  EXPECT_EQ(run("material show " + (out / "card.toml").string()).code, 0);
+  EXPECT_EQ(run("material show " + (out / "card_NOT_USABLE.toml").string()).code, 0);
   fs::remove_all(out);
 
   const std::string bad = write_temp("badfit.toml", "[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") +

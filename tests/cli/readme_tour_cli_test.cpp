@@ -1,14 +1,15 @@
 // The documentation's promises that a test can keep: every short command of README.md's
-// "A five-minute tour" and of every ```sh block of docs/guide/ runs with exit code 0 (commands
-// whose comment says "long" are skipped; outputs go to a temporary directory instead of out/,
-// one per page, the commands of a page in order), and every relative Markdown link of README.md
-// and docs/ points to a file that exists.
+// "A five-minute tour" and of every ```sh block of docs/guide/ runs with exit code 0, or with the
+// code its comment names ("# exits 1: ..."; commands whose comment says "long" are skipped;
+// outputs go to a temporary directory instead of out/, one per page, the commands of a page in
+// order), and every relative Markdown link of README.md and docs/ points to a file that exists.
 #include "tests/cli/cli_support.hpp"
 #include "forward/io/text_file.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <sstream>
@@ -72,13 +73,19 @@ Ran run_commands(const std::vector<std::string>& lines, const fs::path& out, con
       ++n.skipped;
       continue;
     }
+    // "# exits N": the code the page promises (a fit that is not usable exits 1).
+    int expected = 0;
+    if (hash != std::string::npos) {
+      const auto exits = args.find("exits ", hash);
+      if (exits != std::string::npos) expected = std::atoi(args.c_str() + exits + 6);
+    }
     args = args.substr(0, hash);
     std::string target = " ";  // (built by appends: GCC 12 warns falsely on " " + string&&)
     target += out.string();
     target += '/';
     args = replace_all(args, " out/", target);
     const auto r = spifit::test::run_spifit("-q " + args);
-    EXPECT_EQ(r.code, 0) << where << ": spifit " << args << "\n" << r.err;
+    EXPECT_EQ(r.code, expected) << where << ": spifit " << args << "\n" << r.err;
     ++n.run;
   }
   fs::current_path(cwd);

@@ -32,11 +32,14 @@ TEST(BundledFits, KinematicRecoversGeneratingCardWithinIntervals) {
   }
 }
 
-// fit_n_conflict: r45 alone and the shear curve alone disagree on N, and the fit says so.
+// fit_n_conflict: r45 alone and the shear curve alone disagree on N, and the fit says so; the
+// joint result is not usable (r45 ends 22 sigma from its measurement).
 TEST(BundledFits, NConflictIsReportedPerExperiment) {
   const auto fp = inverse::read_fit_file(src("experiments/aa3003o/fit_n_conflict.toml"));
   const auto r = inverse::run_fit(fp);
-  ASSERT_TRUE(r.usable);
+  ASSERT_FALSE(r.usable);
+  ASSERT_EQ(r.not_usable.size(), 1u);
+  EXPECT_EQ(r.not_usable[0].rfind("experiment r45: its residuals are on average 22.", 0), 0u) << r.not_usable[0];
   ASSERT_EQ(r.per_experiment.size(), 2u);
   const int n = index_of(fp, "hill.N");
   ASSERT_GE(n, 0);

@@ -31,7 +31,8 @@ void write(const fs::path& p, const std::string& text) { std::ofstream(p, std::i
 
 std::string file_text(const FitRecord& r) { return inverse::to_json(r).dump(2) + "\n"; }
 
-// fit_n_conflict: per-experiment fits and conflicts, curves and scalars, a fixed expression.
+// fit_n_conflict: per-experiment fits and conflicts, curves and scalars, a fixed expression, and
+// the reasons it is not usable.
 class FitRecordTest : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -39,7 +40,7 @@ class FitRecordTest : public ::testing::Test {
     fs::remove_all(dir_);
     const auto problem = inverse::read_fit_file(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/fit_n_conflict.toml");
     const auto result = inverse::run_fit(problem, {"", 2});
-    ASSERT_TRUE(result.usable) << result.termination;
+    ASSERT_FALSE(result.usable) << result.termination;
     inverse::write_fit_outputs(problem, result, io::OutputDirectory::prepare(dir_.string(), false));
     text_ = slurp(dir_ / "fit.json");
   }
@@ -61,7 +62,9 @@ TEST_F(FitRecordTest, BundledFitJsonRoundTripsByteForByte) {
 
   EXPECT_EQ(r.name, "fit_n_conflict");
   ASSERT_TRUE(r.usable.has_value());
-  EXPECT_TRUE(*r.usable);
+  EXPECT_FALSE(*r.usable);
+  ASSERT_EQ(r.not_usable.size(), 1u);
+  EXPECT_EQ(r.not_usable[0].rfind("experiment r45: ", 0), 0u) << r.not_usable[0];
   ASSERT_FALSE(r.parameters.empty());
   ASSERT_EQ(r.parameters.size(), r.correlation.names.size());
   for (std::size_t k = 0; k < r.parameters.size(); ++k) EXPECT_EQ(r.parameters[k].name, r.correlation.names[k]) << "fit order";

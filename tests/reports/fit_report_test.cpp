@@ -299,9 +299,10 @@ TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
     }
     return false;
   };
-  EXPECT_TRUE(finding("tensile_45", "disagrees with the model"));
-  EXPECT_TRUE(finding("tensile_45", "4.5 times the stated noise"));
-  EXPECT_TRUE(finding("r_values", "disagrees with the model"));
+  // Both far above their noise (50 points at 4.5 sigma, 3 at 6 sigma: beyond 2 and 3.20).
+  EXPECT_TRUE(finding("tensile_45", "4.5 times its stated noise over 50 points"));
+  EXPECT_TRUE(finding("tensile_45", "so the fit is not usable"));
+  EXPECT_TRUE(finding("r_values", "6 times its stated noise over 3 points"));
   EXPECT_TRUE(finding("hill.N", "upper bound"));
   EXPECT_TRUE(finding("swift.eps0", "not identifiable"));
   EXPECT_FALSE(finding("tensile_00", ""));
@@ -310,12 +311,12 @@ TEST_F(FitReportTest, ConflictsAndBoundsArePlainWarnings) {
   ASSERT_NE(box, std::string::npos) << md.substr(0, 2000);
   EXPECT_LT(box, md.find("## Summary"));
   for (const auto& f : s.findings) EXPECT_NE(md.find(f.substr(0, 30)), std::string::npos) << f;
-  EXPECT_NE(md_row(md, "tensile_45").at(10).find("CONFLICT"), std::string::npos);
+  EXPECT_NE(md_row(md, "tensile_45").at(10).find("FAR ABOVE THE NOISE"), std::string::npos);
   EXPECT_EQ(md_row(md, "swift.eps0").at(8), "**NO**");
   EXPECT_NE(md_row(md, "hill.N").at(9).find("AT upper BOUND"), std::string::npos);
   const std::string html = slurp(d / "report.html");
   EXPECT_NE(html.find("<div class=\"callout warn\">"), std::string::npos);
-  EXPECT_NE(html.find("<td class=\"bad\">CONFLICT"), std::string::npos);
+  EXPECT_NE(html.find("<td class=\"bad\">FAR ABOVE THE NOISE"), std::string::npos);
 }
 
 TEST_F(FitReportTest, BoundWarningOfFitJsonIsNotRepeated) {
@@ -365,13 +366,16 @@ TEST_F(FitReportTest, OlderFitJsonWithoutRunsOrShares) {
 }
 
 // A real conflict (fit_n_conflict: r45 and the shear curve disagree on Hill's N; each
-// experiment is also fitted alone): the report names it as a warning and shows both fits.
+// experiment is also fitted alone): the report names it as a warning and shows both fits; the
+// joint fit is not usable (r45 ends 22 sigma off).
 TEST(FitReportConflict, RealConflictOnHillN) {
   const fs::path dir = fs::temp_directory_path() / ("spifit_report_conflict_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   const auto problem = inverse::read_fit_file(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/fit_n_conflict.toml");
   const auto result = inverse::run_fit(problem, {"", 2});
-  ASSERT_TRUE(result.usable) << result.termination;
+  ASSERT_FALSE(result.usable) << result.termination;
+  ASSERT_EQ(result.not_usable.size(), 1u);
+  EXPECT_EQ(result.not_usable[0].rfind("experiment r45: its residuals are on average 22.", 0), 0u) << result.not_usable[0];
   inverse::write_fit_outputs(problem, result, io::OutputDirectory::prepare(dir.string(), false));
   const auto s = reports::render_fit_report(dir, {false});
   const std::string md = slurp(dir / "report.md"), html = slurp(dir / "report.html");
@@ -380,11 +384,11 @@ TEST(FitReportConflict, RealConflictOnHillN) {
   bool named = false, r45 = false;
   for (const auto& f : s.findings) {
     named = named || (f.find("Conflict") == 0 && f.find("hill.N") != std::string::npos);
-    r45 = r45 || f.find("Experiment r45 disagrees with the model") == 0;
+    r45 = r45 || f.find("Experiment r45: its residuals are 22.") == 0;
   }
   EXPECT_TRUE(named) << md;
   EXPECT_TRUE(r45) << md;
-  EXPECT_NE(md_row(md, "r45").at(10).find("CONFLICT"), std::string::npos);
+  EXPECT_NE(md_row(md, "r45").at(10).find("FAR ABOVE THE NOISE"), std::string::npos);
   EXPECT_NE(md.find("### Each experiment fitted alone"), std::string::npos);
   const auto alone = md.substr(md.find("### Each experiment fitted alone"));
   const auto row = md_row(alone, "r45");

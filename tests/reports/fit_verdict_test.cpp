@@ -52,7 +52,15 @@ TEST(FitVerdict, CurvesAgainstTheNoise) {
   EXPECT_EQ(high.level, 1);
   EXPECT_TRUE(high.above_noise);
   EXPECT_EQ(judge_experiment(curve("a", 0.3, true), alternating).text, "rms 0.30 σ: below the stated noise");
-  EXPECT_EQ(judge_experiment(curve("a", 2.5, true), alternating).text, "CONFLICT: rms 2.50 σ");
+  // Twice the noise and beyond what 20 points of random noise reach once in a million: the fit is
+  // not usable (inverse/fit_assessment.hpp); with fewer points the chi-square bound is higher.
+  EXPECT_EQ(judge_experiment(curve("a", 2.5, true), alternating).text, "FAR ABOVE THE NOISE: rms 2.5 σ");
+  EXPECT_TRUE(judge_experiment(curve("a", 2.5, true), alternating).far_above_noise);
+  EXPECT_EQ(judge_experiment(curve("a", 2.1, true, 10), data(10, [](int i) { return i % 2 ? 0.1 : -0.1; })).text, "CONFLICT: rms 2.10 σ");
+  // The experiment's weight is taken out: rms 2 at weight 4 is 1 sigma.
+  auto weighted = curve("a", 2.0, true);
+  weighted.weight = 4.0;
+  EXPECT_EQ(judge_experiment(weighted, alternating).text, "consistent with the noise (rms 1.00 σ)");
   EXPECT_EQ(judge_experiment(curve("a", 0.03, false), alternating).text, "rms 3.00 % of the data range");
   EXPECT_EQ(judge_experiment(curve("a", 0.06, false), alternating).level, 2);
   auto failed = curve("a", FitRecord::kNaN, true);
@@ -96,7 +104,7 @@ TEST(FitVerdict, FitLevelFindings) {
   r.experiments = {curve("a", 1.0, true), curve("b", 1.0, true)};
   const auto d = data(20, [](int i) { return i % 2 ? 0.1 : -0.1; });
   const auto v = judge_fit(r, {d, d});
-  EXPECT_TRUE(has(v, 2, "FAILED"));
+  EXPECT_TRUE(has(v, 2, "The result is NOT USABLE: FAILURE. Its card is written as card_NOT_USABLE.toml"));
   EXPECT_TRUE(has(v, 2, "told by the fit"));
   EXPECT_TRUE(has(v, 2, "Conflict: a and b"));
   EXPECT_TRUE(has(v, 2, "swift.K sits at its upper bound (400)"));
@@ -104,6 +112,22 @@ TEST(FitVerdict, FitLevelFindings) {
   ASSERT_EQ(v.at_bound.size(), 1u);
   EXPECT_EQ(v.at_bound[0], "upper");
   EXPECT_NEAR(v.experiments[0].share_cost, 0.5, 1e-12);
+  // The reasons fit.json gives are the finding.
+  r.not_usable = {"swift.K ended at its upper bound (400)", "hill.N is not identifiable from these experiments"};
+  EXPECT_TRUE(has(judge_fit(r, {d, d}), 2, "NOT USABLE: swift.K ended at its upper bound (400); hill.N is not identifiable"));
+}
+
+TEST(FitVerdict, AScalarFarAboveItsNoise) {
+  FitRecord::Experiment e;
+  e.name = "r45";
+  e.kind = "scalar";
+  e.points = 1;
+  e.scale = 0.02;
+  e.noise_given = true;
+  e.rms = 4.0;  // off by 4 sigma: a conflict, not beyond random noise once in a million (4.89)
+  EXPECT_EQ(judge_experiment(e, ExperimentData{}).text, "CONFLICT: off by 4.0 σ");
+  e.rms = 22.0;
+  EXPECT_EQ(judge_experiment(e, ExperimentData{}).text, "FAR ABOVE THE NOISE: rms 22 σ");
 }
 
 }  // namespace
@@ -114,6 +138,7 @@ namespace {
 spifit::reports::Cell usable_cell(const FitRecord& r) {
   FitReportContent c;
   c.record = r;
+  c.verdict = judge_fit(r, {});
   const Document d = fit_report_document(c);
   for (const auto& b : d.blocks)
     if (b.kind == Block::Kind::table)
@@ -125,15 +150,17 @@ spifit::reports::Cell usable_cell(const FitRecord& r) {
 
 }  // namespace
 
-// A conflict between experiments makes a usable result amber, not green; a failed one is red.
-TEST(FitReportSummary, AConflictMakesAUsableResultAmber) {
+// A warning (a conflict between experiments) makes a usable result amber, not green; one that is
+// not usable is red and names its card.
+TEST(FitReportSummary, AWarningMakesAUsableResultAmber) {
   FitRecord r;
   r.usable = true;
   EXPECT_EQ(usable_cell(r).style, CellStyle::good);
   EXPECT_EQ(usable_cell(r).text, "yes");
   r.conflicts = {"a and b disagree on hill.N"};
   EXPECT_EQ(usable_cell(r).style, CellStyle::warn);
-  EXPECT_EQ(usable_cell(r).text, "yes, with 1 conflict between experiments (see the warnings)");
+  EXPECT_EQ(usable_cell(r).text, "yes, with 1 warning (see above)");
   r.usable = false;
   EXPECT_EQ(usable_cell(r).style, CellStyle::bad);
+  EXPECT_EQ(usable_cell(r).text, "NO (see the warnings): card_NOT_USABLE.toml");
 }
