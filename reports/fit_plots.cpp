@@ -65,7 +65,6 @@ PlotSpec curve_fit_plot(int index, const FitRecord::Experiment& e, const Experim
   f.title = e.name + ": data and simulation";
   f.xlabel = x_label(e, d);
   f.ylabel = experiment_axis_label(e, false, "");
-  f.key_outside = e.kind == "section";  // a formed shape fills the top left
   f.series.push_back({"measured", d.x, d.measured, Series::Style::points, ""});
   f.series.push_back({"initial simulation", d.x, d.initial, Series::Style::dashed_line, ""});
   f.series.push_back({"fitted simulation", d.x, d.fitted, Series::Style::line, "#d62728"});

@@ -153,7 +153,9 @@ std::string gnuplot_script(const PlotSpec& spec, PlotFormat format, const std::s
         if (std::isfinite(x)) xmax = std::max(xmax, x);
       }
     }
-    g << (xmax <= 20 ? "set xtics 1\n" : "set format x '%.0f'\n");
+    // Whole-number tics only: every one up to 20, else a whole step giving at most about 10.
+    const long step = xmax <= 20 ? 1 : static_cast<long>(std::ceil(xmax / 10.0));
+    g << "set xtics " << step << "\nset format x '%.0f'\n";
   }
   g << "set border lc rgb '#444444'\n";
   if (spec.log_y) g << "set logscale y\nset format y '%.0e'\n";

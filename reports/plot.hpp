@@ -42,7 +42,7 @@ struct PlotSpec {
   bool log_y = false;
   bool log_x = false;                    // logarithmic x axis (points with x <= 0 are left out)
   bool key = true;                       // legend (top left)
-  bool key_outside = false;              // the legend right of the plot (for curves that fill the top left)
+  bool key_outside = true;               // the legend right of the plot, off the data (false: inside, top left)
   bool integer_x = false;                // x tics at integers only (iterations)
   std::vector<Series> series;
   std::vector<HLine> hlines;             // horizontal reference lines

@@ -91,7 +91,6 @@ PlotSpec force_plot(const RunContent& c) {
     for (std::size_t i = 0; i < x.size() && i < z.size(); ++i) x[i] = z0 - z[i];
     p.xlabel = "tool-tip depth [mm]";
   }
-  p.key_outside = true;
   const bool cone = kind == "cone";
   for (const char* name : cone ? std::vector<const char*>{"Fr", "Ftheta", "Fz"} : std::vector<const char*>{"Fx", "Fy", "Fz"}) {
     const std::vector<double> y = c.force.column(name);
@@ -107,7 +106,6 @@ PlotSpec per_contour_plot(const OutputTable& t, const std::string& stem, const s
                           const std::vector<std::pair<std::string, std::string>>& columns) {
   PlotSpec p = titled(stem, title, "contour (in the order run)", ylabel);
   p.integer_x = true;
-  p.key_outside = true;
   std::vector<double> x;
   for (std::size_t i = 0; i < t.rows(); ++i) x.push_back(static_cast<double>(i + 1));
   for (const auto& [column, series] : columns) {
@@ -124,7 +122,6 @@ PlotSpec contour_plot(const RunContent& c) {
 
 PlotSpec section_plot(const RunContent& c, const char* column, const std::string& label, const std::string& stem) {
   PlotSpec p = titled(stem, "Section y = 0 (mid-surface): " + label, "x [mm]", label + " [mm]");
-  p.key_outside = true;
   for (const auto& [point, t] : c.sections) p.series.push_back({"at " + point, t.column("x"), t.column(column), Series::Style::line, ""});
   return p;
 }
@@ -136,7 +133,6 @@ PlotSpec cone_depth_plot(const RunContent& c) {
 
 PlotSpec energy_plot(const RunContent& c) {
   PlotSpec p = titled("run_energies", "Energy account", "tool travel [mm]", "energy [N mm]");
-  p.key_outside = true;
   const std::vector<double> x = c.energies.column("travel");
   for (const char* name : {"external_work", "elastic", "plastic", "friction_dissipation", "contact_stored", "balance_error"}) {
     const std::vector<double> y = c.energies.column(name);
@@ -208,6 +204,31 @@ void render_plots(const fs::path& dir, const ReportOptions& options, RunContent&
   out.warnings.insert(out.warnings.end(), session.warnings().begin(), session.warnings().end());
 }
 
+// The text of a summary value: numbers to 6 significant digits, texts and booleans as they are.
+std::string value_text(const json& v) {
+  if (v.is_number()) return format_significant(v.get<double>(), 6);
+  if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+  if (v.is_string()) return v.get<std::string>();
+  return v.dump();
+}
+
+// The scene's inputs as the run recorded them in summary.json (sheet, tool, contact, solver).
+void add_inputs(Document& d, const json& s) {
+  Table t;
+  t.id = "inputs";
+  t.header = {"input", "value"};
+  t.right = {false, true};
+  for (const char* group : {"model", "tool", "contact", "solver"}) {
+    if (!s.contains(group) || !s[group].is_object()) continue;
+    for (const auto& [key, v] : s[group].items())
+      if (!v.is_object() && !v.is_array()) t.rows.push_back({cell(std::string(group) + "." + key), cell(value_text(v))});
+  }
+  if (t.rows.empty()) return;
+  d.heading(2, "Inputs", "inputs");
+  d.table(t);
+  d.para({{"As the run used them (summary.json): the sheet's model, the tool, the contact and the solver."}});
+}
+
 Document run_document(const RunContent& c) {
   const json& s = c.summary;
   Document d;
@@ -260,8 +281,14 @@ Document run_document(const RunContent& c) {
   const double pen = number_at(s, "max_penetration");
   row("largest penetration of the tool", with_unit(format_significant(pen, 3), "mm") +
                                              (std::isfinite(h) && h > 0 ? " (" + format_percent(pen / h) + " of the thickness)" : ""));
+  if (s.contains("energies") && s["energies"].is_object()) {
+    const json& e = s["energies"];
+    row("energy balance error", with_unit(format_significant(number_at(e, "balance_error"), 4), "N mm") + " (" +
+                                    format_percent(number_at(e, "relative_balance_error")) + " of the external work)");
+  }
   row("wall time", with_unit(format_significant(number_at(s, "wall_seconds"), 4), "s"));
   d.table(t);
+  add_inputs(d, s);
   if (s.contains("profile_seconds") && !dynamic) {  // the Newton solver's profile
     const json& p = s["profile_seconds"];
     const double wall = number_at(s, "wall_seconds"), el = number_at(p, "elements", 0.0), as = number_at(p, "assembly", 0.0),

@@ -74,7 +74,6 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
     p.title = t.metrics[m] + " vs " + t.inputs[0];
     p.xlabel = sweep_input_label(t, 0);
     p.ylabel = sweep_metric_label(t, m);
-    p.key_outside = true;
     p.key = t.inputs.size() > 1;
     p.log_x = log_x;
     p.series = series_for([&](std::size_t i) { return t.ok[i] ? t.metric_values[i][m] : NAN; });
@@ -86,7 +85,6 @@ std::vector<std::string> render_sweep_plots(const std::filesystem::path& dir, co
   w.title = "run time per point";
   w.xlabel = sweep_input_label(t, 0);
   w.ylabel = "wall time [s]";
-  w.key_outside = true;
   w.key = t.inputs.size() > 1;
   w.log_x = log_x;
   w.series = series_for([&](std::size_t i) { return t.wall_seconds[i]; });
