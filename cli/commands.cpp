@@ -119,7 +119,7 @@ scene::ProgressSink progress_sink(const GlobalOptions& g, std::shared_ptr<Progre
   const auto t0 = std::chrono::steady_clock::now();
   return [m, t0](const scene::ProgressEvent& e) {
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (const auto text = m->update(e.fraction, elapsed)) std::fputs(text->c_str(), stderr);
+    if (const auto text = m->update(e.fraction, elapsed, e.load)) std::fputs(text->c_str(), stderr);
   };
 }
 

@@ -39,8 +39,8 @@ std::string ProgressMeter::line(double fraction, double elapsed, std::optional<d
   return out;
 }
 
-std::optional<std::string> ProgressMeter::update(double fraction, double elapsed) {
-  left_.add(fraction, elapsed);
+std::optional<std::string> ProgressMeter::update(double fraction, double elapsed, std::optional<double> load) {
+  left_.add(load ? *load : fraction, elapsed);
   if (elapsed < quiet_for_) return std::nullopt;
   const double every = terminal_ ? 0.5 : log_every_;
   if (printed_ && elapsed - last_ < every) return std::nullopt;

@@ -36,8 +36,10 @@ class ProgressMeter {
       : terminal_(terminal), log_every_(log_every), quiet_for_(quiet_for) {}
 
   // The text to print now (with its leading "\r" on a terminal, its newline elsewhere), or
-  // nothing, after `elapsed` seconds with `fraction` of the path done.
-  std::optional<std::string> update(double fraction, double elapsed);
+  // nothing, after `elapsed` seconds with `fraction` of the path done; the time left goes by
+  // `load` (ProgressEvent::load: the path with the moves through the air shortened), by the
+  // fraction without it.
+  std::optional<std::string> update(double fraction, double elapsed, std::optional<double> load = std::nullopt);
   // What ends the progress output when the run ends ("\n" after a terminal line), or nothing.
   std::optional<std::string> finish() const;
 

@@ -14,8 +14,8 @@ namespace spifit::scene {
 
 using FeRunClock = std::chrono::steady_clock;
 
-inline void report_progress(const ProgressSink& sink, ProgressEvent::Kind kind, std::string text, double fraction) {
-  if (sink) sink({kind, std::move(text), fraction});
+inline void report_progress(const ProgressSink& sink, ProgressEvent::Kind kind, std::string text, double fraction, double load) {
+  if (sink) sink({kind, std::move(text), fraction, load});
 }
 
 // The bookkeeping of one run between two increments: counts, marks, wall times, checkpoints,
@@ -61,7 +61,7 @@ class FeRun::Stepper {
       if (s.progress_every_increment)
         std::snprintf(buf, sizeof buf, "%s %d: travel %.2f / %.2f mm, %d %s", dynamics ? "interval" : "increment", log.increments, travel,
                       s.load_map.length(), ir.iterations, dynamics ? "steps" : "iterations");
-      report_progress(run_.control_.progress, ProgressEvent::Kind::increment, buf, fraction);
+      report_progress(run_.control_.progress, ProgressEvent::Kind::increment, buf, fraction, ir.lambda);
     }
     const RunControl& c = run_.control_;
     const bool at_end = run_.model_->load_factor() >= 1.0 - 1e-12;
@@ -141,13 +141,13 @@ class FeRun::Stepper {
     if (ir.force_only) {
       std::snprintf(buf, sizeof buf, "increment %d at travel %.6f mm accepted on the force test alone at the minimum increment (relative residual %.3g)",
                     ir.index, travel, ir.residual_norms.empty() ? 0.0 : ir.residual_norms.back());
-      report_progress(run_.control_.progress, ProgressEvent::Kind::note, buf, fraction);
+      report_progress(run_.control_.progress, ProgressEvent::Kind::note, buf, fraction, ir.lambda);
     }
     if (ir.damping > 0.0) {
       std::snprintf(buf, sizeof buf,
                     "increment %d at travel %.6f mm stabilised (damping factor %.3g): viscous work %.3g N mm, viscous force %.3g of the force scale",
                     ir.index, travel, ir.damping, ir.viscous_work, ir.viscous_force);
-      report_progress(run_.control_.progress, ProgressEvent::Kind::note, buf, fraction);
+      report_progress(run_.control_.progress, ProgressEvent::Kind::note, buf, fraction, ir.lambda);
     }
   }
 
@@ -191,7 +191,8 @@ class FeRun::Stepper {
     char buf[160];
     std::snprintf(buf, sizeof buf, "checkpoint after %d increments, %d marks: %zu bytes in %.3f s", log.increments, log.marks_reached,
                   checkpoints.bytes, dt);
-    report_progress(run_.control_.progress, ProgressEvent::Kind::checkpoint, buf, run_.setup_.load_map.travel(run_.model_->load_factor()) / run_.setup_.load_map.length());
+    const double load = run_.model_->load_factor();
+    report_progress(run_.control_.progress, ProgressEvent::Kind::checkpoint, buf, run_.setup_.load_map.travel(load) / run_.setup_.load_map.length(), load);
   }
 };
 
