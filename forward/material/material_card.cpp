@@ -103,14 +103,14 @@ MaterialCard read_material_card(const io::TomlTable& root) {
   card.density = root.number("density", card.density);
   if (auto f = root.table("fitted")) {
     f->allow_only({"fit_file", "start_card", "data", "spifit_version", "date", "usable"});
-    FitProvenance p;
-    p.fit_file = f->string("fit_file", "");
-    p.start_card = f->string("start_card", "");
-    if (f->has("data")) p.data = f->string_list("data");
-    p.spifit_version = f->string("spifit_version", "");
-    p.date = f->string("date", "");
-    p.usable = f->boolean("usable", true);
-    card.fitted = p;
+    FitProvenance fitted;
+    fitted.fit_file = f->string("fit_file", "");
+    fitted.start_card = f->string("start_card", "");
+    if (f->has("data")) fitted.data = f->string_list("data");
+    fitted.spifit_version = f->string("spifit_version", "");
+    fitted.date = f->string("date", "");
+    fitted.usable = f->boolean("usable", true);
+    card.fitted = fitted;
   }
 
   auto elastic = root.table("elastic");
