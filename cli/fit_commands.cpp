@@ -211,8 +211,9 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     dir.write_file("summary.json", summary.dump(2) + "\n");
     if (!g.quiet) {
       std::cout << inverse::fit_table(problem, result);
-      // The report's warnings, as its red box lists them.
+      // The report's warnings and notes, as its red and yellow boxes list them.
       for (const auto& f : report.findings) std::cout << "WARNING: " << f << "\n";
+      for (const auto& n : report.notes) std::cout << "NOTE: " << n << "\n";
       if (result.usable) std::cout << "card: " << card_file << " (report: " << o->out << "/report.html)\n";
     }
     std::cout.flush();
@@ -339,9 +340,11 @@ void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->callback([o, &g, &exit_code] {
     reports::ReportOptions ro;
     ro.plots = !o->no_plots;
-    // Opened before rendering: what is there and not in its manifest stays out of it.
+    // Opened before rendering: what is there and not in its manifest stays out of it. No lock:
+    // a run still going (or killed) is reported as far as it got; the report's files are written
+    // atomically and the run's own report at its end replaces them.
     std::optional<io::OutputDirectory> dir;
-    if (std::filesystem::is_directory(o->dir)) dir = io::OutputDirectory::existing(o->dir);
+    if (std::filesystem::is_directory(o->dir)) dir = io::OutputDirectory::existing(o->dir, io::OutputDirectory::Locking::none);
     if (!std::filesystem::exists(std::filesystem::path(o->dir) / "fit.json") && reports::is_sweep_directory(o->dir)) {
       const auto r = reports::rerender_sweep_report(o->dir, ro.plots);
       if (dir) dir->record();

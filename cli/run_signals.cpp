@@ -1,5 +1,7 @@
 #include "cli/run_signals.hpp"
 
+#include "forward/io/directory_lock.hpp"
+
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -92,6 +94,7 @@ void RunWatch::loop() {
         std::fflush(stdout);
         const auto m = summary.find("message");
         std::cerr << "spifit: " << (m != summary.end() && m->is_string() ? m->get<std::string>() : "interrupted by " + signal_name(sig)) << "\n";
+        io::DirectoryLock::release_all();  // _Exit runs no destructor: no stale lock for the resume
         std::_Exit(interrupted_exit_code(sig));
       }
       return;

@@ -1,9 +1,13 @@
 #include "forward/io/directory_lock.hpp"
 
+#include "forward/io/host_and_time.hpp"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <ctime>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -15,20 +19,9 @@
 namespace spifit::io {
 namespace {
 
-std::string this_host() {
-  char buf[256] = "";
-  if (::gethostname(buf, sizeof buf - 1) != 0) return "";
-  return buf;
-}
-
-std::string now_utc() {
-  const std::time_t t = std::time(nullptr);
-  std::tm utc{};
-  gmtime_r(&t, &utc);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
-  return buf;
-}
+// The lock files this process holds (release_all).
+std::mutex g_held_mutex;
+std::set<std::filesystem::path> g_held;
 
 // The holder a lock file names ("pid = N", "host = H", "started = T" lines); pid 0 if unreadable.
 DirectoryLock::Holder read_holder(int fd) {
@@ -50,6 +43,18 @@ DirectoryLock::Holder read_holder(int fd) {
 }
 
 }  // namespace
+
+DirectoryLock::DirectoryLock(std::filesystem::path file, int fd) : file_(std::move(file)), fd_(fd) {
+  const std::lock_guard<std::mutex> lock(g_held_mutex);
+  g_held.insert(file_);
+}
+
+void DirectoryLock::release_all() {
+  const std::lock_guard<std::mutex> lock(g_held_mutex);
+  std::error_code ec;
+  for (const auto& f : g_held) std::filesystem::remove(f, ec);
+  g_held.clear();
+}
 
 std::string DirectoryLock::Holder::describe() const {
   std::string s = "pid " + std::to_string(pid);
@@ -91,7 +96,7 @@ std::unique_ptr<DirectoryLock> DirectoryLock::take(const std::filesystem::path& 
     const Holder before = read_holder(fd);
     if (before.pid != 0) lock->taken_over_ = before;
     const std::string text = "# spifit: this directory is being written by the process below (docs/reference/file-formats.md)\n"
-                             "pid = " + std::to_string(::getpid()) + "\nhost = " + this_host() + "\nstarted = " + now_utc() + "\n";
+                             "pid = " + std::to_string(::getpid()) + "\nhost = " + host_name() + "\nstarted = " + utc_iso(std::time(nullptr)) + "\n";
     if (::ftruncate(fd, 0) != 0 || ::pwrite(fd, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size())) {
       const int err = errno;
       refusal->reason = err == EACCES || err == EPERM || err == EROFS ? Refusal::Reason::permission_denied : Refusal::Reason::cannot_create;
@@ -107,6 +112,10 @@ std::unique_ptr<DirectoryLock> DirectoryLock::take(const std::filesystem::path& 
 
 DirectoryLock::~DirectoryLock() {
   if (fd_ < 0) return;
+  {
+    const std::lock_guard<std::mutex> lock(g_held_mutex);
+    g_held.erase(file_);
+  }
   std::error_code ec;
   std::filesystem::remove(file_, ec);  // while still holding it: nobody else has it now
   ::close(fd_);

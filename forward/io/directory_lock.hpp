@@ -39,8 +39,12 @@ class DirectoryLock {
   // The earlier holder this lock replaced: a process that ended without releasing it.
   const std::optional<Holder>& taken_over() const { return taken_over_; }
 
+  // Removes the lock files this process holds, for a process about to end without running
+  // destructors (std::_Exit after SIGINT or SIGTERM): the next run then finds no stale lock.
+  static void release_all();
+
  private:
-  DirectoryLock(std::filesystem::path file, int fd) : file_(std::move(file)), fd_(fd) {}
+  DirectoryLock(std::filesystem::path file, int fd);
   std::filesystem::path file_;
   int fd_ = -1;
   std::optional<Holder> taken_over_;

@@ -1,6 +1,7 @@
 #include "forward/io/output_directory.hpp"
 
 #include "forward/io/atomic_file.hpp"
+#include "forward/io/host_and_time.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/text_file.hpp"
 
@@ -47,10 +48,13 @@ std::shared_ptr<DirectoryLock> lock_directory(const fs::path& p, const std::stri
   std::shared_ptr<DirectoryLock> lock = DirectoryLock::take(p, &refusal);
   if (lock) return lock;
   switch (refusal.reason) {
-    case DirectoryLock::Refusal::Reason::held:
+    case DirectoryLock::Refusal::Reason::held: {
+      const DirectoryLock::Holder& h = refusal.holder;
+      const bool here = h.host.empty() || h.host == host_name();
       throw OutputDirectoryError(R::locked, path,
-                                 "in use: a live spifit process is writing there (" + refusal.holder.describe() +
-                                     "); wait for it to end, or stop it (kill " + std::to_string(refusal.holder.pid) + ") and try again");
+                                 "in use: a live spifit process is writing there (" + h.describe() + "); wait for it to end, or stop it (" +
+                                     (here ? "kill " + std::to_string(h.pid) : "on host " + h.host) + ") and try again");
+    }
     case DirectoryLock::Refusal::Reason::permission_denied:
       throw OutputDirectoryError(R::permission_denied, path, "permission denied: cannot write in the output directory (" + refusal.message + ")");
     case DirectoryLock::Refusal::Reason::cannot_create: break;

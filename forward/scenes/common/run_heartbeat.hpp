@@ -5,6 +5,7 @@
 // most every "heartbeat_interval" seconds as the run makes progress (FE increments; a fit's or
 // sweep's clock). A killed run keeps its last heartbeat and its pid is gone: `spifit status DIR`
 // tells the two apart.
+#include "forward/io/host_and_time.hpp"
 #include "forward/scenes/common/run_files.hpp"
 
 #include <nlohmann/json.hpp>
@@ -20,12 +21,9 @@ namespace spifit::scene {
 // Seconds between two heartbeats of a running summary.
 constexpr double kHeartbeatSeconds = 10.0;
 
-// "2026-11-26T01:02:03Z".
-std::string utc_iso(std::time_t t);
-// The time of such a text; false when it is not one.
-bool parse_utc_iso(const std::string& text, std::time_t* t);
-// gethostname(), "" when there is none.
-std::string host_name();
+using io::host_name;
+using io::parse_utc_iso;
+using io::utc_iso;
 
 class RunHeartbeat {
  public:
