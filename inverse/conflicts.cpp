@@ -35,7 +35,11 @@ void analyse_conflicts(const FitProblem& fp, const FitRunOptions& options, FitRe
     one.settings = fp.settings;
     FitRunOptions o = options;
     o.algorithm = "levenberg_marquardt";
-    if (o.progress) o.progress->set_phase(e->name() + " alone");
+    if (o.progress) {
+      o.progress->set_phase(e->name() + " alone");
+      // One experiment: its scene file's point and 2p neighbours, if it has FE runs.
+      o.progress->set_runs_per_iteration(e->scene_file().empty() ? 0 : 1 + 2L * one.parameters->num_free());
+    }
     const FitResult r = fit_with_ceres(one, o);
     FitResult::Alone a;
     a.experiment = e->name();

@@ -31,6 +31,7 @@ class MaterialPointExperiment : public Experiment {
     scale_ = c.scale;
     noise_given_ = c.noise_given;
     sqrt_w_ = c.sqrt_weights;
+    residual_weights_ = c.weights;
   }
   std::vector<double> sqrt_w_;
 };
@@ -199,7 +200,8 @@ CurveConditioning curve_conditioning(const std::vector<double>& ys, double noise
     if (*hi - *lo > 0) c.scale = *hi - *lo;
   }
   for (std::size_t i = 0; i < ys.size(); ++i) {
-    double w = std::sqrt(weight * (point_weights.empty() ? 1.0 : point_weights[i]));
+    c.weights.push_back(weight * (point_weights.empty() ? 1.0 : point_weights[i]));
+    double w = std::sqrt(c.weights.back());
     if (noise_relative > 0) w /= noise_relative * std::max(std::abs(ys[i]), 1e-3 * largest);
     c.sqrt_weights.push_back(w);
   }

@@ -41,6 +41,12 @@ class Experiment {
   const std::string& name() const { return name_; }
   const std::string& kind() const { return kind_; }
   double weight() const { return weight_; }
+  // What multiplies the square of residual i besides the noise: the experiment's weight times
+  // the point's (a weight column). A residual divided by its square root is (simulated -
+  // measured) / its noise, what fit_assessment.hpp compares with the stated noise.
+  double residual_weight(int i) const {
+    return i >= 0 && i < static_cast<int>(residual_weights_.size()) ? residual_weights_[static_cast<std::size_t>(i)] : weight_;
+  }
   double scale() const { return scale_; }  // the conditioning divisor (noise or range)
   bool noise_given() const { return noise_given_; }  // scale is a stated measurement noise
   virtual int num_residuals() const = 0;
@@ -72,6 +78,7 @@ class Experiment {
   std::string name_, kind_;
   double weight_ = 1.0, scale_ = 1.0;
   bool noise_given_ = false;
+  std::vector<double> residual_weights_;  // per residual; empty: weight_ for every one
 
  private:
   mutable std::atomic<long> evaluations_{0};
@@ -99,6 +106,7 @@ struct CurveConditioning {
   double scale = 1.0;
   bool noise_given = false;
   std::vector<double> sqrt_weights;
+  std::vector<double> weights;  // per point: weight x point weight (no noise in it)
 };
 CurveConditioning curve_conditioning(const std::vector<double>& ys, double noise, double noise_relative, double weight,
                                      const std::vector<double>& point_weights);

@@ -163,6 +163,7 @@ class CurveFeExperiment : public FeExperiment {
     scale_ = k.scale;
     noise_given_ = k.noise_given;
     sqrt_w_ = k.sqrt_weights;
+    residual_weights_ = k.weights;
   }
   int num_residuals() const override { return static_cast<int>(c_.xs.size()); }
   ExperimentCurve axes() const override { return {c_.x, c_.y, c_.x_unit, c_.y_unit, {}, {}, {}, {}, {}}; }

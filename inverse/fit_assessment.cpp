@@ -39,6 +39,11 @@ std::vector<std::string> unusable_reasons(const FitProblem& problem, const FitRe
   std::vector<std::string> out;
   char buf[512];
   if (!r.usable) out.push_back("the optimiser ended without a usable solution (" + r.termination + ")");
+  try {
+    material::validate_material_card(r.card);
+  } catch (const io::InputError& e) {
+    out.push_back("the fitted card is not valid: " + e.key() + " = " + e.value() + ": " + e.message());
+  }
   if (!std::isfinite(r.cost_final)) {
     out.push_back("the cost at the solution is not finite (" + io::format_number(r.cost_final) +
                   "): the model cannot be evaluated there, or the data hold values it cannot reach");
@@ -61,15 +66,14 @@ std::vector<std::string> unusable_reasons(const FitProblem& problem, const FitRe
   for (std::size_t i = 0; i < r.experiment_costs.size() && i < problem.experiments.size(); ++i) {
     const Experiment& e = *problem.experiments[i];
     const ExperimentCost& c = r.experiment_costs[i];
-    if (!e.noise_given() || c.points <= 0) continue;
-    // The experiment's weight multiplies every residual by sqrt(weight): the noise test needs it out.
-    const double rms = c.rms / std::sqrt(e.weight() > 0 ? e.weight() : 1.0);
-    const double limit = far_above_noise_rms(c.points);
+    if (!e.noise_given() || c.noise_points <= 0) continue;
+    const double rms = c.noise_rms;  // the weights taken out, over the points that count
+    const double limit = far_above_noise_rms(c.noise_points);
     if (!(rms <= limit)) {
       std::snprintf(buf, sizeof buf,
                     "experiment %s: its residuals are on average %s times its stated noise over %d point%s (random noise of that size "
                     "stays below %.2f times): the data, their units or their noise do not match the model",
-                    e.name().c_str(), ratio_text(rms).c_str(), c.points, c.points == 1 ? "" : "s", limit);
+                    e.name().c_str(), ratio_text(rms).c_str(), c.noise_points, c.noise_points == 1 ? "" : "s", limit);
       out.push_back(buf);
     }
   }

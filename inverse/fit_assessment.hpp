@@ -2,6 +2,7 @@
 // Whether a fit's result can be used as a material card (docs/design/identification.md, "When a
 // fit is usable"). It is not when
 //   - the optimiser ended without a usable solution, or the cost is not finite;
+//   - the fitted card is not valid;
 //   - a free parameter ended at one of its bounds (the bound, not the data, sets it);
 //   - a free parameter is not identifiable (the scaled Jacobian is rank-deficient along it), or
 //     the model failed at the solution so that nothing could be checked;

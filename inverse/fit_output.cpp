@@ -1,6 +1,7 @@
 #include "inverse/fit_output.hpp"
 
 #include "forward/io/csv_writer.hpp"
+#include "forward/io/host_and_time.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -94,6 +95,10 @@ std::vector<FitRecord::Experiment> record_experiments(const FitProblem& fp, cons
     x.rms = c.rms;
     x.scale = e.scale();
     x.noise_given = e.noise_given();
+    if (c.noise_points > 0) {
+      x.noise_rms = c.noise_rms;
+      x.noise_points = c.noise_points;
+    }
     x.weight = e.weight();
     x.x = axes.x_name;
     x.y = axes.y_name;
@@ -153,8 +158,8 @@ FitRecord fit_record(const FitProblem& fp, const FitResult& r) {
     for (int b = 0; b < corr.cols(); ++b) rec.correlation.matrix.back().push_back(corr(a, b));
   }
   rec.uncertainty = record_uncertainty(r.uncertainty);
-  rec.warnings = fp.notes;
-  rec.warnings.insert(rec.warnings.end(), r.uncertainty.warnings.begin(), r.uncertainty.warnings.end());
+  rec.notes = fp.notes;
+  rec.warnings = r.uncertainty.warnings;
   rec.conflicts = r.conflicts;
   rec.per_experiment = record_per_experiment(ps, r);
   if (r.multistart.starts > 1) rec.multistart = record_multistart(ps, r.multistart);
@@ -171,11 +176,7 @@ std::string fit_date() {
     const long long s = std::strtoll(epoch, &end, 10);
     if (end != epoch && *end == '\0' && s >= 0) t = static_cast<std::time_t>(s);
   }
-  std::tm utc{};
-  gmtime_r(&t, &utc);
-  char buf[16];
-  std::strftime(buf, sizeof buf, "%Y-%m-%d", &utc);
-  return buf;
+  return io::utc_iso(t).substr(0, 10);  // YYYY-MM-DD
 }
 
 material::MaterialCard fitted_card(const FitProblem& fp, const FitResult& r, const std::string& date) {

@@ -11,6 +11,11 @@ void FitProgress::configure(long runs_per_iteration, int width) {
   width_ = std::max(1, width);
 }
 
+void FitProgress::set_runs_per_iteration(long runs) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  per_iteration_ = runs;
+}
+
 void FitProgress::set_phase(const std::string& phase) {
   std::lock_guard<std::mutex> lock(mutex_);
   if (phase == phase_) return;
@@ -43,29 +48,23 @@ FitProgressEvent FitProgress::event(FitProgressEvent::Kind kind) const {
   return e;
 }
 
+// The sink is called with the mutex held, so that the events reach it in the order they
+// happened (a run's line never after the end of its iteration); it must not call back.
 void FitProgress::run_finished(double seconds) {
-  FitProgressEvent e;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    ++runs_;
-    ++total_;
-    run_seconds_.push_back(seconds);
-    e = event(FitProgressEvent::Kind::run);
-  }
-  if (sink_) sink_(e);
+  std::lock_guard<std::mutex> lock(mutex_);
+  ++runs_;
+  ++total_;
+  run_seconds_.push_back(seconds);
+  if (sink_) sink_(event(FitProgressEvent::Kind::run));
 }
 
 void FitProgress::iteration_finished(int iteration, double cost) {
-  FitProgressEvent e;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    iteration_ = iteration;
-    last_cost_ = cost;
-    e = event(FitProgressEvent::Kind::iteration);
-    iteration_ = iteration + 1;  // the runs from now on belong to the next one
-    runs_ = 0;
-  }
-  if (sink_) sink_(e);
+  std::lock_guard<std::mutex> lock(mutex_);
+  iteration_ = iteration;
+  last_cost_ = cost;
+  if (sink_) sink_(event(FitProgressEvent::Kind::iteration));
+  iteration_ = iteration + 1;  // the runs from now on belong to the next one
+  runs_ = 0;
 }
 
 FitProgressEvent FitProgress::snapshot() const {

@@ -35,6 +35,7 @@ class FitProgress {
   // What an iteration asks: FE runs with a Jacobian (1 + 2p per FE scene file) and how many run
   // side by side (threads, or workers of an MPI job).
   void configure(long runs_per_iteration, int width);
+  void set_runs_per_iteration(long runs);
   void set_phase(const std::string& phase);
   // A forward run ended after `seconds` (thread-safe).
   void run_finished(double seconds);

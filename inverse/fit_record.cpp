@@ -79,6 +79,10 @@ json experiment_json(const FitRecord::Experiment& e, const std::vector<FitRecord
           {"scale", number_or_null(e.scale)}, {"weight", number_or_null(e.weight)}, {"x", e.x}, {"y", e.y}, {"x_unit", e.x_unit},
           {"y_unit", e.y_unit}, {"data_file", e.data_file}};
   if (e.noise_given) ej["noise_given"] = *e.noise_given;
+  if (e.noise_points) {
+    ej["noise_rms"] = number_or_null(e.noise_rms);
+    ej["noise_points"] = *e.noise_points;
+  }
   if (!e.x_words.empty()) ej["x_words"] = e.x_words;
   if (!e.y_words.empty()) ej["y_words"] = e.y_words;
   if (!e.information_share.empty()) {
@@ -393,6 +397,10 @@ void read_experiments(const Reader& r, const json& j, FitRecord& rec) {
     const double w = r.number(ej, "weight", at);
     e.weight = std::isfinite(w) ? w : 1.0;
     if (const json* n = member(ej, "noise_given"); n && n->is_boolean()) e.noise_given = n->get<bool>();
+    if (member(ej, "noise_points")) {
+      e.noise_rms = r.number(ej, "noise_rms", at);
+      e.noise_points = static_cast<int>(r.whole(ej, "noise_points", at).value_or(0));
+    }
     if (const json* shares = member(ej, "information_share")) {
       if (!shares->is_object()) bad(r.file, at + "information_share", *shares, "expected an object of parameter names and numbers");
       for (const auto& q : rec.parameters) e.information_share.push_back(r.number(*shares, q.name, at + "information_share."));
@@ -442,6 +450,7 @@ json to_json(const FitRecord& rec) {
   j["correlation"] = {{"names", rec.correlation.names}, {"matrix", matrix}};
   j["uncertainty"] = uncertainty_json(rec.uncertainty);
   j["warnings"] = rec.warnings;
+  if (!rec.notes.empty()) j["notes"] = rec.notes;
   j["conflicts"] = rec.conflicts;
   j["per_experiment"] = per_experiment_json(rec.per_experiment);
   if (rec.multistart.starts > 1) j["multistart"] = multistart_json(rec.multistart);
@@ -469,6 +478,7 @@ FitRecord fit_record_from_json(const json& j, const std::string& file) {
     read_uncertainty(r, j, rec);
     read_texts(r, j, "not_usable_because", rec.not_usable);
     read_texts(r, j, "warnings", rec.warnings);
+    read_texts(r, j, "notes", rec.notes);
     read_texts(r, j, "conflicts", rec.conflicts);
     read_per_experiment(r, j, rec);
     read_multistart(j, rec);

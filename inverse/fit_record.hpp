@@ -77,6 +77,10 @@ struct FitRecord {
     double cost = kNaN, rms = kNaN;
     double scale = kNaN;              // divisor of the residuals (noise, or range / |value|)
     std::optional<bool> noise_given;  // whether scale is a stated noise
+    // With a stated noise: the rms of (simulated - measured) / noise without the weights, over
+    // the points of nonzero weight, and how many (absent from a fit.json of an older spifit).
+    double noise_rms = kNaN;
+    std::optional<int> noise_points;
     double weight = 1.0;
     std::string x, y, x_unit, y_unit;
     std::string x_words, y_words;  // what the axes show ("shear strain γ"); "": from x and y
@@ -105,6 +109,10 @@ struct FitRecord {
   Correlation correlation;
   UncertaintySummary uncertainty;
   std::vector<std::string> warnings, conflicts;
+  // Remarks from reading the fit file (a renormalised Hill card, measured values 10-100 times off,
+  // a scene's plausibility warnings): key "notes" (a fit.json of an older spifit has them among
+  // its warnings).
+  std::vector<std::string> notes;
   std::vector<Alone> per_experiment;
   MultiStart multistart;
   std::vector<Experiment> experiments;

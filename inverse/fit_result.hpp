@@ -6,8 +6,8 @@
 #include "inverse/fit_progress.hpp"
 #include "inverse/uncertainty.hpp"
 
+#include <limits>
 #include <memory>
-
 #include <string>
 #include <vector>
 
@@ -18,6 +18,10 @@ struct ExperimentCost {
   int points = 0;
   double cost = 0.0;  // 1/2 sum r^2 of this experiment at the solution
   double rms = 0.0;   // root-mean-square conditioned residual
+  // With a stated noise: the rms of (simulated - measured) / noise over the points of nonzero
+  // weight (the weights taken out), and how many those are; NaN and 0 without a stated noise.
+  double noise_rms = std::numeric_limits<double>::quiet_NaN();
+  int noise_points = 0;
   // Per free parameter: this experiment's share of its Fisher information at the solution
   // (information_shares in uncertainty.hpp; NaN where no experiment responds to it).
   std::vector<double> information_share;

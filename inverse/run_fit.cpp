@@ -11,6 +11,14 @@
 #include <set>
 
 namespace spifit::inverse {
+
+long fe_runs_per_iteration(const std::vector<std::shared_ptr<Experiment>>& experiments, int free_parameters, bool derivative_free) {
+  std::set<std::string> files;
+  for (const auto& e : experiments)
+    if (!e->scene_file().empty()) files.insert(e->scene_file());
+  return static_cast<long>(files.size()) * (derivative_free ? 1 : 1 + 2L * free_parameters);
+}
+
 namespace {
 
 // The forward runs of the fit: per experiment and, with FE experiments, per scene file.
@@ -34,33 +42,32 @@ void record_runs(const FitProblem& problem, FitResult* r) {
   }
 }
 
-// What an iteration asks of the FE scenes: the point and 2p central-difference neighbours per
-// scene file, run `width` at a time (threads, or an MPI job's workers).
-void configure_progress(const FitProblem& problem, const FitRunOptions& options) {
+// What an iteration asks of the FE scenes: the point and, for Ceres, its 2p central-difference
+// neighbours per scene file (NLopt's iterations are single evaluations), run `width` at a time
+// (threads, or an MPI job's workers).
+void configure_progress(const FitProblem& problem, const FitRunOptions& options, const std::string& algorithm) {
   if (!options.progress) return;
-  std::set<std::string> files;
   int width = std::max(1, options.threads);
-  for (const auto& e : problem.experiments) {
-    if (!e->scene_file().empty()) files.insert(e->scene_file());
-    width = std::max(width, e->parallel_evaluations());
-  }
-  const long p = problem.parameters->num_free();
-  options.progress->configure(static_cast<long>(files.size()) * (1 + 2 * p), width);
+  for (const auto& e : problem.experiments) width = std::max(width, e->parallel_evaluations());
+  options.progress->configure(fe_runs_per_iteration(problem.experiments, problem.parameters->num_free(), is_nlopt_algorithm(algorithm)), width);
   if (problem.scene_runs) problem.scene_runs->on_run([progress = options.progress](double s) { progress->run_finished(s); });
 }
 
 }  // namespace
 
 FitResult run_fit(const FitProblem& problem, const FitRunOptions& options) {
-  configure_progress(problem, options);
   const std::string alg = options.algorithm.empty() ? problem.settings.algorithm : options.algorithm;
+  configure_progress(problem, options, alg);
   const int starts = options.multistart > 0 ? options.multistart : problem.multistart;
   FitResult r = starts > 1 ? run_multistart(problem, options, starts)
                            : (is_nlopt_algorithm(alg) ? fit_with_nlopt(problem, options) : fit_with_ceres(problem, options));
   if (problem.per_experiment && r.usable) {
     const auto t0 = std::chrono::steady_clock::now();
     analyse_conflicts(problem, options, &r);
-    if (options.progress) options.progress->set_phase("");
+    if (options.progress) {
+      options.progress->set_phase("");
+      options.progress->set_runs_per_iteration(fe_runs_per_iteration(problem.experiments, problem.parameters->num_free(), false));
+    }
     r.wall_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
   record_runs(problem, &r);

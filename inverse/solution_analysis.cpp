@@ -33,12 +33,6 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
   out.values.clear();
   for (int k = 0; k < p; ++k) out.values.push_back(ps.to_physical(k, x[k]));
   out.card = ps.card_for(x);
-  try {
-    material::validate_material_card(out.card);
-  } catch (const io::InputError& e) {
-    out.usable = false;
-    out.uncertainty.warnings.push_back(std::string("the fitted card is not valid: ") + e.key() + " = " + e.value() + ": " + e.message());
-  }
   std::atomic<long> runs{0};
   ceres::Problem::Options popts;
   popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;
@@ -82,9 +76,21 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
     int offset = 0;
     for (std::size_t n = 0; n < fp.experiments.size(); ++n) {
       const auto& e = fp.experiments[n];
-      ExperimentCost ec{e->name(), e->kind(), e->num_residuals(), 0.0, 0.0, {}};
-      for (int i = 0; i < ec.points; ++i) ec.cost += 0.5 * r(offset + i) * r(offset + i);
+      ExperimentCost ec;
+      ec.name = e->name();
+      ec.kind = e->kind();
+      ec.points = e->num_residuals();
+      double noise_ss = 0.0;
+      for (int i = 0; i < ec.points; ++i) {
+        const double ri = r(offset + i), w = e->residual_weight(i);
+        ec.cost += 0.5 * ri * ri;
+        if (e->noise_given() && w > 0.0) {
+          noise_ss += ri * ri / w;
+          ++ec.noise_points;
+        }
+      }
       ec.rms = std::sqrt(2.0 * ec.cost / ec.points);
+      if (ec.noise_points > 0) ec.noise_rms = std::sqrt(noise_ss / ec.noise_points);
       for (int k = 0; k < p; ++k) ec.information_share.push_back(shares(static_cast<Eigen::Index>(n), k));
       offset += ec.points;
       out.experiment_costs.push_back(ec);

@@ -50,9 +50,7 @@ ReportSummary render_fit_report(const fs::path& dir, const ReportOptions& option
   c.record = load_record(dir);
   c.data = read_fit_data(dir, c.record, &summary.warnings);
   c.verdict = judge_fit(c.record, c.data);
-  for (const auto& f : c.verdict.findings) {
-    if (f.level == 2) summary.findings.push_back(f.text);
-  }
+  for (const auto& f : c.verdict.findings) (f.level == 2 ? summary.findings : summary.notes).push_back(f.text);
   render_plots(dir, options, c, summary);
   c.plots_written = !summary.plots.empty();
   std::error_code ec;

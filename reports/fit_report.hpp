@@ -21,6 +21,7 @@ struct ReportSummary {
   // own warnings plus those found here (experiments in conflict with the model, parameters at
   // a bound, near-perfect correlations, a fit that did not converge).
   std::vector<std::string> findings;
+  std::vector<std::string> notes;  // the report's yellow box (fit-file remarks, mild findings)
   // Problems of RENDERING (gnuplot missing or failing, an unreadable experiments/*.csv): the
   // report is still written, with fewer plots. Meant for stderr.
   std::vector<std::string> warnings;

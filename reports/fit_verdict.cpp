@@ -16,9 +16,15 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// The rms of (simulated - measured) / divisor: fit.json's rms without the experiment's weight,
-// which multiplies every residual by its square root.
-double unweighted_rms(const FitRecord::Experiment& e) { return e.rms / std::sqrt(e.weight > 0 ? e.weight : 1.0); }
+// The rms of (simulated - measured) / divisor: fit.json's noise_rms where it has one (the weights
+// taken out point by point, over the points of nonzero weight), else its rms without the
+// experiment's weight, which multiplies every residual by its square root.
+double unweighted_rms(const FitRecord::Experiment& e) {
+  if (e.noise_points && std::isfinite(e.noise_rms)) return e.noise_rms;
+  return e.rms / std::sqrt(e.weight > 0 ? e.weight : 1.0);
+}
+// The points the rms is over.
+int rms_points(const FitRecord::Experiment& e) { return e.noise_points ? *e.noise_points : e.points; }
 
 // Which divisor conditioned the residuals: the stated noise, or (none given) the range of the
 // measured curve / the magnitude of the measured value. fit.json says so (noise_given); older
@@ -69,7 +75,7 @@ void judge_against_noise(const FitRecord::Experiment& e, ExperimentVerdict& v) {
   const bool noise = v.conditioning == Conditioning::noise;
   const char* u = noise ? "σ" : "× scale";
   char buf[320];
-  if (noise && r > inverse::far_above_noise_rms(e.points)) {
+  if (noise && r > inverse::far_above_noise_rms(rms_points(e))) {
     v.level = 2;
     v.far_above_noise = true;
     std::snprintf(buf, sizeof buf, "FAR ABOVE THE NOISE: rms %.3g σ", r);
@@ -128,8 +134,8 @@ void experiment_level_finding(const FitRecord::Experiment& e, const ExperimentVe
       std::snprintf(buf, sizeof buf,
                     "Experiment %s: its residuals are %.3g times its stated noise over %d point%s, far more than random noise of that "
                     "size gives (%.2f): its data, their units or their noise do not match the model, so the fit is not usable.",
-                    e.name.c_str(), unweighted_rms(e), e.points, e.points == 1 ? "" : "s",
-                    inverse::far_above_noise_rms(e.points));
+                    e.name.c_str(), unweighted_rms(e), rms_points(e), rms_points(e) == 1 ? "" : "s",
+                    inverse::far_above_noise_rms(rms_points(e)));
     } else if (is_scalar(e)) {
       std::snprintf(buf, sizeof buf,
                     "Experiment %s disagrees with the model: the fitted %s is %.1f %s away from the measured value. The data "
@@ -297,6 +303,7 @@ FitVerdict judge_fit(const FitRecord& rec, const std::vector<ExperimentData>& da
     out.findings.push_back({2, "The optimiser stopped without converging (" + rec.termination + "): the values may not be the best fit."});
   }
   for (const auto& w : rec.warnings) out.findings.push_back({2, w});
+  for (const auto& n : rec.notes) out.findings.push_back({1, n});
   for (const auto& c : rec.conflicts) out.findings.push_back({2, "Conflict: " + c});
   judge_experiments(rec, data, out);
   judge_parameters(rec, out);

@@ -179,6 +179,8 @@ void validate_material_card(const MaterialCard& card) {
 
 std::vector<std::string> material_card_warnings(const MaterialCard& card) {
   std::vector<std::string> out;
+  if (card.fitted && !card.fitted->usable)
+    out.push_back("it was written by a fit whose result is NOT USABLE (" + card.fitted->fit_file + "; its fit.json says why)");
   const Hill48 h = card.hill();
   const double deg[] = {0.0, 45.0, 90.0};
   for (double d : deg) {

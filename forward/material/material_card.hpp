@@ -42,8 +42,9 @@ MaterialCard read_material_card(const io::TomlTable& root);
 // kinematic constants >= 0); throws io::InputError with the card's file and the key.
 void validate_material_card(const MaterialCard& card);
 
-// What is legal but beyond any real sheet, one sentence each: predicted r-values outside 0.1 to 10
-// (measured sheets lie between about 0.2 and 6), an initial yield stress outside 1 to 5000 MPa.
+// What is legal but odd, one sentence each: a card written by a fit that was not usable; predicted
+// r-values outside 0.1 to 10 (measured sheets lie between about 0.2 and 6), an initial yield
+// stress outside 1 to 5000 MPa.
 std::vector<std::string> material_card_warnings(const MaterialCard& card);
 
 // The card as TOML in the schema read by load_material_card (round-trips exactly).

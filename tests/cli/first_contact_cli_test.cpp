@@ -50,10 +50,15 @@ TEST(FirstContactCli, AFitThatIsNotUsableSaysSoExitsOneAndNamesItsCardSo) {
   EXPECT_FALSE(has(r.err, "InitGoogleLogging")) << r.err;
   EXPECT_FALSE(fs::exists(out / "card.toml"));
   EXPECT_TRUE(has(slurp(out / "card_NOT_USABLE.toml"), "usable = false"));
-  for (const char* deck : {"card_abaqus_NOT_USABLE.inp", "card_lsdyna_NOT_USABLE.k", "card_calculix_NOT_USABLE.inp"}) {
+  for (const auto& [deck, plain] : {std::pair{"card_abaqus_NOT_USABLE.inp", "card_abaqus.inp"}, std::pair{"card_lsdyna_NOT_USABLE.k", "card_lsdyna.k"},
+                                     std::pair{"card_calculix_NOT_USABLE.inp", "card_calculix.inp"}}) {
     EXPECT_TRUE(has(slurp(out / "exports" / deck), "NOT USABLE")) << deck;
-    EXPECT_FALSE(fs::exists(out / "exports" / (std::string(deck).substr(0, std::string(deck).find("_NOT_USABLE")) + ".inp"))) << deck;
+    EXPECT_FALSE(fs::exists(out / "exports" / plain)) << plain;
   }
+  // Such a card still loads, and says what it is.
+  const auto show = run_spifit("material show " + (out / "card_NOT_USABLE.toml").string());
+  EXPECT_EQ(show.code, 0) << show.err;
+  EXPECT_TRUE(has(show.out, "warning        it was written by a fit whose result is NOT USABLE")) << show.out;
   const auto fit = nlohmann::json::parse(slurp(out / "fit.json"));
   EXPECT_EQ(fit["usable"], false);
   ASSERT_EQ(fit["not_usable_because"].size(), 1u);

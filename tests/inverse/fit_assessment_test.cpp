@@ -50,6 +50,13 @@ std::string tensile_fit(const std::string& data, const std::string& parameters, 
 const std::string kKn = "[parameters.\"swift.K\"]\ninitial = 150.0\nlower = 50.0\nupper = 500.0\n"
                         "[parameters.\"swift.n\"]\ninitial = 0.25\nlower = 0.02\nupper = 0.7\n";
 
+std::string slurp_text(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 bool mentions(const std::vector<std::string>& reasons, const std::string& what) {
   for (const auto& r : reasons)
     if (r.find(what) != std::string::npos) return true;
@@ -69,6 +76,27 @@ TEST(FitAssessment, ResidualsFarAboveTheStatedNoiseMakeItUnusable) {
   ASSERT_EQ(r.not_usable.size(), 1u);
   EXPECT_NE(r.not_usable[0].find("experiment t: its residuals are on average"), std::string::npos) << r.not_usable[0];
   EXPECT_NE(r.not_usable[0].find("stays below 2.00 times"), std::string::npos) << r.not_usable[0];
+}
+
+TEST(FitAssessment, PointWeightsAreTakenOutOfTheNoiseTest) {
+  // The bundled curve with a weight column of 9 on every point: the residuals carry a factor 3,
+  // the noise is still the stated 0.5 MPa, and the fit is usable.
+  std::ifstream in(src("experiments/aa3003o/data/tensile_00_c2_synthetic.csv"));
+  std::stringstream text;
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') text << line << "\n";
+    else if (line.rfind("strain", 0) == 0) text << line << ",w [-]\n";
+    else text << line << ",9\n";
+  }
+  const auto data = test::write_temp_file("weighted.csv", text.str());
+  std::string fit = slurp_text(tensile_fit(data.string(), kKn, 0.5));
+  fit += "weight_column = \"w\"\n";
+  const FitResult r = run_fit(read_fit_file(test::write_temp_file("weighted_fit.toml", fit).string()));
+  EXPECT_TRUE(r.usable) << (r.not_usable.empty() ? r.termination : r.not_usable.front());
+  ASSERT_EQ(r.experiment_costs.size(), 1u);
+  EXPECT_NEAR(r.experiment_costs[0].rms, 3.0 * r.experiment_costs[0].noise_rms, 1e-9);
+  EXPECT_EQ(r.experiment_costs[0].noise_points, 50);
+  EXPECT_LT(r.experiment_costs[0].noise_rms, 1.2);
 }
 
 TEST(FitAssessment, AParameterAtItsBoundMakesItUnusable) {
