@@ -37,6 +37,12 @@ std::optional<std::string> FitProgressLines::update(const inverse::FitProgressEv
   const bool fe = e.runs_total > 0;
   if (!fe && e.elapsed < quiet_for_) return std::nullopt;
   if (e.kind == Kind::iteration) {
+    // Without FE runs an iteration takes milliseconds (an NLopt iteration is one evaluation):
+    // a line at most every half second on a terminal, every log_every seconds in a log.
+    if (!fe) {
+      if (e.elapsed - last_iteration_line_ < (terminal_ ? 0.5 : log_every_)) return std::nullopt;
+      last_iteration_line_ = e.elapsed;
+    }
     const std::string text = "spifit: " + iteration_line(e);
     open_line_ = false;
     last_run_line_ = -1e300;

@@ -4,7 +4,8 @@
 // runs go on, where it is among them with the time left of it from the measured run times. On
 // a terminal the run line is rewritten in place (at most every half second) and each iteration
 // line stays; in a log a run line at most every `log_every` seconds. A fit of material points
-// only prints once it has taken `quiet_for` seconds (most end before).
+// only prints once it has taken `quiet_for` seconds (most end before), and then an iteration line
+// at most every half second (terminal) or `log_every` seconds (log).
 #include "inverse/fit_progress.hpp"
 
 #include <nlohmann/json.hpp>
@@ -32,7 +33,7 @@ class FitProgressLines {
  private:
   bool terminal_;
   double log_every_, quiet_for_;
-  double last_run_line_ = -1e300;
+  double last_run_line_ = -1e300, last_iteration_line_ = -1e300;
   bool open_line_ = false;  // a run line on the terminal, not yet ended
 };
 

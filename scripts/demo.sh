@@ -15,8 +15,10 @@ echo "   -> $out/fit_classic/fit.json, card.toml, experiments/*.csv"
 echo
 echo "== Do the r45 and shear tests agree on N? (experiments/aa3003o/fit_n_conflict.toml) =="
 echo "   They do not: the joint fit is NOT USABLE and exits 1, which is the answer this fit exists to give."
-if "$spifit" fit experiments/aa3003o/fit_n_conflict.toml --out "$out/fit_n_conflict" --force; then
-  echo "spifit: fit_n_conflict was expected to end NOT USABLE (exit 1)" >&2
+code=0
+"$spifit" fit experiments/aa3003o/fit_n_conflict.toml --out "$out/fit_n_conflict" --force || code=$?
+if [ "$code" -ne 1 ]; then
+  echo "spifit: fit_n_conflict was expected to end NOT USABLE (exit 1), it exited $code" >&2
   exit 1
 fi
 echo

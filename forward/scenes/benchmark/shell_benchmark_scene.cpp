@@ -191,7 +191,7 @@ ShellBenchmarkResult run_shell_benchmark_scene(const ShellBenchmarkScene& scene,
     if (control.progress) {
       char line[120];
       std::snprintf(line, sizeof line, "increment %d: load factor %.4f, %d iterations", ir.index, ir.lambda, ir.iterations);
-      control.progress({ProgressEvent::Kind::increment, line, ir.lambda});
+      control.progress({ProgressEvent::Kind::increment, line, ir.lambda, ir.lambda});
     }
     return true;
   });

@@ -25,7 +25,7 @@ void ConeContourLog::at_mark(const Mark& m, const IncrementView& v) {
   char buf[240];
   std::snprintf(buf, sizeof buf, "contour %d/%zu (stage %d, contour %d) done, wall %.1f s: central-third mean (Fr, Ftheta, Fz) = (%.1f, %.1f, %.1f) N",
                 m.index + 1, track_.contours().size(), span.stage, span.contour, v.wall_seconds, mean.x(), mean.y(), mean.z());
-  v.progress({ProgressEvent::Kind::mark, buf, v.travel / track_.path().path.length()});
+  v.progress({ProgressEvent::Kind::mark, buf, v.travel / track_.path().path.length(), v.lambda});
 }
 
 void ConeContourLog::write(WriteReason reason) {
