@@ -68,6 +68,25 @@ TEST(FirstContactCli, AFitThatIsNotUsableSaysSoExitsOneAndNamesItsCardSo) {
   fs::remove_all(out);
 }
 
+// A cost that overflows (r45 said to be known to 1e-300): Ceres gives up and logs it through glog,
+// whose "Logging before InitGoogleLogging()" line and log record never reach the user; the fit
+// exits 1, not usable, its card named so.
+TEST(FirstContactCli, AnOverflowingCostIsNotUsableAndGlogStaysQuiet) {
+  const fs::path fit = spifit::test::write_temp_file(
+      "overflow.toml", "[fit]\ncard = \"" + src("materials/aa3003o_c3c4.toml") +
+                           "\"\n[parameters.\"hill.N\"]\ninitial = 3.5\nlower = 1.0\nupper = 8.0\n[[experiment]]\nname = \"r45\"\nscene = \"" +
+                           src("experiments/aa3003o/scenes/tensile_45.toml") + "\"\nobservable = \"r_value\"\nvalue = 0.73\nnoise = 1e-300\n");
+  const fs::path out = fresh_temp_path("overflow_out");
+  const auto r = run_spifit("fit " + fit.string() + " --out " + out.string());
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_FALSE(has(r.err, "InitGoogleLogging")) << r.err;
+  EXPECT_FALSE(has(r.err, "trust_region_minimizer")) << r.err;
+  EXPECT_TRUE(has(r.out, "the cost at the solution is not finite (inf)")) << r.out;
+  EXPECT_FALSE(fs::exists(out / "card.toml"));
+  EXPECT_TRUE(fs::exists(out / "card_NOT_USABLE.toml"));
+  fs::remove_all(out);
+}
+
 TEST(FirstContactCli, AStressHeaderInGpaIsAnInputErrorBeforeAnyOutput) {
   std::string text = slurp(src("experiments/aa3003o/data/tensile_00_c2_synthetic.csv"));
   text.replace(text.find("stress [MPa]"), 12, "stress [GPa]");
