@@ -146,17 +146,19 @@ std::string gnuplot_script(const PlotSpec& spec, PlotFormat format, const std::s
   g << "set grid lc rgb '#dddddd'\n";
   if (spec.key) g << (spec.key_outside ? "set key outside right top vertical box opaque\n" : "set key top left box opaque\n");
   else g << "unset key\n";
-  if (spec.integer_x) {
-    double xmax = 0.0;
-    for (const auto& s : spec.series) {
-      for (double x : s.x) {
-        if (std::isfinite(x)) xmax = std::max(xmax, x);
-      }
-    }
-    // Whole-number tics only: every one up to 20, else a whole step giving at most about 10.
-    const long step = xmax <= 20 ? 1 : static_cast<long>(std::ceil(xmax / 10.0));
-    g << "set xtics " << step << "\nset format x '%.0f'\n";
-  }
+  // Whole-number tics on an axis of counts: every one up to 20, else a whole step giving at most
+  // about 10.
+  auto integer_tics = [&](bool x_axis) {
+    double largest = 0.0;
+    for (const auto& s : spec.series)
+      for (double v : x_axis ? s.x : s.y)
+        if (std::isfinite(v)) largest = std::max(largest, v);
+    const long step = largest <= 20 ? 1 : static_cast<long>(std::ceil(largest / 10.0));
+    const char axis = x_axis ? 'x' : 'y';
+    g << "set " << axis << "tics " << step << "\nset format " << axis << " '%.0f'\n";
+  };
+  if (spec.integer_x) integer_tics(true);
+  if (spec.integer_y) integer_tics(false);
   g << "set border lc rgb '#444444'\n";
   if (spec.log_y) g << "set logscale y\nset format y '%.0e'\n";
   if (spec.log_x) g << "set logscale x\nset format x '%.0e'\n";

@@ -44,6 +44,7 @@ struct PlotSpec {
   bool key = true;                       // legend (top left)
   bool key_outside = true;               // the legend right of the plot, off the data (false: inside, top left)
   bool integer_x = false;                // x tics at integers only (iterations)
+  bool integer_y = false;                // y tics at integers only (Newton iterations, steps)
   std::vector<Series> series;
   std::vector<HLine> hlines;             // horizontal reference lines
   std::vector<std::string> categories;   // x tic labels at x = 0, 1, ... (bar plots)

@@ -153,6 +153,7 @@ PlotSpec iterations_plot(const RunContent& c) {
   PlotSpec p = titled("run_iterations", dynamic ? "Time steps per output interval" : "Newton iterations per increment", "tool travel [mm]",
                       dynamic ? "steps" : "iterations");
   p.key = false;
+  p.integer_y = true;
   p.series.push_back({"iterations", travel(c), c.force.column("iterations"), Series::Style::points, ""});
   return p;
 }

@@ -27,6 +27,19 @@ struct CliResult {
   std::string out, err;
 };
 
+// A bundled scene of experiments/aa3003o/scenes/ written to a temporary file `name` with its
+// card's relative path made absolute and the first `from` replaced by `to` (a failure if absent).
+inline std::filesystem::path bundled_scene_with(const std::string& scene, const std::string& name, const std::string& from, const std::string& to) {
+  const std::string root = std::string(SPIFIT_SOURCE_DIR) + "/";
+  std::string text = slurp(root + "experiments/aa3003o/scenes/" + scene);
+  const std::string rel = "../../../materials/";
+  if (const auto card = text.find(rel); card != std::string::npos) text.replace(card, rel.size(), root + "materials/");
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return write_temp_file(name, text);
+}
+
 inline CliResult run_spifit(const std::string& args) {
   const std::filesystem::path tmp = std::filesystem::temp_directory_path() / ("spifit_cli_err_" + std::to_string(::getpid()));
   const std::string cmd = std::string(SPIFIT_EXE) + " " + args + " 2>" + tmp.string();

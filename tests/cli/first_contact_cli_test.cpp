@@ -28,16 +28,7 @@ std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) 
 
 bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-// A bundled scene with `from` replaced by `to` and its card by the card's absolute path.
-fs::path scene_with(const std::string& scene, const std::string& name, const std::string& from, const std::string& to) {
-  std::string text = slurp(src("experiments/aa3003o/scenes/" + scene));
-  const auto card = text.find("../../../materials/");
-  text.replace(card, std::string("../../../materials/").size(), src("materials/"));
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return spifit::test::write_temp_file(name, text);
-}
+using spifit::test::bundled_scene_with;
 
 TEST(FirstContactCli, AFitThatIsNotUsableSaysSoExitsOneAndNamesItsCardSo) {
   const fs::path out = fresh_temp_path("conflict");
@@ -144,7 +135,7 @@ TEST(FirstContactCli, AbsurdSheetsToolsPenaltiesAndCardsAreNamedBeforeTheRun) {
       {"line_half.toml", "radius = 5.0", "radius = 1000.0", "tool.radius = 1000: the tool (diameter 2000 mm) is larger than the sheet it forms (182 mm"},
   };
   for (const Case& c : cases) {
-    const fs::path scene = scene_with(c.scene, "absurd.toml", c.from, c.to);
+    const fs::path scene = bundled_scene_with(c.scene, "absurd.toml", c.from, c.to);
     const auto r = run_spifit("run " + scene.string() + " --out " + fresh_temp_path("absurd_out").string());
     EXPECT_EQ(r.code, 2) << c.to;
     EXPECT_TRUE(has(r.err, c.expect)) << r.err;
@@ -157,7 +148,7 @@ TEST(FirstContactCli, AbsurdSheetsToolsPenaltiesAndCardsAreNamedBeforeTheRun) {
   EXPECT_EQ(m.code, 2);
   EXPECT_TRUE(has(m.err, "hill.F = 1e+308: the Hill coefficients differ by more than a factor of a million")) << m.err;
   // Legal but odd: said before the run, which goes on.
-  const fs::path slow = scene_with("indent.toml", "slow.toml", "feed = 2.0", "feed = 1e-12");
+  const fs::path slow = bundled_scene_with("indent.toml", "slow.toml", "feed = 2.0", "feed = 1e-12");
   const auto r = run_spifit("run " + slow.string() + " --out " + fresh_temp_path("slow_out").string());
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(has(r.err, "spifit: warning: " + slow.string() + ": tool.feed = 1e-12 mm/s is beyond any SPIF feed")) << r.err;
@@ -200,10 +191,7 @@ TEST(FirstContactCli, AnOutputDirectoryWithoutPermissionIsAnInputError) {
 }
 
 TEST(FirstContactCli, AHugeCountSaysItIsTooLarge) {
-  std::string text = slurp(src("experiments/aa3003o/scenes/tensile_00.toml"));
-  text.replace(text.find("increments = 200"), 16, "increments = 1e12");
-  text.replace(text.find("../../../materials/"), std::string("../../../materials/").size(), src("materials/"));
-  const fs::path scene = spifit::test::write_temp_file("huge.toml", text);
+  const fs::path scene = bundled_scene_with("tensile_00.toml", "huge.toml", "increments = 200", "increments = 1e12");
   const auto r = run_spifit("run " + scene.string() + " --out " + fresh_temp_path("huge_out").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_TRUE(has(r.err, "scene.increments = 1000000000000: too large for a count")) << r.err;

@@ -20,13 +20,7 @@ std::string src(const std::string& rel) { return std::string(SPIFIT_SOURCE_DIR) 
 
 // The §7.1 indent scene with `from` replaced by `to` (the card by its absolute path).
 fs::path indent_with(const std::string& name, const std::string& from, const std::string& to) {
-  std::string text = spifit::test::slurp(src("experiments/aa3003o/scenes/indent.toml"));
-  const auto card = text.find("../../../materials/");
-  text.replace(card, std::string("../../../materials/").size(), src("materials/"));
-  const auto at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return spifit::test::write_temp_file(name, text);
+  return spifit::test::bundled_scene_with("indent.toml", name, from, to);
 }
 
 int lines(const std::string& s) { return static_cast<int>(std::count(s.begin(), s.end(), '\n')); }

@@ -40,6 +40,13 @@ TEST(RunReport, AnIndentRunGetsItsSummaryAndPlots) {
   EXPECT_NE(md.find("| increments / Newton iterations / cut-backs | 40 / "), std::string::npos) << md;
   EXPECT_NE(md.find("| status | ok |"), std::string::npos) << md;
   EXPECT_NE(md.find("where the time went"), std::string::npos) << md;
+  // The scene's inputs as the run used them, and the energy account's error.
+  EXPECT_NE(md.find("## Inputs"), std::string::npos) << md;
+  EXPECT_NE(md.find("| contact.penalty | 1000 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| model.thickness | 0.3 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| tool.radius | 5 |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| energy balance error | "), std::string::npos) << md;
+  EXPECT_NE(md.find(" of the external work) |"), std::string::npos) << md;
   EXPECT_TRUE(fs::exists(r.html));
   if (has_gnuplot()) {
     EXPECT_EQ(r.plots.size(), 3u);  // force, energies, iterations (no sections in the indent)
@@ -50,6 +57,9 @@ TEST(RunReport, AnIndentRunGetsItsSummaryAndPlots) {
     const std::string dat = io::read_text_file((d / "plots" / "src" / "run_force.dat").string());
     EXPECT_NE(dat.find("\n0.0499999"), std::string::npos) << dat.substr(0, 200);
     EXPECT_NE(md.find("![Tool force](plots/run_force.svg)"), std::string::npos) << md;
+    // Newton iterations are counts: whole-number tics; the legend (none here) never on the data.
+    const std::string its = io::read_text_file((d / "plots" / "src" / "run_iterations.gp").string());
+    EXPECT_NE(its.find("set ytics 1\nset format y '%.0f'"), std::string::npos) << its;
   }
   fs::remove_all(d);
 }
