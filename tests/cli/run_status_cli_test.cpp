@@ -278,10 +278,18 @@ TEST(RunStatusCli, SigtermEndsAFitAsInterruptedWithItsEvaluationsKept) {
   EXPECT_NE(j["message"].get<std::string>().find("resume with spifit fit " + fit.string() + " --out " + out.string() + " --resume"),
             std::string::npos)
       << j["message"];
+  // The terminal is told how to go on too, and the directory's lock is gone with the fit (the
+  // resume takes no "killed" holder over).
+  EXPECT_NE(slurp(err).find("spifit: interrupted by SIGTERM; the FE evaluations that finished are kept in runs/evaluations.jsonl: resume with "
+                            "spifit fit " + fit.string() + " --out " + out.string() + " --resume"),
+            std::string::npos)
+      << slurp(err);
+  EXPECT_FALSE(fs::exists(out / ".spifit-lock"));
   r = run_spifit("status " + out.string());
   EXPECT_EQ(r.code, 1) << r.out;
   EXPECT_NE(r.out.find("kind: fit\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("status: interrupted: interrupted by SIGTERM"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("progress: iteration 0"), std::string::npos) << r.out;  // where the fit was
   fs::remove_all(out);
   for (const auto& f : {scene, data, fit, err}) fs::remove(f);
 }

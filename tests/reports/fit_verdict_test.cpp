@@ -150,6 +150,26 @@ spifit::reports::Cell usable_cell(const FitRecord& r) {
 
 }  // namespace
 
+// Correlations are shaded by their strength whatever their sign: -0.9 as deep as +0.9; amber from
+// |r| = 0.95, red from 0.99.
+TEST(FitReportCorrelation, ShadesByTheMagnitude) {
+  FitRecord r;
+  r.usable = true;
+  r.correlation.names = {"a", "b", "c", "d"};
+  r.correlation.matrix = {{1.0, -0.9, 0.96, -0.995}, {-0.9, 1.0, 0.0, 0.0}, {0.96, 0.0, 1.0, 0.0}, {-0.995, 0.0, 0.0, 1.0}};
+  FitReportContent c;
+  c.record = r;
+  c.verdict = judge_fit(r, {});
+  const Document d = fit_report_document(c);
+  const spifit::reports::Table* t = nullptr;
+  for (const auto& b : d.blocks)
+    if (b.kind == Block::Kind::table && !b.table.rows.empty() && b.table.rows[0].size() == 5 && b.table.rows[0][0].text == "a") t = &b.table;
+  ASSERT_NE(t, nullptr);
+  EXPECT_DOUBLE_EQ(t->rows[0][2].shade, 0.9);  // r(a, b) = -0.9
+  EXPECT_EQ(t->rows[0][3].style, CellStyle::warn);  // 0.96
+  EXPECT_EQ(t->rows[0][4].style, CellStyle::bad);   // -0.995
+}
+
 // A warning (a conflict between experiments) makes a usable result amber, not green; one that is
 // not usable is red and names its card.
 TEST(FitReportSummary, AWarningMakesAUsableResultAmber) {
