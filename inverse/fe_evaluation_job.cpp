@@ -18,7 +18,8 @@ constexpr std::uint32_t kVersion = 1;
 
 void write_point(io::BinaryWriter& w, const ParameterPoint& p) {
   std::vector<double> m;
-  for (const auto& in : material::material_inputs()) m.push_back(material::material_field(p.material, in.field));
+  for (const auto& in : material::material_inputs())
+    if (material::holds_input(p.material, in)) m.push_back(material::material_field(p.material, in.field));
   w.f64s(m);
   w.i64(static_cast<std::int64_t>(p.scene.size()));
   for (const auto& [name, v] : p.scene) {
@@ -30,10 +31,13 @@ void write_point(io::BinaryWriter& w, const ParameterPoint& p) {
 ParameterPoint read_point(io::BinaryReader& r, const material::MaterialParams<double>& base) {
   ParameterPoint p;
   p.material = base;
-  const auto& inputs = material::material_inputs();
+  // The point's law is the base card's: the values of the inputs it holds, in registry order.
+  std::vector<const material::MaterialInput*> inputs;
+  for (const auto& in : material::material_inputs())
+    if (material::holds_input(base, in)) inputs.push_back(&in);
   const std::vector<double> m = r.f64s();
   if (m.size() != inputs.size()) throw std::runtime_error("job: a point of another spifit version");
-  for (std::size_t i = 0; i < m.size(); ++i) material::material_field(p.material, inputs[i].field) = m[i];
+  for (std::size_t i = 0; i < m.size(); ++i) material::material_field(p.material, inputs[i]->field) = m[i];
   for (std::int64_t i = 0, n = r.i64(); i < n; ++i) {
     std::string name = r.string();
     p.scene.emplace_back(std::move(name), r.f64());

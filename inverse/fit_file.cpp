@@ -1,11 +1,12 @@
 #include "inverse/fit_file.hpp"
 
 #include "forward/io/toml_reader.hpp"
+#include "forward/material/material_inputs.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/fe_experiment_file.hpp"
 #include "inverse/material_point_experiment_file.hpp"
 #include "inverse/measurement.hpp"
-#include "inverse/nlopt_fit.hpp"
+#include "inverse/fit_algorithms.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -124,6 +125,8 @@ void read_parameters(const io::TomlTable& root, const material::MaterialCard& ca
     const io::InputInfo* info = is_known_parameter(name) ? nullptr : scene_input(*pt, name, fe_scenes);
     if (!is_known_parameter(name) && !info) pt->fail(name, "unknown parameter (known: " + fittable_names(fe_scenes) + ")");
     if (name == "hill.H" && normalise) pt->fail(name, "H = 2 - G while [fit] normalise_hill = true; fit hill.G instead");
+    if (const material::MaterialInput* in = info ? nullptr : material::find_material_input(name))
+      if (const std::string why = material::why_not_held(card.params, *in); !why.empty()) pt->fail(name, why + " (card " + card.file + ")");
     const double current = info ? fe_scenes.front()->input(name) : parameter_value(card, name);
     specs.push_back(read_parameter(*pt->table(name), name, current, info));
     // Every FE scene runs with the scene input at its start and at either bound.

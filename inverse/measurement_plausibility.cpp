@@ -1,7 +1,7 @@
 #include "inverse/measurement_plausibility.hpp"
 
 #include "forward/io/input_error.hpp"
-#include "forward/material/swift_hardening.hpp"
+#include "forward/material/hardening/hardening_laws.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -62,7 +62,7 @@ MagnitudeCheck fe_magnitudes(const std::string& y, const std::string& unit, cons
   const double t = input_or_nan(scene, "sheet.thickness"), radius = input_or_nan(scene, "tool.radius");
   char buf[400];
   if (unit == "N" && std::isfinite(t) && std::isfinite(radius)) {
-    const double flow = m.plastic ? material::swift_yield_stress(m, 0.2) : 0.01 * m.E;
+    const double flow = m.plastic ? material::hardening_stress(m, 0.2) : 0.01 * m.E;
     const double scale = flow * t * radius;
     if (scale > 0.0 && v > kForceScaleImplausible * scale) {
       std::snprintf(buf, sizeof buf,

@@ -20,6 +20,7 @@ bool is_known_parameter(const std::string& name) { return material::find_materia
 double parameter_value(const material::MaterialCard& card, const std::string& n) {
   const material::MaterialInput* in = material::find_material_input(n);
   if (!in) throw std::invalid_argument("unknown parameter " + n);
+  if (const std::string why = material::why_not_held(card.params, *in); !why.empty()) throw std::invalid_argument(why);
   return material::material_field(card.params, in->field);
 }
 
@@ -29,6 +30,9 @@ ParameterSet::ParameterSet(material::MaterialCard base, std::vector<ParameterSpe
     const ParameterSpec& s = specs_[static_cast<std::size_t>(i)];
     const material::MaterialInput* in = s.scene_input ? nullptr : material::find_material_input(s.name);
     if (!in && !s.scene_input) throw std::invalid_argument("unknown parameter " + s.name);
+    if (in) {
+      if (const std::string why = material::why_not_held(base_.params, *in); !why.empty()) throw std::invalid_argument(why);
+    }
     inputs_.push_back(in);
     if (!s.fixed) free_.push_back(i);
   }

@@ -65,7 +65,8 @@ std::string point_key(const ParameterPoint& p) {
     std::snprintf(buf, sizeof buf, "%s%016llx", key.empty() ? "" : " ", static_cast<unsigned long long>(bits));
     key += buf;
   };
-  for (const auto& m : material::material_inputs()) add(material::material_field(p.material, m.field));
+  for (const auto& m : material::material_inputs())
+    if (material::holds_input(p.material, m)) add(material::material_field(p.material, m.field));
   for (const auto& [name, v] : p.scene) {
     key += " " + name;
     add(v);
@@ -76,6 +77,7 @@ std::string point_key(const ParameterPoint& p) {
 std::string describe_point(const ParameterPoint& p, const material::MaterialParams<double>& card) {
   std::string out;
   for (const auto& m : material::material_inputs()) {
+    if (!material::holds_input(p.material, m) || !material::holds_input(card, m)) continue;
     const double v = material::material_field(p.material, m.field);
     if (v != material::material_field(card, m.field)) out += (out.empty() ? "" : " ") + m.info.name + "=" + io::format_number(v);
   }

@@ -99,9 +99,12 @@ SweepInput read_input(const io::TomlTable& inputs, const std::string& name, cons
   const io::InputInfo* own = nullptr;
   for (const auto& i : s.kind->inputs)
     if (i.name == name) own = &i;
-  const bool card = material::find_material_input(name) && s.scene->card();
+  const material::MaterialInput* material_input = material::find_material_input(name);
+  const bool card = material_input && s.scene->card();
   if (!(own && own->variable && own->type != io::InputType::text) && !card)
     inputs.fail(name, "not an input a sweep can vary for scene kind " + s.kind->name + " (inputs: " + input_names(*s.kind, s.scene->card()) + ")");
+  if (card && !own)
+    if (const std::string why = material::why_not_held(s.scene->card()->params, *material_input); !why.empty()) inputs.fail(name, why);
   const auto t = inputs.table(name);
   if (!t) inputs.fail(name, "expected a table: values = [...] or from, to, steps, log");
   SweepInput in{name, read_input_values(*t), own && own->type == io::InputType::integer};

@@ -1,6 +1,6 @@
 #include "reports/card_export.hpp"
 
-#include "forward/material/swift_hardening.hpp"
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "reports/card_export_text.hpp"
 
@@ -118,9 +118,9 @@ ExportedLaw exported_law(const MaterialCard& card, const ExportOptions& o) {
   }
 
   const double h = law.h;
-  auto size_at = [&](double e) { return material::swift_yield_stress(p, e / h) / h; };
+  auto size_at = [&](double e) { return material::hardening_stress(p, e / h) / h; };
   auto mono_at = [&](double e) { return size_at(e) + rd_back_stress(law.C, law.gamma, e); };
-  const double e1 = std::min(o.first_plastic_strain, 0.1 * h * p.eps0);
+  const double e1 = std::min(o.first_plastic_strain, 0.1 * h * material::hardening_resolution_strain(p.hardening));
   const int n = o.table_points;
   law.strain.push_back(0.0);
   for (int i = 0; i < n; ++i) {
@@ -154,8 +154,7 @@ MaterialCard exported_equivalent_card(const MaterialCard& card) {
   eq.set_hill(hill);
   auto& p = eq.params;
   if (p.plastic) {
-    p.K = card.params.K * std::pow(law.h, -(1.0 + card.params.n));
-    p.eps0 = law.h * card.params.eps0;
+    material::scale_hardening_strain(p.hardening, law.h);
     if (law.kinematic != KinematicLaw::none) {
       p.kinematic = KinematicLaw::ziegler;
       p.CA = law.C;

@@ -1,5 +1,7 @@
 #include "reports/card_export_text.hpp"
 
+#include "forward/material/hardening/hardening_laws.hpp"
+
 #include <cmath>
 #include <cstdio>
 
@@ -87,10 +89,11 @@ std::vector<std::string> common_notes(const MaterialCard& card, const ExportedLa
   std::vector<std::string> n;
   const auto& p = card.params;
   if (!p.plastic) {
-    n.push_back("elastic-only card (no [swift] table): no plasticity is written.");
+    n.push_back("elastic-only card (no hardening table): no plasticity is written.");
     return n;
   }
-  n.push_back("Swift hardening sigma_F = K (eps0 + p)^n is tabulated (" + table_what + ") at " +
+  const material::HardeningLawInfo& hardening = material::hardening_law(p.hardening.law);
+  n.push_back(hardening.title + " hardening " + hardening.formula + " is tabulated (" + table_what + ") at " +
               std::to_string(law.strain.size()) + " points: ebar = 0, then a geometric grid from " +
               sci(law.strain[1], 3) + " to " + sci(o.max_plastic_strain, 3) +
               " (equivalent plastic strain); the FE code interpolates linearly: largest relative deviation from the "

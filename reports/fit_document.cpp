@@ -5,7 +5,7 @@
 #include "reports/fit_sections.hpp"
 #include "reports/report_format.hpp"
 
-#include "forward/material/swift_hardening.hpp"
+#include "forward/material/hardening/hardening_laws.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -175,14 +175,8 @@ void add_card(Document& d, const FitReportContent& c) {
   t.id = "card";
   t.header = {"parameter", "unit", "value", "from"};
   t.right = {false, false, true, false};
-  auto in_use = [&](const std::string& name) {
-    if (name.rfind("swift.", 0) == 0) return p.plastic;
-    if (name.rfind("af.", 0) == 0) return p.kinematic == material::KinematicLaw::armstrong_frederick;
-    if (name.rfind("ziegler.", 0) == 0) return p.kinematic == material::KinematicLaw::ziegler;
-    return true;
-  };
   for (const auto& in : material::material_inputs()) {
-    if (!in_use(in.info.name)) continue;
+    if (!material::input_in_use(p, in)) continue;
     t.rows.push_back({cell(in.info.name), cell(in.info.unit.empty() ? "-" : in.info.unit), cell(fmt(material::material_field(p, in.field))),
                       cell(parameter_origin(c.record, in.info.name))});
     if (in.info.name == "hill.N") {
@@ -196,7 +190,7 @@ void add_card(Document& d, const FitReportContent& c) {
   r.id = "card_predictions";
   r.header = {"angle to RD", "r-value", "initial yield stress"};
   r.right = {true, true, true};
-  const double s0 = p.plastic ? material::swift_yield_stress(p, 0.0) : kNaN;
+  const double s0 = p.plastic ? material::hardening_stress(p, 0.0) : kNaN;
   for (double deg : {0.0, 45.0, 90.0}) {
     const double a = deg * std::numbers::pi / 180.0;
     r.rows.push_back({cell(fmt(deg, 3) + "°"), cell(fmt(material::r_value_at_angle(h, a), 4)),

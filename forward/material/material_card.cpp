@@ -2,7 +2,7 @@
 
 #include "forward/io/toml_reader.hpp"
 #include "forward/material/material_inputs.hpp"
-#include "forward/material/swift_hardening.hpp"
+#include "forward/material/hardening/hardening_laws.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -46,14 +46,6 @@ namespace {
 std::string card_table(const MaterialInput& in) { return in.card_key.substr(0, in.card_key.find('.')); }
 std::string card_key(const MaterialInput& in) { return in.card_key.substr(in.card_key.find('.') + 1); }
 
-// Whether the card's law uses the parameters of [table] (a card without [swift] is elastic).
-bool law_in_use(const MaterialParams<double>& p, const std::string& table) {
-  if (table == "swift") return p.plastic;
-  if (table == "armstrong_frederick") return p.kinematic == KinematicLaw::armstrong_frederick;
-  if (table == "ziegler") return p.kinematic == KinematicLaw::ziegler;
-  return true;  // elastic, hill
-}
-
 // Reads the parameters of one card table, named by material_inputs(); [hill] may also give L and
 // M, which default to N (the shell's transverse shear uses them, the fits tie them to N).
 void read_law_table(const io::TomlTable& t, const std::string& table, MaterialParams<double>& p) {
@@ -80,7 +72,9 @@ constexpr double kHillSpread = 1e6;  // largest over smallest of F + G, G + H, H
 }  // namespace
 
 MaterialCard read_material_card(const io::TomlTable& root) {
-  root.allow_only({"card", "elastic", "hill", "swift", "armstrong_frederick", "ziegler", "density", "fitted"});
+  std::vector<std::string> tables{"card", "elastic", "hill", "armstrong_frederick", "ziegler", "density", "fitted"};
+  for (const auto& law : hardening_laws()) tables.push_back(law.name);
+  root.allow_only(tables);
   MaterialCard card;
   card.file = root.file();
   auto& p = card.params;
@@ -118,14 +112,22 @@ MaterialCard read_material_card(const io::TomlTable& root) {
   read_law_table(*elastic, "elastic", p);
   if (auto h = root.table("hill")) read_law_table(*h, "hill", p);
   // no [hill]: von Mises (F = G = H = 1, N = L = M = 3)
-  const auto swift = root.table("swift");
-  p.plastic = bool(swift);  // no [swift]: an elastic-only card
-  if (swift) read_law_table(*swift, "swift", p);
+  // At most one hardening table; none: an elastic-only card.
+  p.plastic = false;
+  for (const auto& law : hardening_laws()) {
+    const auto t = root.table(law.name);
+    if (!t) continue;
+    if (p.plastic) root.fail(law.name, "a card has at most one hardening law (" + hardening_table_list() + "); it also has [" + hardening_law(p.hardening.law).name + "]");
+    p.plastic = true;
+    p.hardening = Hardening<double>{law.id, {}};
+    read_law_table(*t, law.name, p);
+  }
 
   auto af = root.table("armstrong_frederick");
   auto zi = root.table("ziegler");
   if (af && zi) root.fail("ziegler", "a card has at most one kinematic law ([armstrong_frederick] or [ziegler])");
-  if ((af || zi) && !p.plastic) root.fail(af ? "armstrong_frederick" : "ziegler", "kinematic hardening needs a [swift] table");
+  if ((af || zi) && !p.plastic)
+    root.fail(af ? "armstrong_frederick" : "ziegler", "kinematic hardening needs a hardening table (" + hardening_table_list() + ")");
   if (af) {
     p.kinematic = KinematicLaw::armstrong_frederick;
     read_law_table(*af, "armstrong_frederick", p);
@@ -148,7 +150,7 @@ void validate_material_card(const MaterialCard& card) {
     throw InputError(card.file, key, format_number(v), msg);
   };
   for (const auto& in : material_inputs()) {  // each parameter of a law the card uses, alone
-    if (!law_in_use(p, card_table(in))) continue;
+    if (!input_in_use(p, in)) continue;
     const double v = material_field(p, in.field);
     if (const std::string msg = in.info.check(v); !msg.empty()) bad(in.card_key, v, msg);
   }
@@ -192,9 +194,9 @@ std::vector<std::string> material_card_warnings(const MaterialCard& card) {
     }
   }
   if (card.params.plastic) {
-    const double s0 = swift_yield_stress(card.params, 0.0);
+    const double s0 = hardening_stress(card.params, 0.0);
     if (!(s0 >= 1.0 && s0 <= 5000.0))
-      out.push_back("its initial yield stress K eps0^n = " + format_number(s0) + " MPa is beyond any sheet metal (about 20 to 2000 MPa): is the unit right (MPa)?");
+      out.push_back("its initial yield stress " + hardening_law(card.params.hardening.law).initial_formula + " = " + format_number(s0) + " MPa is beyond any sheet metal (about 20 to 2000 MPa): is the unit right (MPa)?");
   }
   return out;
 }
@@ -229,7 +231,10 @@ std::string material_card_to_toml(const MaterialCard& card) {
      << "\nH = " << format_number(p.H) << "\nN = " << format_number(p.N) << "\nL = " << format_number(p.L)
      << "\nM = " << format_number(p.M) << "\n";
   if (p.plastic) {
-    os << "\n[swift]\nK = " << format_number(p.K) << "\neps0 = " << format_number(p.eps0) << "\nn = " << format_number(p.n) << "\n";
+    const HardeningLawInfo& law = hardening_law(p.hardening.law);
+    os << "\n[" << law.name << "]\n";
+    for (std::size_t i = 0; i < law.coefficients.size(); ++i)
+      os << law.coefficients[i].key << " = " << format_number(p.hardening[static_cast<int>(i)]) << "\n";
   }
   if (p.kinematic == KinematicLaw::armstrong_frederick) {
     os << "\n[armstrong_frederick]\nCX = " << format_number(p.CX) << "\nXsat = " << format_number(p.Xsat) << "\n";
@@ -262,9 +267,14 @@ std::string describe_material_card(const MaterialCard& card) {
     os << "hardening      none (elastic-only card)\n";
     return os.str();
   }
-  const double s0 = swift_yield_stress(p, 0.0);
-  os << "hardening      Swift K = " << format_number(p.K) << " MPa, eps0 = " << format_number(p.eps0)
-     << ", n = " << format_number(p.n) << (p.n == 0.0 ? " (perfectly plastic)" : "") << "\n";
+  const double s0 = hardening_stress(p, 0.0);
+  const HardeningLawInfo& law = hardening_law(p.hardening.law);
+  os << "hardening      " << law.title << " " << law.formula << ":";
+  for (std::size_t i = 0; i < law.coefficients.size(); ++i) {
+    const HardeningCoefficient& c = law.coefficients[i];
+    os << (i == 0 ? " " : ", ") << c.key << " = " << format_number(p.hardening[static_cast<int>(i)]) << (*c.unit ? " " : "") << c.unit;
+  }
+  os << (is_perfectly_plastic(p) ? " (perfectly plastic)" : "") << "\n";
   if (p.kinematic == KinematicLaw::armstrong_frederick) {
     os << "kinematic      Armstrong-Frederick CX = " << format_number(p.CX) << ", Xsat = " << format_number(p.Xsat)
        << " MPa (uniaxial von Mises offset saturates at 1.5 Xsat = " << format_number(1.5 * p.Xsat) << " MPa)\n";
@@ -276,7 +286,7 @@ std::string describe_material_card(const MaterialCard& card) {
     os << "kinematic      none (isotropic hardening)\n";
   }
   char line[160];
-  os << "initial yield  sigma_F(0) = K eps0^n = " << format_number(s0) << " MPa\n";
+  os << "initial yield  sigma_F(0) = " << law.initial_formula << " = " << format_number(s0) << " MPa\n";
   os << "uniaxial       angle   r-value   initial yield [MPa]\n";
   for (double deg : {0.0, 45.0, 90.0}) {
     const double a = deg * std::numbers::pi / 180.0;

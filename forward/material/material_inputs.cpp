@@ -1,5 +1,7 @@
 #include "forward/material/material_inputs.hpp"
 
+#include "forward/material/hardening/hardening_laws.hpp"
+
 namespace spifit::material {
 namespace {
 
@@ -10,24 +12,34 @@ MaterialInput param(const char* name, MaterialField f, const char* unit, Range r
   return {io::InputInfo{name, io::InputType::real, unit, range, {}, doc, true}, f, std::move(tied), card_key};
 }
 
+MaterialField field(MaterialField::Kind k) { return MaterialField{k}; }
+
 std::vector<MaterialInput> make_inputs() {
   const Range positive = Range::positive(), non_negative = Range::non_negative();
-  return {
-      param("elastic.E", MaterialField::E, "MPa", positive, "Young's modulus", "elastic.E"),
-      param("elastic.nu", MaterialField::nu, "", Range{-1.0, 0.5, true, true}, "Poisson's ratio", "elastic.nu"),
-      param("hill.F", MaterialField::F, "", Range::any(), "Hill 1948 F (thesis eq. 3.5, with the factor 1/2)", "hill.F"),
-      param("hill.G", MaterialField::G, "", Range::any(), "Hill 1948 G; a fit with G + H = 2 sets H = 2 - G", "hill.G"),
-      param("hill.H", MaterialField::H, "", Range::any(), "Hill 1948 H", "hill.H"),
-      param("hill.N", MaterialField::N, "", positive, "Hill 1948 N (in-plane shear); sets L and M too (N = L = M)", "hill.N",
-            {MaterialField::L, MaterialField::M}),
-      param("swift.K", MaterialField::K, "MPa", positive, "Swift sigma_F = K (eps0 + p)^n: strength coefficient (eq. 3.7)", "swift.K"),
-      param("swift.eps0", MaterialField::eps0, "", positive, "Swift prestrain eps0", "swift.eps0"),
-      param("swift.n", MaterialField::n, "", Range{0.0, 1.0, false, true}, "Swift hardening exponent (0: perfectly plastic)", "swift.n"),
-      param("af.CX", MaterialField::CX, "", non_negative, "Armstrong-Frederick rate C_X (eq. 3.8)", "armstrong_frederick.CX"),
-      param("af.Xsat", MaterialField::Xsat, "MPa", non_negative, "Armstrong-Frederick saturation X_sat", "armstrong_frederick.Xsat"),
-      param("ziegler.CA", MaterialField::CA, "MPa", non_negative, "Ziegler C_A (eq. 3.9)", "ziegler.CA"),
-      param("ziegler.GA", MaterialField::GA, "", non_negative, "Ziegler G_A", "ziegler.GA"),
+  std::vector<MaterialInput> out{
+      param("elastic.E", field(MaterialField::E), "MPa", positive, "Young's modulus", "elastic.E"),
+      param("elastic.nu", field(MaterialField::nu), "", Range{-1.0, 0.5, true, true}, "Poisson's ratio", "elastic.nu"),
+      param("hill.F", field(MaterialField::F), "", Range::any(), "Hill 1948 F (thesis eq. 3.5, with the factor 1/2)", "hill.F"),
+      param("hill.G", field(MaterialField::G), "", Range::any(), "Hill 1948 G; a fit with G + H = 2 sets H = 2 - G", "hill.G"),
+      param("hill.H", field(MaterialField::H), "", Range::any(), "Hill 1948 H", "hill.H"),
+      param("hill.N", field(MaterialField::N), "", positive, "Hill 1948 N (in-plane shear); sets L and M too (N = L = M)", "hill.N",
+            {field(MaterialField::L), field(MaterialField::M)}),
   };
+  for (const HardeningLawInfo& law : hardening_laws()) {
+    for (int i = 0; i < static_cast<int>(law.coefficients.size()); ++i) {
+      const HardeningCoefficient& c = law.coefficients[static_cast<std::size_t>(i)];
+      const std::string name = law.name + "." + c.key;
+      out.push_back({io::InputInfo{name, io::InputType::real, c.unit, c.range, {}, c.doc, true}, MaterialField{MaterialField::hardening, law.id, i}, {}, name});
+    }
+  }
+  for (MaterialInput& in : std::vector<MaterialInput>{
+      param("af.CX", field(MaterialField::CX), "", non_negative, "Armstrong-Frederick rate C_X (eq. 3.8)", "armstrong_frederick.CX"),
+      param("af.Xsat", field(MaterialField::Xsat), "MPa", non_negative, "Armstrong-Frederick saturation X_sat", "armstrong_frederick.Xsat"),
+      param("ziegler.CA", field(MaterialField::CA), "MPa", non_negative, "Ziegler C_A (eq. 3.9)", "ziegler.CA"),
+      param("ziegler.GA", field(MaterialField::GA), "", non_negative, "Ziegler G_A", "ziegler.GA"),
+  })
+    out.push_back(std::move(in));
+  return out;
 }
 
 }  // namespace
@@ -41,6 +53,25 @@ const MaterialInput* find_material_input(const std::string& name) {
   for (const auto& m : material_inputs())
     if (m.info.name == name) return &m;
   return nullptr;
+}
+
+bool input_in_use(const MaterialParams<double>& p, const MaterialInput& in) {
+  switch (in.field.kind) {
+    case MaterialField::hardening: return p.plastic && holds_input(p, in);
+    case MaterialField::CX:
+    case MaterialField::Xsat: return p.kinematic == KinematicLaw::armstrong_frederick;
+    case MaterialField::CA:
+    case MaterialField::GA: return p.kinematic == KinematicLaw::ziegler;
+    default: return true;
+  }
+}
+
+std::string why_not_held(const MaterialParams<double>& p, const MaterialInput& in) {
+  if (holds_input(p, in)) return {};
+  const HardeningLawInfo& law = hardening_law(p.hardening.law);
+  std::string names;
+  for (const auto& c : law.coefficients) names += (names.empty() ? "" : ", ") + law.name + "." + c.key;
+  return in.info.name + " is not a parameter of this card: its hardening law is " + law.name + " (" + names + ")";
 }
 
 std::vector<io::InputInfo> material_input_infos() {

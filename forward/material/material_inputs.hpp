@@ -1,20 +1,31 @@
 #pragma once
-// The named parameters of the material law (Hill 1948 + Swift + Armstrong-Frederick or Ziegler,
-// material_params.hpp): the names a fit, a sweep and the documentation use ("swift.K"), the key
-// of the card file that holds each ("swift.K" = key K of table [swift]; the Armstrong-Frederick
-// constants are "af.CX", "af.Xsat" in table [armstrong_frederick]), its unit, the values a card
-// accepts one parameter at a time (the Hill convexity is validate_material_card's), and the
-// parameters it sets with it (hill.N sets L and M: N = L = M). One table, one switch over the
-// fields: material_field() works on any scalar type (Jets for exact derivatives).
+// The named parameters of the material law (Hill 1948 + a hardening law of the registry +
+// Armstrong-Frederick or Ziegler, material_params.hpp): the names a fit, a sweep and the
+// documentation use ("swift.K"), the key of the card file that holds each ("swift.K" = key K of
+// table [swift]; the Armstrong-Frederick constants are "af.CX", "af.Xsat" in table
+// [armstrong_frederick]), its unit, the values a card accepts one parameter at a time (the Hill
+// convexity is validate_material_card's), and the parameters it sets with it (hill.N sets L and M:
+// N = L = M). The hardening laws' coefficients come from their registry
+// (hardening/hardening_laws.hpp). material_field() works on any scalar type (Jets for exact
+// derivatives).
 #include "forward/io/named_inputs.hpp"
 #include "forward/material/material_params.hpp"
+
+#include <stdexcept>
 
 #include <string>
 #include <vector>
 
 namespace spifit::material {
 
-enum class MaterialField { E, nu, F, G, H, L, M, N, K, eps0, n, CX, Xsat, CA, GA };
+// A parameter's place in MaterialParams: a named field, or coefficient `slot` of hardening law
+// `law` (which the card must use).
+struct MaterialField {
+  enum Kind : unsigned char { E, nu, F, G, H, L, M, N, CX, Xsat, CA, GA, hardening };
+  Kind kind = E;
+  int law = -1;  // hardening only: the law's index in HardeningLawList
+  int slot = 0;  // hardening only: the coefficient's index in the law
+};
 
 struct MaterialInput {
   io::InputInfo info;             // name "swift.K", unit, range, doc
@@ -23,15 +34,29 @@ struct MaterialInput {
   std::string card_key;           // table.key in the card file
 };
 
-// In a fixed order (elastic, Hill, Swift, Armstrong-Frederick, Ziegler).
+// In a fixed order: elastic, Hill, each hardening law in registry order (Swift first),
+// Armstrong-Frederick, Ziegler.
 const std::vector<MaterialInput>& material_inputs();
 const MaterialInput* find_material_input(const std::string& name);
 // The InputInfo of every parameter (for listings and the documentation).
 std::vector<io::InputInfo> material_input_infos();
 
+// Whether p holds a value for the input: all but the coefficients of hardening laws other than
+// p's (the kinematic constants are held whatever the kinematic law).
+template <typename T>
+bool holds_input(const MaterialParams<T>& p, const MaterialInput& in) {
+  return in.field.kind != MaterialField::hardening || in.field.law == p.hardening.law;
+}
+// Whether the card's laws use the input: holds_input, an elastic card no hardening coefficient,
+// and only the kinematic law in use its constants.
+bool input_in_use(const MaterialParams<double>& p, const MaterialInput& in);
+// Why p cannot take a value of the input ("swift.K is not a parameter of this card: its hardening
+// law is voce (voce.sigma0, voce.Q, voce.b)"); empty when it can.
+std::string why_not_held(const MaterialParams<double>& p, const MaterialInput& in);
+
 template <typename T>
 T& material_field(MaterialParams<T>& p, MaterialField f) {
-  switch (f) {
+  switch (f.kind) {
     case MaterialField::E: return p.E;
     case MaterialField::nu: return p.nu;
     case MaterialField::F: return p.F;
@@ -40,9 +65,9 @@ T& material_field(MaterialParams<T>& p, MaterialField f) {
     case MaterialField::L: return p.L;
     case MaterialField::M: return p.M;
     case MaterialField::N: return p.N;
-    case MaterialField::K: return p.K;
-    case MaterialField::eps0: return p.eps0;
-    case MaterialField::n: return p.n;
+    case MaterialField::hardening:
+      if (f.law != p.hardening.law) throw std::logic_error("a coefficient of another hardening law than the card's");
+      return p.hardening[f.slot];
     case MaterialField::CX: return p.CX;
     case MaterialField::Xsat: return p.Xsat;
     case MaterialField::CA: return p.CA;

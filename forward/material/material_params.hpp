@@ -1,7 +1,9 @@
 #pragma once
-// Constitutive parameters of the Hill48 + Swift + {none, Armstrong-Frederick, Ziegler} law,
+// Constitutive parameters of the Hill48 + isotropic hardening (a law of the registry,
+// hardening/hardening_laws.hpp: Swift, Voce, Swift-Voce) + {none, Armstrong-Frederick, Ziegler} law,
 // templated on the scalar type so that ceres::Jet gives exact parameter derivatives of a
 // material-point curve (docs/design/numerics-material.md, "Jets (exact parameter derivatives)").
+#include "forward/material/hardening/hardening_coefficients.hpp"
 #include "forward/material/scalar.hpp"
 
 #include <string>
@@ -20,9 +22,10 @@ struct MaterialParams {
   T E = T(72600.0), nu = T(0.36);
   // Hill 1948, thesis notation (factor 1/2, L on xz, M on yz).
   T F = T(1.0), G = T(1.0), H = T(1.0), L = T(3.0), M = T(3.0), N = T(3.0);
-  // Swift hardening sigma_F = K (eps0 + p)^n  [MPa, -, -]; n = 0 is perfect plasticity at K.
+  // Isotropic hardening sigma_F(p): the law's index and coefficients (hardening_laws.hpp); the
+  // default is Swift K = 180 MPa, eps0 = 0.00109, n = 0.21. plastic = false: an elastic card.
   bool plastic = true;
-  T K = T(180.0), eps0 = T(0.00109), n = T(0.21);
+  Hardening<T> hardening{0, {T(180.0), T(0.00109), T(0.21)}};
   // Kinematic hardening. Armstrong-Frederick (eq. 3.8): dX = CX (Xsat deps_p - X dp).
   // Ziegler (eq. 3.9): dX = CA (sigma - X) dp / sigma_F - GA X dp.
   KinematicLaw kinematic = KinematicLaw::none;
@@ -33,7 +36,8 @@ struct MaterialParams {
     MaterialParams<U> o;
     o.E = U(E); o.nu = U(nu);
     o.F = U(F); o.G = U(G); o.H = U(H); o.L = U(L); o.M = U(M); o.N = U(N);
-    o.plastic = plastic; o.K = U(K); o.eps0 = U(eps0); o.n = U(n);
+    o.plastic = plastic; o.hardening.law = hardening.law;
+    for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = U(hardening[i]);
     o.kinematic = kinematic; o.CX = U(CX); o.Xsat = U(Xsat); o.CA = U(CA); o.GA = U(GA);
     return o;
   }
@@ -45,7 +49,8 @@ MaterialParams<double> values_of(const MaterialParams<T>& p) {
   MaterialParams<double> o;
   o.E = value_of(p.E); o.nu = value_of(p.nu);
   o.F = value_of(p.F); o.G = value_of(p.G); o.H = value_of(p.H); o.L = value_of(p.L); o.M = value_of(p.M); o.N = value_of(p.N);
-  o.plastic = p.plastic; o.K = value_of(p.K); o.eps0 = value_of(p.eps0); o.n = value_of(p.n);
+  o.plastic = p.plastic; o.hardening.law = p.hardening.law;
+  for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = value_of(p.hardening[i]);
   o.kinematic = p.kinematic; o.CX = value_of(p.CX); o.Xsat = value_of(p.Xsat); o.CA = value_of(p.CA); o.GA = value_of(p.GA);
   return o;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// Implicit return mapping for Hill48 + Swift + {none, Armstrong-Frederick, Ziegler}
-// hardening, in 3D (Dim = 6) or plane stress (Dim = 3), with the consistent tangent.
+// Implicit return mapping for Hill48 + isotropic hardening (any law of the registry,
+// hardening/hardening_laws.hpp) + {none, Armstrong-Frederick, Ziegler} kinematic hardening, in 3D (Dim = 6) or plane stress (Dim = 3), with the consistent tangent.
 //
 // Algorithm (docs/design/numerics-material.md gives the derivation):
 //  * Elastic predictor sigma_tr = sigma_0 + C d_eps; xi = sigma - X is the shifted stress.
@@ -20,11 +20,11 @@
 //  * The consistent tangent follows from implicit differentiation of (xi, dl).
 // With T = ceres::Jet the multiplier is converged in double precision on a value copy of the
 // law and one Newton update in Jets follows: exact parameter derivatives (integrate_jet).
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/material_params.hpp"
 #include "forward/material/material_state.hpp"
 #include "forward/material/scalar.hpp"
 #include "forward/material/stress_space.hpp"
-#include "forward/material/swift_hardening.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -67,7 +67,7 @@ class ReturnMapping {
     const T q = 0.5 * xi.dot(P_ * xi);
     return value_of(q) > 0.0 ? sqrt(q) : T(0.0);
   }
-  T yield_stress(const T& p) const { return swift_yield_stress(m_, p); }
+  T yield_stress(const T& p) const { return hardening_stress(m_, p); }
   // Yield stress at the state's eqps: the kept value when there is one (MaterialState::flow_stress).
   T flow_stress(const State& s) const { return value_of(s.flow_stress) >= 0.0 ? s.flow_stress : yield_stress(s.eqps); }
   T yield_function(const State& s) const {
@@ -255,9 +255,9 @@ class ReturnMapping {
   // xi(dl), phi(dl) and d phi / d dl for the current law (see the header comment).
   void evaluate(const State& s0, const Vec& sigma_tr, const T& dl, Eval& ev) const {
     using std::exp;
-    // Swift: one pow per evaluation; the slope is n sigma_F / (eps0 + p).
+    // The slope may reuse the stress (Swift: n sigma_F / (eps0 + p), one pow per evaluation).
     ev.s = yield_stress(s0.eqps + dl);
-    ev.ds = m_.n * ev.s / (m_.eps0 + s0.eqps + dl);
+    ev.ds = hardening_slope(m_, s0.eqps, dl, ev.s);
     ev.q = dl / (2.0 * ev.s);
     ev.dq = (ev.s - dl * ev.ds) / (2.0 * ev.s * ev.s);
     T a = T(1.0), da = T(0.0), e = T(0.0), de = T(0.0), m = T(1.0), dm = T(0.0);

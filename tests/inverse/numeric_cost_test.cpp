@@ -1,4 +1,5 @@
 // Black-box experiments (no Jets) are differentiated by central differences inside the bounds.
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "inverse/ceres_fit.hpp"
 #include "inverse/synthetic.hpp"
 
@@ -20,7 +21,7 @@ class BlackBox final : public inverse::Experiment {
   bool residuals(const inverse::ParameterPoint& m, double* r) const override {
     {
       std::lock_guard<std::mutex> lock(mu_);
-      max_k_ = std::max(max_k_, m.material.K);
+      max_k_ = std::max(max_k_, m.material.hardening[material::SwiftHardening::K]);
       ++calls_;
     }
     return inner_->residuals(m, r);

@@ -3,7 +3,7 @@
 // docs/design/numerics-material.md). All in Kirchhoff stress vs the law's strain measure.
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_params.hpp"
-#include "forward/material/swift_hardening.hpp"
+#include "forward/material/hardening/hardening_laws.hpp"
 
 #include <cmath>
 #include <functional>
@@ -37,7 +37,7 @@ struct UniaxialClosedForm {
       default: return 0.0;
     }
   }
-  double stress_at_p(double p) const { return material::swift_yield_stress(m, p) / h + offset(p); }
+  double stress_at_p(double p) const { return material::hardening_stress(m, p) / h + offset(p); }
   double strain_at_p(double p) const { return stress_at_p(p) / m.E + h * p; }
   // Stress for a total (monotonic, tensile) strain.
   double stress(double eps) const {
@@ -60,7 +60,7 @@ struct ShearClosedForm {
     }
   }
   double mu() const { return m.E / (2.0 * (1.0 + m.nu)); }
-  double stress_at_p(double p) const { return material::swift_yield_stress(m, p) / std::sqrt(m.N) + back_stress(p); }
+  double stress_at_p(double p) const { return material::hardening_stress(m, p) / std::sqrt(m.N) + back_stress(p); }
   double strain_at_p(double p) const { return stress_at_p(p) / mu() + std::sqrt(m.N) * p; }
   double stress(double gamma) const {
     if (!m.plastic || gamma * mu() <= stress_at_p(0.0)) return gamma * mu();

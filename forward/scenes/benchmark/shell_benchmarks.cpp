@@ -1,5 +1,6 @@
 #include "forward/scenes/benchmark/shell_benchmarks.hpp"
 
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/mesh/benchmark_meshes.hpp"
 
 #include <cmath>
@@ -217,8 +218,7 @@ void limit_moment(ShellBenchmark& b, int n, int points) {
   const double L = 10.0, width = 1.0, t = 0.1, E = 70000.0, sy = 10.0;
   material::MaterialParams<double> mat = elastic(E, 0.3);
   mat.plastic = true;
-  mat.K = sy;
-  mat.n = 0.0;
+  mat.hardening = material::make_hardening<material::SwiftHardening>({sy, mat.hardening[material::SwiftHardening::eps0], 0.0});
   build(b, mesh::strip(L, width, n, 1), t, mat, points);
   b.solver.initial_increment = 0.02;
   b.solver.max_increment = 0.1;

@@ -10,7 +10,10 @@ namespace spifit::scene {
 double Scene::input(const std::string& name) const {
   if (has_own_input(name)) return own_input(name);
   const auto* m = material::find_material_input(name);
-  if (m && card()) return material::material_field(card()->params, m->field);
+  if (m && card()) {
+    if (const std::string why = material::why_not_held(card()->params, *m); !why.empty()) throw std::invalid_argument(why);
+    return material::material_field(card()->params, m->field);
+  }
   throw std::invalid_argument("unknown input " + name + " of scene kind " + kind());
 }
 
@@ -27,6 +30,7 @@ std::string Scene::set_input(const std::string& name, double value) {
   const material::MaterialInput* m = material::find_material_input(name);
   if (!m || !card()) throw std::invalid_argument("unknown input " + name + " of scene kind " + kind());
   if (std::string why = m->info.check(value); !why.empty()) return why;
+  if (std::string why = material::why_not_held(card()->params, *m); !why.empty()) return why;
   material::MaterialCard c = *card();
   material::set_material_input(c.params, *m, value);
   try {

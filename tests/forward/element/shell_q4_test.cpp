@@ -1,3 +1,4 @@
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/element/director.hpp"
 #include "forward/element/shell_q4.hpp"
 #include "tests/support/shell_finite_differences.hpp"
@@ -88,7 +89,7 @@ TEST(ShellQ4, TangentMatchesFiniteDifferencesPlasticAfterCommittedPrestrain) {
 
 TEST(ShellQ4, TangentMatchesFiniteDifferencesPerfectPlasticityBending) {
   material::MaterialParams<double> p;  // von Mises, sigma_y = 10, no hardening (limit-moment strip)
-  p.E = 70000.0; p.nu = 0.3; p.K = 10.0; p.n = 0.0;
+  p.E = 70000.0; p.nu = 0.3; p.hardening[material::SwiftHardening::K] = 10.0; p.hardening[material::SwiftHardening::n] = 0.0;
   Fixture f(p, 11);
   ShellQ4 el(f.X, f.D, 0.1, f.law, f.rule, f.options);
   NodeVectors x, d;

@@ -1,5 +1,6 @@
 // With T = ceres::Jet the material-point curve carries exact parameter derivatives
 // (needed by the Ceres fits): compare them with central differences of double runs.
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
 #include "tests/support/scenes.hpp"
@@ -14,8 +15,8 @@ namespace {
 
 material::MaterialParams<Jet> seeded(const material::MaterialParams<double>& p) {
   auto j = p.cast<Jet>();
-  j.K.v[0] = 1.0;     // d/dK
-  j.n.v[1] = 1.0;     // d/dn
+  j.hardening[material::SwiftHardening::K].v[0] = 1.0;     // d/dK
+  j.hardening[material::SwiftHardening::n].v[1] = 1.0;     // d/dn
   j.N.v[2] = 1.0;     // d/dN (Hill shear coefficient)
   j.L = j.N;
   j.M = j.N;
@@ -26,8 +27,8 @@ material::MaterialParams<Jet> seeded(const material::MaterialParams<double>& p) 
 
 material::MaterialParams<double> perturbed(material::MaterialParams<double> p, int k, double h) {
   switch (k) {
-    case 0: p.K += h; break;
-    case 1: p.n += h; break;
+    case 0: p.hardening[material::SwiftHardening::K] += h; break;
+    case 1: p.hardening[material::SwiftHardening::n] += h; break;
     case 2: p.N += h; p.L = p.N; p.M = p.N; break;
     case 3:
       if (p.kinematic == material::KinematicLaw::armstrong_frederick) p.CX += h;
@@ -39,7 +40,7 @@ material::MaterialParams<double> perturbed(material::MaterialParams<double> p, i
 
 double step_for(const material::MaterialParams<double>& p, int k) {
   switch (k) {
-    case 0: return 1e-4 * p.K;
+    case 0: return 1e-4 * p.hardening[material::SwiftHardening::K];
     case 1: return 1e-5;
     case 2: return 1e-5;
     default: return 1e-4 * (p.kinematic == material::KinematicLaw::ziegler ? p.CA : std::max(p.CX, 1.0));

@@ -1,4 +1,5 @@
 // Single-step exactness of the return mapping where the exact answer is known.
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/return_mapping.hpp"
 #include "tests/support/cards.hpp"
 #include "tests/support/closed_form.hpp"
@@ -33,8 +34,8 @@ TEST(ReturnMapping, OneStepUniaxialIsExactForProportionalLoading) {
 // Perfect plasticity (n = 0): the stress stays on sigma_eq = K however far it is pushed.
 TEST(ReturnMapping, PerfectPlasticity) {
   auto card = spifit::test::card("aa3003o_c3c4");
-  card.params.n = 0.0;
-  card.params.K = 100.0;
+  card.params.hardening[SwiftHardening::n] = 0.0;
+  card.params.hardening[SwiftHardening::K] = 100.0;
   const ReturnMapping<double, 3> law(card.params);
   MaterialState<double, 3> s0, s1;
   ASSERT_TRUE(law.integrate(s0, Eigen::Vector3d(0.5, -0.2, 0.3), s1, nullptr).ok());

@@ -1,4 +1,5 @@
 // DofConstraints (supports, ties) and the cyclic ties of pies, solved by the Newton solver.
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/mesh/disc_mesh.hpp"
 #include "forward/model/cyclic_symmetry.hpp"
 #include "forward/model/hanging_nodes.hpp"
@@ -20,7 +21,7 @@ using model::ShellModel;
 
 material::MaterialParams<double> aluminium(bool plastic) {
   material::MaterialParams<double> p;
-  p.E = 70000.0; p.nu = 0.3; p.K = 100.0; p.eps0 = 0.001; p.n = 0.2; p.plastic = plastic;
+  p.E = 70000.0; p.nu = 0.3; p.hardening[material::SwiftHardening::K] = 100.0; p.hardening[material::SwiftHardening::eps0] = 0.001; p.hardening[material::SwiftHardening::n] = 0.2; p.plastic = plastic;
   return p;
 }
 

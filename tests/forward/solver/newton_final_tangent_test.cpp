@@ -1,6 +1,7 @@
 // NewtonOptions::skip_final_tangent: an iterate predicted to end its increment is assembled
 // without the tangent. The run must be the same, bit for bit, as one that assembles every
 // tangent, with fewer tangents assembled.
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/mesh/benchmark_meshes.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/solver/convergence_test.hpp"
@@ -21,7 +22,7 @@ struct PlasticStripRun {
 PlasticStripRun plastic_strip(bool skip_final_tangent) {
   const mesh::Mesh mesh = mesh::strip(10.0, 1.0, 10, 2);
   material::MaterialParams<double> p;
-  p.E = 70000.0; p.nu = 0.3; p.K = 100.0; p.eps0 = 0.001; p.n = 0.2; p.plastic = true;
+  p.E = 70000.0; p.nu = 0.3; p.hardening[material::SwiftHardening::K] = 100.0; p.hardening[material::SwiftHardening::eps0] = 0.001; p.hardening[material::SwiftHardening::n] = 0.2; p.plastic = true;
   model::ShellModel model(mesh, 1.0, p, {});
   DofConstraints constraints(model.num_dofs());
   for (int n : mesh.node_sets.at("clamped"))

@@ -1,3 +1,4 @@
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/mesh/benchmark_meshes.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/scenes/benchmark/shell_benchmarks.hpp"
@@ -17,7 +18,7 @@ using model::ShellModel;
 
 material::MaterialParams<double> aluminium(bool plastic) {
   material::MaterialParams<double> p;
-  p.E = 70000.0; p.nu = 0.3; p.K = 100.0; p.eps0 = 0.001; p.n = 0.2; p.plastic = plastic;
+  p.E = 70000.0; p.nu = 0.3; p.hardening[material::SwiftHardening::K] = 100.0; p.hardening[material::SwiftHardening::eps0] = 0.001; p.hardening[material::SwiftHardening::n] = 0.2; p.plastic = plastic;
   return p;
 }
 

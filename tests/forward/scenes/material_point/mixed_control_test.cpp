@@ -1,5 +1,6 @@
 // Plane strain and biaxial scenes against closed-form Hill yield points, and robustness of
 // the mixed-control Newton loop.
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/hill48.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
@@ -18,7 +19,7 @@ TEST(Biaxial, EquibiaxialYieldHill) {
   const auto r = scene::run_material_point(card.params, s);
   ASSERT_TRUE(r.ok) << r.message;
   // sigma_eq of equibiaxial sigma: 1/2 (G + F) sigma^2.
-  const double sb = material::swift_yield_stress(card.params, 0.0) * std::sqrt(2.0 / (card.params.F + card.params.G));
+  const double sb = material::hardening_stress(card.params, 0.0) * std::sqrt(2.0 / (card.params.F + card.params.G));
   ASSERT_FALSE(r.yield_events.empty());
   EXPECT_NEAR(r.yield_events[0].stress_kirchhoff / sb, 1.0, 1e-9);
   for (const auto& p : r.curve) EXPECT_NEAR(p.stress_material(1), p.stress_material(0), 1e-9 * (1 + std::abs(p.stress)));

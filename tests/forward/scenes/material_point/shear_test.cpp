@@ -1,6 +1,7 @@
 // Simple shear along RD (alpha = 0) for every card against the closed form
 // tau = sigma_F(p)/sqrt(N) + Xxy(p), gamma = tau/mu + sqrt(N) p, and the Bauschinger reverse
 // yield tau_rev = Xxy(p1) - sigma_F(p1)/sqrt(N).
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
 #include "tests/support/closed_form.hpp"
@@ -45,7 +46,7 @@ TEST(Bauschinger, ReverseYieldEveryPlasticCard) {
     ASSERT_TRUE(r.ok) << r.message;
     ASSERT_EQ(r.yield_events.size(), 3u);  // forward, reverse, re-loading
     const double p1 = test::plastic_strain_at(cf, g1, g1);
-    const double tau_rev = cf.back_stress(p1) - material::swift_yield_stress(card.params, p1) / std::sqrt(card.params.N);
+    const double tau_rev = cf.back_stress(p1) - material::hardening_stress(card.params, p1) / std::sqrt(card.params.N);
     EXPECT_LT(rel(r.yield_events[1].stress_kirchhoff, tau_rev), 1e-6);
     // The cumulative strain is a monotone abscissa through the reversals.
     for (std::size_t i = 1; i < r.curve.size(); ++i) EXPECT_GT(r.curve[i].cumulative_strain, r.curve[i - 1].cumulative_strain);

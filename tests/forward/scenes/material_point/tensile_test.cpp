@@ -1,5 +1,6 @@
 // Tensile scene against the closed-form Hill 1948 + Swift solution (card C.3 + C.4) and the
 // closed-form von Mises mixed-hardening solutions (docs/design/numerics-material.md).
+#include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/hill48.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
@@ -33,13 +34,13 @@ TEST_P(TensileHillSwift, MatchesClosedForm) {
 
   // Initial yield: K eps0^n / h (Kirchhoff, the law's measure).
   ASSERT_FALSE(r.yield_events.empty());
-  const double sy0 = material::swift_yield_stress(card.params, 0.0) / hf;
+  const double sy0 = material::hardening_stress(card.params, 0.0) / hf;
   EXPECT_LT(rel(r.yield_events.front().stress_kirchhoff, sy0), 1e-6);
   EXPECT_LT(rel(r.yield_events.front().stress, sy0), 1e-3);
 
   // 0.2 % offset: axial plastic strain 0.002 = h p, so p = 0.002 / h.
   ASSERT_TRUE(r.offset_yield_stress.has_value());
-  const double s02 = material::swift_yield_stress(card.params, 0.002 / hf) / hf;
+  const double s02 = material::hardening_stress(card.params, 0.002 / hf) / hf;
   EXPECT_LT(rel(*r.offset_yield_stress_kirchhoff, s02), 1e-6);
   EXPECT_LT(rel(*r.offset_yield_stress, s02), 1e-3);
 
@@ -87,7 +88,7 @@ TEST_P(TensileVonMisesKinematic, MonotonicAndReverseYield) {
   // Reverse yield at the analytic value: sigma_rev = offset(p1) - sigma_F(p1).
   ASSERT_EQ(r.yield_events.size(), 2u);
   const double p1 = test::plastic_strain_at(cf, eps_rev, eps_rev);
-  const double s_rev = cf.offset(p1) - material::swift_yield_stress(card.params, p1);
+  const double s_rev = cf.offset(p1) - material::hardening_stress(card.params, p1);
   EXPECT_EQ(r.yield_events[1].segment, 1);
   EXPECT_LT(rel(r.yield_events[1].stress_kirchhoff, s_rev), 1e-6) << card.name;
 }
@@ -102,7 +103,7 @@ TEST(TensileVonMisesKinematic, ArmstrongFrederickSaturatesAtOnePointFiveXsat) {
   const auto r = scene::run_material_point(card.params, test::tensile(0.0, {1.0}, 400));
   ASSERT_TRUE(r.ok);
   const auto& last = r.curve.back();
-  const double offset = last.stress_kirchhoff - material::swift_yield_stress(card.params, last.eqps);
+  const double offset = last.stress_kirchhoff - material::hardening_stress(card.params, last.eqps);
   EXPECT_NEAR(offset, 1.5 * 46.0, 1e-6);
   EXPECT_NEAR(last.back_stress(0), 46.0, 1e-6);   // X_xx -> Xsat
   EXPECT_NEAR(last.back_stress(1), -23.0, 1e-6);  // deviatoric: X_yy = X_zz = -Xsat / 2

@@ -1,0 +1,55 @@
+#include "forward/material/hardening/hardening_laws.hpp"
+
+#include <stdexcept>
+
+namespace spifit::material {
+namespace {
+
+template <std::size_t... I>
+std::vector<HardeningLawInfo> make_infos(std::index_sequence<I...>) {
+  std::vector<HardeningLawInfo> out;
+  (out.push_back(HardeningLawInfo{static_cast<int>(I), std::tuple_element_t<I, HardeningLawList>::name,
+                                  std::tuple_element_t<I, HardeningLawList>::title, std::tuple_element_t<I, HardeningLawList>::formula,
+                                  std::tuple_element_t<I, HardeningLawList>::initial_formula,
+                                  std::tuple_element_t<I, HardeningLawList>::coefficients()}),
+   ...);
+  return out;
+}
+
+}  // namespace
+
+const std::vector<HardeningLawInfo>& hardening_laws() {
+  static const std::vector<HardeningLawInfo> laws = make_infos(std::make_index_sequence<kHardeningLawCount>());
+  return laws;
+}
+
+const HardeningLawInfo& hardening_law(int id) {
+  if (id < 0 || id >= kHardeningLawCount) throw std::out_of_range("no hardening law with index " + std::to_string(id));
+  return hardening_laws()[static_cast<std::size_t>(id)];
+}
+
+const HardeningLawInfo* find_hardening_law(const std::string& name) {
+  for (const auto& l : hardening_laws())
+    if (l.name == name) return &l;
+  return nullptr;
+}
+
+std::string hardening_table_list() {
+  std::string s;
+  const auto& laws = hardening_laws();
+  for (std::size_t i = 0; i < laws.size(); ++i)
+    s += (i == 0 ? "" : i + 1 == laws.size() ? " or " : ", ") + ("[" + laws[i].name + "]");
+  return s;
+}
+
+void scale_hardening_strain(Hardening<double>& h, double factor) {
+  visit_hardening_law(h.law, [&](auto law) { decltype(law)::scale_strain(h.c.data(), factor); return 0; });
+}
+
+double hardening_resolution_strain(const Hardening<double>& h) {
+  return visit_hardening_law(h.law, [&](auto law) { return decltype(law)::resolution_strain(h.c.data()); });
+}
+
+bool is_perfectly_plastic(const MaterialParams<double>& m) { return hardening_stress(m, 1.0) == hardening_stress(m, 0.0); }
+
+}  // namespace spifit::material
