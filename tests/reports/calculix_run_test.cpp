@@ -2,7 +2,7 @@
 // 20 % log strain, compared with spifit's tensile scene (docs/results/validation.md, "CalculiX check").
 // Skipped when ccx is not installed (Debian package calculix-ccx).
 #include "reports/card_export.hpp"
-#include "reports/card_export_readers.hpp"
+#include "tests/support/card_export_readers.hpp"
 #include "reports/export_calculix_check.hpp"
 
 #include "forward/scenes/material_point/material_point_run.hpp"
@@ -109,7 +109,7 @@ TEST_P(CalculixTension, MatchesSpifitTensileScene) {
     card.name += "_h08067";
   }
   const std::string block = reports::export_calculix(card, nullptr);
-  const std::string name = reports::read_inp_material(block).name;
+  const std::string name = test::read_inp_material(block).name;
   reports::CalculixTensionOptions o;
   o.log_strain_path = {0.2};
   o.increments = 100;
@@ -165,7 +165,7 @@ ReversalDifferences run_reversal(const std::string& ccx, const material::Materia
   reports::CalculixTensionOptions o;
   o.log_strain_path = {0.2, 0.1};
   o.increments = 100;
-  const CcxRun run = run_ccx(ccx, reports::calculix_tension_deck(block, reports::read_inp_material(block).name, o));
+  const CcxRun run = run_ccx(ccx, reports::calculix_tension_deck(block, test::read_inp_material(block).name, o));
   EXPECT_TRUE(run.ok) << run.message;
   EXPECT_EQ(run.points.size(), 200u);
   if (!run.ok) return d;

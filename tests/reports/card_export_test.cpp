@@ -125,7 +125,7 @@ TEST_P(CardExport, AbaqusRoundTrip) {
   std::vector<std::string> notes;
   const std::string deck = reports::export_abaqus(c, &notes);
   ASSERT_FALSE(notes.empty());
-  const auto m = reports::read_inp_material(deck);
+  const auto m = test::read_inp_material(deck);
   EXPECT_EQ(m.name, reports::deck_material_name(c));
   EXPECT_EQ(m.E, c.params.E);
   EXPECT_EQ(m.nu, c.params.nu);
@@ -187,7 +187,7 @@ TEST_P(CardExport, AbaqusRoundTrip) {
 TEST_P(CardExport, AbaqusYieldSurfaceEqualsCard) {
   const auto c = card();
   if (!c.params.plastic) GTEST_SKIP() << "elastic-only card";
-  const auto m = reports::read_inp_material(reports::export_abaqus(c, nullptr));
+  const auto m = test::read_inp_material(reports::export_abaqus(c, nullptr));
   const material::AbaqusPotential r = m.potential.value_or(material::AbaqusPotential{});
   const auto& table = c.params.kinematic == KinematicLaw::none ? m.plastic : m.cyclic_hardening;
   const double h = expected(c).h;
@@ -208,7 +208,7 @@ TEST_P(CardExport, LsDynaRoundTrip) {
   const auto c = card();
   std::vector<std::string> notes;
   const std::string deck = reports::export_lsdyna(c, &notes);
-  const auto m = reports::read_lsdyna_material(deck);
+  const auto m = test::read_lsdyna_material(deck);
   EXPECT_EQ(m.title, reports::deck_material_name(c));
   EXPECT_EQ(m.mid, 1);
   EXPECT_EQ(m.ro, c.density);
@@ -253,7 +253,7 @@ TEST_P(CardExport, CalculixRoundTrip) {
   std::vector<std::string> notes;
   const std::string deck = reports::export_calculix(c, &notes);
   check_calculix_widths(deck);
-  const auto m = reports::read_inp_material(deck);
+  const auto m = test::read_inp_material(deck);
   EXPECT_EQ(m.E, c.params.E);
   EXPECT_EQ(m.nu, c.params.nu);
   EXPECT_EQ(m.density.value_or(0.0), c.density);
@@ -272,7 +272,7 @@ TEST_P(CardExport, CalculixRoundTrip) {
   o.calculix_combined_hardening = true;
   const std::string combined = reports::export_calculix(c, nullptr, o);
   check_calculix_widths(combined);
-  const auto mc = reports::read_inp_material(combined);
+  const auto mc = test::read_inp_material(combined);
   EXPECT_EQ(mc.hardening, "COMBINED");
   check_table(c, mc.cyclic_hardening, false, 1e-13, "*CYCLIC HARDENING");
   // Kinematic curve: sigma_0(0) + X_RD(ebar).
@@ -396,7 +396,7 @@ TEST(CardExportOptions, Validation) {
   o = {};
   o.table_points = 20;
   o.max_plastic_strain = 1.0;
-  const auto m = reports::read_inp_material(reports::export_abaqus(test::card("aa3003o_c3c4"), nullptr, o));
+  const auto m = test::read_inp_material(reports::export_abaqus(test::card("aa3003o_c3c4"), nullptr, o));
   ASSERT_EQ(m.plastic.size(), 21u);
   EXPECT_EQ(m.plastic.back()[1], 1.0);
 }
@@ -423,12 +423,12 @@ TEST(CardExportFormat, NamesAndNumbers) {
 }
 
 TEST(CardExportReaders, RejectMalformedDecks) {
-  EXPECT_THROW(reports::read_inp_material("*ELASTIC\n1, 2\n"), std::runtime_error);
-  EXPECT_THROW(reports::read_inp_material("*MATERIAL, NAME=A\n*ELASTIC\n72600, abc\n"), std::runtime_error);
-  EXPECT_THROW(reports::read_inp_material("*MATERIAL, NAME=A\n*DENSITY\n1e-9\n"), std::runtime_error);
-  EXPECT_THROW(reports::read_lsdyna_material("*KEYWORD\n*END\n"), std::runtime_error);
+  EXPECT_THROW(test::read_inp_material("*ELASTIC\n1, 2\n"), std::runtime_error);
+  EXPECT_THROW(test::read_inp_material("*MATERIAL, NAME=A\n*ELASTIC\n72600, abc\n"), std::runtime_error);
+  EXPECT_THROW(test::read_inp_material("*MATERIAL, NAME=A\n*DENSITY\n1e-9\n"), std::runtime_error);
+  EXPECT_THROW(test::read_lsdyna_material("*KEYWORD\n*END\n"), std::runtime_error);
   // Abaqus syntax variants: blanks in parameter names, lower case, D exponents.
-  const auto m = reports::read_inp_material(
+  const auto m = test::read_inp_material(
       "*Material, name=Al\n*Elastic\n7.26D+04, 0.36,\n*Plastic, hardening=combined, data type=parameters\n"
       "42.9, 3000, 56.9\n*Cyclic Hardening\n42.9, 0\n100, 1\n*Step\n");
   EXPECT_EQ(m.name, "Al");

@@ -1,6 +1,6 @@
 #pragma once
-// Readers for the decks written by card_export.hpp: they parse the numbers back (round-trip
-// tests, and a check of a deck edited by hand). Abaqus and CalculiX share the keyword syntax
+// Readers for the decks written by reports/card_export.hpp: they parse the numbers back for the
+// round-trip tests. Abaqus and CalculiX share the keyword syntax
 // (*KEYWORD, PARAM=VALUE lines, comma-separated data lines, ** comments); LS-DYNA decks are
 // read in fixed 10- or 20-character fields (long format, *KEYWORD LONG=Y) or comma-separated.
 // Malformed input throws std::runtime_error naming the line.
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-namespace spifit::reports {
+namespace spifit::test {
 
 struct InpKeyword {
   std::string name;  // upper case, single blanks: "PLASTIC", "CYCLIC HARDENING"
@@ -56,4 +56,4 @@ struct LsDynaMaterial {
 
 LsDynaMaterial read_lsdyna_material(const std::string& deck);
 
-}  // namespace spifit::reports
+}  // namespace spifit::test

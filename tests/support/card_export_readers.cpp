@@ -1,4 +1,4 @@
-#include "reports/card_export_readers.hpp"
+#include "tests/support/card_export_readers.hpp"
 
 #include "forward/io/input_error.hpp"
 
@@ -8,7 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace spifit::reports {
+namespace spifit::test {
 
 namespace {
 
@@ -307,4 +307,4 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
   throw std::runtime_error("*DEFINE_CURVE " + std::to_string(m.lcid) + " (LCID of *" + mat->name + ") not found");
 }
 
-}  // namespace spifit::reports
+}  // namespace spifit::test
