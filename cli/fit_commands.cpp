@@ -13,6 +13,7 @@
 #include "forward/scenes/material_point/material_point_file.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/run_fit.hpp"
+#include "inverse/fit_algorithms.hpp"
 #include "inverse/fit_file.hpp"
 #include "inverse/evaluation_cache.hpp"
 #include "inverse/fe_evaluation_job.hpp"
@@ -133,7 +134,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   auto* cmd = app.add_subcommand("fit", "Identify material parameters: fit a card to the experiments of a fit file (Ceres)");
   cmd->add_option("FIT", o->file, "fit file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory (fit.json, card.toml, experiments/*.csv)")->required();
-  cmd->add_option("--algorithm", o->algorithm, std::string("override the fit file: ") + inverse::fit_algorithm_names());
+  cmd->add_option("--algorithm", o->algorithm, "override the fit file: " + inverse::fit_algorithm_names());
   cmd->add_flag("--force", o->force, "replace an existing spifit output directory");
   cmd->add_flag("--resume", o->resume, "continue a killed fit in its output directory: the FE evaluations it finished are read back, not run")
       ->excludes("--force");
@@ -141,7 +142,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_option("--multistart", o->multistart, "number of starts (overrides [fit] multistart)")->check(CLI::Range(1, 10000));
   cmd->callback([o, &g, &exit_code] {
     if (!o->algorithm.empty() && !inverse::is_fit_algorithm(o->algorithm)) {
-      throw io::InputError("", "--algorithm", o->algorithm, std::string("unknown algorithm (known: ") + inverse::fit_algorithm_names() + ")");
+      throw io::InputError("", "--algorithm", o->algorithm, "unknown algorithm (known: " + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file);
     if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out

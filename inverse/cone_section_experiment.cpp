@@ -1,10 +1,6 @@
 #include "inverse/cone_section_experiment.hpp"
 
-#include "forward/scenes/common/table_scene.hpp"
-#include "forward/scenes/cone/cone_observables.hpp"
-#include "forward/scenes/cone/cone_scene.hpp"
-#include "forward/scenes/scene_registry.hpp"
-#include "inverse/fe_experiment_file.hpp"
+#include "inverse/fe_curve_data.hpp"
 #include "inverse/measurement.hpp"
 
 #include <algorithm>

@@ -2,7 +2,6 @@
 
 #include "forward/io/binary_archive.hpp"
 #include "forward/material/material_inputs.hpp"
-#include "inverse/fit_file.hpp"
 
 #include <stdexcept>
 
@@ -119,36 +118,12 @@ std::string failed_fe_answer(const std::string& why) {
   return encode_answer(a);
 }
 
-JobHandler fe_evaluation_handler(const FitProblem& problem) {
-  return [&problem](const std::string& job) {
-    FeEvaluationAnswer a;
-    try {
-      io::BinaryReader r(job, kJobKind, kVersion);
-      const std::string name = r.string();
-      const SceneRuns& runs = *problem.scene_runs;
-      const ParameterPoint p = read_point(r, runs.base());
-      const Experiment* asked = nullptr;
-      for (const auto& x : problem.experiments)
-        if (x->name() == name) asked = x.get();
-      if (!asked || asked->scene_file().empty()) throw std::runtime_error("no FE experiment " + name + " in the worker's fit file");
-      const std::size_t logged = runs.run_log().size(), failed = runs.failures().size();
-      for (const auto& x : problem.experiments) {
-        if (x->scene_file() != asked->scene_file()) continue;
-        FeEvaluationAnswer::Residuals e{x->name(), false, std::vector<double>(static_cast<std::size_t>(x->num_residuals()))};
-        e.ok = x->residuals(p, e.values.data());
-        if (!e.ok) e.values.clear();
-        a.experiments.push_back(std::move(e));
-      }
-      const auto log = runs.run_log();
-      const auto failures = runs.failures();
-      a.runs.assign(log.begin() + static_cast<std::ptrdiff_t>(logged), log.end());
-      a.failures.assign(failures.begin() + static_cast<std::ptrdiff_t>(failed), failures.end());
-    } catch (const std::exception& e) {
-      a.experiments.clear();
-      a.error = e.what();
-    }
-    return encode_answer(a);
-  };
+FeEvaluationJob decode_fe_evaluation_job(const std::string& bytes, const material::MaterialParams<double>& base) {
+  io::BinaryReader r(bytes, kJobKind, kVersion);
+  FeEvaluationJob job;
+  job.experiment = r.string();
+  job.point = read_point(r, base);
+  return job;
 }
 
 }  // namespace spifit::inverse

@@ -12,8 +12,6 @@
 
 namespace spifit::inverse {
 
-struct FitProblem;
-
 struct FeEvaluationAnswer {
   struct Residuals {
     std::string experiment;
@@ -33,9 +31,12 @@ FeEvaluationAnswer decode_fe_answer(const std::string& bytes);
 // evaluation, listed among the fit's failures.
 std::string failed_fe_answer(const std::string& why);
 
-// The worker's side: evaluates the experiments of `problem` (read from the same fit file as rank
-// 0's) on the job's experiment's scene file at its point, on this process's own SceneRuns (no
-// cache, no pool).
-JobHandler fe_evaluation_handler(const FitProblem& problem);
+// A job as the worker reads it: the experiment asked for and the point, whose law is the base
+// card's (the worker reads the same fit file).
+struct FeEvaluationJob {
+  std::string experiment;
+  ParameterPoint point;
+};
+FeEvaluationJob decode_fe_evaluation_job(const std::string& bytes, const material::MaterialParams<double>& base);
 
 }  // namespace spifit::inverse

@@ -19,11 +19,6 @@ namespace fs = std::filesystem;
 using io::format_number;
 using io::InputError;
 
-const char* fit_algorithm_names() {
-  return "levenberg_marquardt, dogleg (Ceres); bobyqa, cobyla, nelder_mead, sbplx, direct_l, crs2, isres, mlsl (NLopt)";
-}
-bool is_fit_algorithm(const std::string& n) { return n == "levenberg_marquardt" || n == "dogleg" || is_nlopt_algorithm(n); }
-
 namespace {
 
 // scene_info: the named input of the FE scenes for a scene-input parameter, else null.
@@ -75,7 +70,7 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   *normalise = ft->boolean("normalise_hill", true);
   auto& st = fp.settings;
   st.algorithm = ft->string("algorithm", st.algorithm);
-  if (!is_fit_algorithm(st.algorithm)) ft->fail("algorithm", std::string("unknown algorithm (known: ") + fit_algorithm_names() + ")");
+  if (!is_fit_algorithm(st.algorithm)) ft->fail("algorithm", "unknown algorithm (known: " + fit_algorithm_names() + ")");
   st.max_iterations = ft->integer("max_iterations", st.max_iterations);
   if (st.max_iterations < 1) ft->fail("max_iterations", "must be >= 1");
   st.function_tolerance = ft->number("function_tolerance", st.function_tolerance);

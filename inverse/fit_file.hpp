@@ -50,7 +50,4 @@ struct FitProblem {
 // data column, measured abscissa outside the simulated range, ...).
 FitProblem read_fit_file(const std::string& path);
 
-const char* fit_algorithm_names();
-bool is_fit_algorithm(const std::string& name);
-
 }  // namespace spifit::inverse

@@ -1,6 +1,7 @@
 #include "inverse/multistart.hpp"
 
 #include "inverse/ceres_fit.hpp"
+#include "inverse/fit_algorithms.hpp"
 #include "inverse/nlopt_fit.hpp"
 
 #include <chrono>

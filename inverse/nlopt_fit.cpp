@@ -1,5 +1,6 @@
 #include "inverse/nlopt_fit.hpp"
 
+#include "inverse/fit_algorithms.hpp"
 #include "inverse/solution_analysis.hpp"
 
 #include <nlopt.hpp>
@@ -12,18 +13,6 @@
 namespace spifit::inverse {
 
 namespace {
-
-struct AlgorithmName {
-  const char* name;
-  nlopt::algorithm algorithm;
-  bool global;
-};
-
-const AlgorithmName kAlgorithms[] = {
-    {"bobyqa", nlopt::LN_BOBYQA, false},   {"cobyla", nlopt::LN_COBYLA, false},   {"nelder_mead", nlopt::LN_NELDERMEAD, false},
-    {"sbplx", nlopt::LN_SBPLX, false},     {"direct_l", nlopt::GN_DIRECT_L, true}, {"crs2", nlopt::GN_CRS2_LM, true},
-    {"isres", nlopt::GN_ISRES, true},      {"mlsl", nlopt::G_MLSL_LDS, true},
-};
 
 struct Objective {
   const FitProblem* problem;
@@ -54,13 +43,6 @@ double objective(unsigned n, const double* x, double* grad, void* data) {
 
 }  // namespace
 
-const char* nlopt_algorithm_names() { return "bobyqa, cobyla, nelder_mead, sbplx, direct_l, crs2, isres, mlsl"; }
-
-bool is_nlopt_algorithm(const std::string& name) {
-  for (const auto& a : kAlgorithms) if (name == a.name) return true;
-  return false;
-}
-
 FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   const ParameterSet& ps = *fp.parameters;
@@ -68,15 +50,15 @@ FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
   FitResult out;
   out.algorithm = options.algorithm.empty() ? fp.settings.algorithm : options.algorithm;
   out.seed = options.seed;
-  const AlgorithmName* alg = nullptr;
-  for (const auto& a : kAlgorithms) if (out.algorithm == a.name) alg = &a;
-  if (!alg) throw std::invalid_argument("not an NLopt algorithm: " + out.algorithm);
+  const FitAlgorithm* found = find_fit_algorithm(out.algorithm);
+  if (!found || found->engine != FitAlgorithm::Engine::nlopt) throw std::invalid_argument("not an NLopt algorithm: " + out.algorithm);
+  const nlopt::algorithm algorithm = static_cast<nlopt::algorithm>(found->nlopt_code);
 
   std::vector<double> x = ps.initial_internal();
   for (unsigned k = 0; k < p; ++k) out.initial.push_back(ps.to_physical(static_cast<int>(k), x[k]));
   const auto lo = ps.lower_internal(), hi = ps.upper_internal();
   nlopt::srand(options.seed);
-  nlopt::opt opt(alg->algorithm, p);
+  nlopt::opt opt(algorithm, p);
   opt.set_lower_bounds(lo);
   opt.set_upper_bounds(hi);
   std::vector<double> step(p);
@@ -87,13 +69,13 @@ FitResult fit_with_nlopt(const FitProblem& fp, const FitRunOptions& options) {
   const int max_eval = static_cast<int>(std::clamp(50L * fp.settings.max_iterations * static_cast<long>(p), 200L, 100000000L));
   opt.set_maxeval(max_eval);
   nlopt::opt local(nlopt::LN_BOBYQA, p);
-  if (alg->algorithm == nlopt::G_MLSL_LDS) {
+  if (algorithm == nlopt::G_MLSL_LDS) {
     local.set_xtol_rel(fp.settings.parameter_tolerance);
     local.set_ftol_rel(fp.settings.function_tolerance);
     local.set_maxeval(max_eval / 10);
     opt.set_local_optimizer(local);
   }
-  if (alg->algorithm == nlopt::GN_ISRES || alg->algorithm == nlopt::GN_CRS2_LM) opt.set_population(0);
+  if (algorithm == nlopt::GN_ISRES || algorithm == nlopt::GN_CRS2_LM) opt.set_population(0);
   Objective obj{&fp, options.progress.get(), 0, 0, std::numeric_limits<double>::infinity(), {}, {}};
   opt.set_min_objective(objective, &obj);
   Eigen::VectorXd r0;

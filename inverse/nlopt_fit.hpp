@@ -10,9 +10,6 @@ namespace spifit::inverse {
 
 constexpr double kFailedRunCost = 1e30;
 
-const char* nlopt_algorithm_names();
-bool is_nlopt_algorithm(const std::string& name);
-
 FitResult fit_with_nlopt(const FitProblem& problem, const FitRunOptions& options);
 
 }  // namespace spifit::inverse

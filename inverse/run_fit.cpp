@@ -4,6 +4,7 @@
 #include "inverse/conflicts.hpp"
 #include "inverse/fit_assessment.hpp"
 #include "inverse/multistart.hpp"
+#include "inverse/fit_algorithms.hpp"
 #include "inverse/nlopt_fit.hpp"
 
 #include <algorithm>
