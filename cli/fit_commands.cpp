@@ -280,7 +280,7 @@ void add_synth_command(CLI::App& app, const GlobalOptions& g, int& exit_code, co
     if (!k) (void)scene::read_scene(o->scene);  // names the unknown kind and the known ones
     if (std::filesystem::exists(o->out) && !o->force) throw io::InputError("", "--out", o->out, "file exists; pass --force to overwrite");
     o->syn.command = command_line;
-    const bool fe = k->family != "material_point";
+    const bool fe = !k->jets;
     if (fe) {
       if (cmd->count("--x") == 0) o->syn.x = o->section.empty() ? "depth" : "x";
       if (cmd->count("--y") == 0) o->syn.y = o->section.empty() ? "fz" : "z";

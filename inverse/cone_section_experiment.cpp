@@ -12,18 +12,6 @@ namespace {
 using io::format_number;
 using io::InputError;
 
-const scene::ConeScene* cone_data(const scene::Scene& s) {
-  const auto* t = dynamic_cast<const scene::TableScene<scene::ConeScene>*>(&s);
-  return t ? &t->data() : nullptr;
-}
-
-double point_value(const scene::SectionPoint& p, const std::string& c) {
-  if (c == "r") return p.r;
-  if (c == "r0") return p.r0;
-  if (c == "z") return p.z;
-  return p.thickness;
-}
-
 // "last" or "contour K" with 1 <= K <= contours: K; else fails on key section.
 int section_contour(const io::TomlTable& e, const std::string& scene_name, int contours) {
   const std::string v = e.string("section");
@@ -70,22 +58,10 @@ void read_data(const io::TomlTable& e, const std::string& path, double clamp_rad
 bool is_cone_section_abscissa(const std::string& x) { return x == "r" || x == "r0"; }
 bool is_cone_section_response(const std::string& y) { return y == "z" || y == "thickness"; }
 
-bool is_cone_family_scene(const scene::Scene& s) {
-  const scene::SceneKind* k = scene::find_scene_kind(s.kind());
-  return k && k->family == "cone" && cone_data(s);
-}
 
-ForceCurve cone_section_curve(const scene::ConeResult& r, int contour, const std::string& x, const std::string& y) {
-  ForceCurve c;
-  if (contour < 1 || static_cast<std::size_t>(contour) > r.section_profiles.size()) return c;
-  std::vector<scene::SectionPoint> points = r.section_profiles[static_cast<std::size_t>(contour - 1)].points;
-  std::stable_sort(points.begin(), points.end(), [&](const auto& a, const auto& b) { return point_value(a, x) < point_value(b, x); });
-  for (const auto& p : points) {
-    if (!c.x.empty() && !(point_value(p, x) > c.x.back())) return {};  // two nodes at one r: a fold
-    c.x.push_back(point_value(p, x));
-    c.y.push_back(point_value(p, y));
-  }
-  return c;
+ForceCurve cone_section_curve(const scene::SceneResult& r, int contour, const std::string& x, const std::string& y) {
+  scene::ResultCurve c = r.contour_section(contour, x, y);
+  return {std::move(c.x), std::move(c.y)};
 }
 
 std::unique_ptr<Experiment> make_cone_section_experiment(ConeSectionSpec s) {
@@ -93,21 +69,19 @@ std::unique_ptr<Experiment> make_cone_section_experiment(ConeSectionSpec s) {
   const std::string x = s.x, y = s.y;
   FeCurve curve{s.x, s.y, "mm", "mm", std::move(s.xs), std::move(s.ys), std::move(s.point_weights)};
   return make_fe_curve_experiment(s, "cone_section", std::move(curve), [contour, x, y](const scene::SceneResult& r, const ParameterPoint&) {
-    const auto* cone = dynamic_cast<const scene::ConeResult*>(&r);
-    return cone ? cone_section_curve(*cone, contour, x, y) : ForceCurve{};
+    return cone_section_curve(r, contour, x, y);
   });
 }
 
 std::unique_ptr<Experiment> read_cone_section_experiment(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
   ConeSectionSpec c;
   static_cast<FeExperimentBase&>(c) = std::move(base);
-  const scene::ConeScene& cone = *cone_data(*c.scene);
   c.contour = section_contour(e, c.scene->name(), c.scene->contours());
   c.x = e.string("x", "r");
   c.y = e.string("y", "z");
   if (!is_cone_section_abscissa(c.x)) e.fail("x", "not an abscissa of a cone section (known: r, r0)");
   if (!is_cone_section_response(c.y)) e.fail("y", "not a column of a cone section (known: z, thickness)");
-  read_data(e, path, cone.clamp_radius, &c);
+  read_data(e, path, c.scene->input("sheet.clamp_radius"), &c);
   return make_cone_section_experiment(std::move(c));
 }
 

@@ -6,7 +6,8 @@
 // r, as the sections of forming scenes are (fe_experiment.hpp, SectionSpec). The data may be a
 // `spifit scan` section.csv: its columns r [mm], z [mm] and std [mm].
 #include "forward/io/toml_reader.hpp"
-#include "forward/scenes/cone/cone_result.hpp"
+#include "forward/scenes/common/scene.hpp"
+#include "forward/scenes/common/scene_result.hpp"
 #include "inverse/fe_experiment.hpp"
 
 #include <memory>
@@ -25,13 +26,11 @@ bool is_cone_section_abscissa(const std::string& x);
 bool is_cone_section_response(const std::string& y);
 
 // y against x of the section after `contour` (1-based, path order), nodes ordered by x; empty when
-// the run has not taken it or x does not increase along it (a fold).
-ForceCurve cone_section_curve(const scene::ConeResult& r, int contour, const std::string& x, const std::string& y);
+// the run has not taken it or x does not increase along it (a fold): SceneResult::contour_section.
+ForceCurve cone_section_curve(const scene::SceneResult& r, int contour, const std::string& x, const std::string& y);
 
-// True for a scene of the cone family (its sections are radial: read_cone_section_experiment).
-bool is_cone_family_scene(const scene::Scene& s);
-
-// section = "last" | "contour K" on a cone scene; e: the [[experiment]] table of fit file
+// section = "last" | "contour K" on a scene with contours (Scene::contours() > 0: its sections
+// are radial, taken after each contour, out to its sheet.clamp_radius); e: the [[experiment]] table of fit file
 // `path`. data: columns x and y [mm]; noise_column: per-point standard deviations [mm] instead
 // of noise or noise_relative. Errors name the file, key and value.
 std::unique_ptr<Experiment> read_cone_section_experiment(const io::TomlTable& e, const std::string& path, FeExperimentBase base);

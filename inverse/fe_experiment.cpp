@@ -1,7 +1,5 @@
 #include "inverse/fe_experiment.hpp"
 
-#include "forward/scenes/cone/cone_result.hpp"
-#include "forward/scenes/forming/forming_result.hpp"
 #include "inverse/fe_evaluation_job.hpp"
 #include "inverse/measurement_plausibility.hpp"
 
@@ -212,13 +210,13 @@ class ForceCurveExperiment final : public CurveFeExperiment {
 
  private:
   ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const override {
-    const auto* fe = dynamic_cast<const scene::FeSceneResult*>(&r);
-    if (!fe) return {};
+    const scene::ToolForceHistory* force = r.tool_force();
+    if (!force) return {};
     // The scene inputs of p may move the tool (tool.radius) or the sheet (sheet.thickness); the
     // tool path lifts the tip by t/2 + R, so its start moves with them.
     const double t = input_at(p, "sheet.thickness", thickness_), radius = input_at(p, "tool.radius", radius_);
     const Eigen::Vector3d start = start_ + Eigen::Vector3d(0.0, 0.0, 0.5 * (t - thickness_) + (radius - radius_));
-    return force_curve(fe->force, start, t, radius, x_, y_);
+    return force_curve(*force, start, t, radius, x_, y_);
   }
   static double input_at(const ParameterPoint& p, const char* name, double fallback) {
     for (const auto& [n, v] : p.scene)
@@ -242,16 +240,6 @@ class SectionExperiment final : public CurveFeExperiment {
 
 }  // namespace
 
-double contour_mean_value(const scene::ContourMean& m, const std::string& y) {
-  if (y == "fr") return m.polar.x();
-  if (y == "ftheta") return m.polar.y();
-  if (y == "fz") return m.polar.z();
-  if (y == "fx") return m.force.x();
-  if (y == "fy") return m.force.y();
-  if (y == "ftheta_over_fz") return m.polar.y() / m.polar.z();
-  return m.polar.x() / m.polar.z();  // fr_over_fz
-}
-
 namespace {
 
 class ContourMeansExperiment final : public CurveFeExperiment {
@@ -262,16 +250,10 @@ class ContourMeansExperiment final : public CurveFeExperiment {
 
  private:
   ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint&) const override {
-    ForceCurve c;
-    const auto* cone = dynamic_cast<const scene::ConeResult*>(&r);
-    if (!cone) return c;
-    for (std::size_t i = 0; i < cone->contours.size(); ++i) {
-      const double v = contour_mean_value(cone->contours[i], y_);
+    scene::ResultCurve m = r.contour_means(y_);
+    for (double v : m.y)
       if (!std::isfinite(v)) return {};  // a contour without samples: nothing to compare
-      c.x.push_back(static_cast<double>(i + 1));
-      c.y.push_back(v);
-    }
-    return c;
+    return {std::move(m.x), std::move(m.y)};
   }
   std::string y_;
 };
@@ -279,12 +261,6 @@ class ContourMeansExperiment final : public CurveFeExperiment {
 }  // namespace
 
 std::unique_ptr<Experiment> make_contour_means_experiment(ContourMeansSpec spec) { return std::make_unique<ContourMeansExperiment>(spec); }
-const char* contour_mean_names() { return "fr, ftheta, fz, fx, fy, ftheta_over_fz, fr_over_fz"; }
-bool is_contour_mean(const std::string& y) {
-  for (const char* n : {"fr", "ftheta", "fz", "fx", "fy", "ftheta_over_fz", "fr_over_fz"})
-    if (y == n) return true;
-  return false;
-}
 
 std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated) {
   return std::make_unique<FunctionCurveExperiment>(base, kind, std::move(curve), std::move(simulated));
@@ -295,23 +271,8 @@ bool is_section_abscissa(const std::string& x) { return x == "x" || x == "x0"; }
 bool is_section_response(const std::string& y) { return y == "z" || y == "thickness"; }
 
 ForceCurve section_curve(const scene::SceneResult& r, const std::string& point, const std::string& x, const std::string& y) {
-  ForceCurve c;
-  const auto* f = dynamic_cast<const scene::FormingResult*>(&r);
-  if (!f) return c;
-  for (const auto& s : f->sections) {
-    if (s.point != point) continue;
-    const std::vector<double> xs = s.nodes.column(x), ys = s.nodes.column(y);
-    std::vector<std::size_t> order(xs.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return xs[a] < xs[b]; });
-    for (std::size_t i : order) {
-      if (!c.x.empty() && !(xs[i] > c.x.back())) return {};  // two nodes at one x: a fold
-      c.x.push_back(xs[i]);
-      c.y.push_back(ys[i]);
-    }
-    break;
-  }
-  return c;
+  scene::ResultCurve c = r.path_section(point, x, y);
+  return {std::move(c.x), std::move(c.y)};
 }
 
 std::unique_ptr<Experiment> make_fe_scalar_experiment(FeScalarSpec spec) { return std::make_unique<FeScalarExperiment>(std::move(spec)); }

@@ -6,7 +6,6 @@
 // shared by the experiments on the same scene); derivatives are central differences.
 #include "forward/scenes/common/fe_scene_result.hpp"
 #include "forward/scenes/common/scene.hpp"
-#include "forward/scenes/cone/cone_observables.hpp"
 #include "inverse/experiment.hpp"
 #include "inverse/scene_runs.hpp"
 
@@ -74,10 +73,6 @@ struct ContourMeansSpec : FeExperimentBase {
   std::vector<double> contours, ys, point_weights;
 };
 std::unique_ptr<Experiment> make_contour_means_experiment(ContourMeansSpec spec);
-const char* contour_mean_names();
-bool is_contour_mean(const std::string& y);
-// One value of a contour's means: a component or a ratio (contour_mean_names()).
-double contour_mean_value(const scene::ContourMean& m, const std::string& y);
 
 // depth (of the tool tip below the initial top surface, mm), travel (mm along the path), time (s).
 const char* force_curve_abscissa_names();
@@ -99,8 +94,8 @@ ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& 
 // The range [x at the start, x where it stops increasing] of an abscissa along a tool centre path.
 std::pair<double, double> force_curve_range(const toolpath::ToolPath& centre, double thickness, double tool_radius, const std::string& x);
 
-// The section's y against x from a forming result (nodes ordered by x); empty when the result
-// has no section at `point` or x does not increase along it.
+// The section's y against x at a named path point (SceneResult::path_section); empty when the
+// result has no section at `point` or x does not increase along it.
 ForceCurve section_curve(const scene::SceneResult& r, const std::string& point, const std::string& x, const std::string& y);
 
 }  // namespace spifit::inverse

@@ -88,9 +88,9 @@ std::unique_ptr<Experiment> section(const io::TomlTable& e, const std::string& p
 std::unique_ptr<Experiment> contour_means(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {
   ContourMeansSpec c;
   static_cast<FeExperimentBase&>(c) = std::move(base);
-  if (scene::find_scene_kind(c.scene->kind())->family != "cone") e.fail("contour_means", "only for cone scenes (contours of a cone)");
+  if (c.scene->contours() == 0) e.fail("contour_means", "only for scenes with contours: scene " + c.scene->name() + " (kind " + c.scene->kind() + ") has none");
   c.y = e.string("contour_means");
-  if (!is_contour_mean(c.y)) e.fail("contour_means", std::string("not a contour mean (known: ") + contour_mean_names() + ")");
+  if (!scene::is_contour_mean(c.y)) e.fail("contour_means", std::string("not a contour mean (known: ") + scene::contour_mean_names() + ")");
   for (const char* k : {"x", "y"})
     if (e.has(k)) e.fail(k, "contour means take the columns contour and " + c.y + " of the data file");
   const bool ratio = c.y.size() > 7 && c.y.compare(c.y.size() - 7, 7, "_over_fz") == 0;
@@ -124,7 +124,7 @@ std::unique_ptr<Experiment> read_fe_experiment(const io::TomlTable& e, const std
   }
   for (const char* k : {"value", "window", "contours"})
     if (e.has(k)) e.fail(k, "a curve (data = ...) takes no scalar keys; a scalar needs observable = ...");
-  const bool cone_section = e.has("section") && is_cone_family_scene(*base.scene);
+  const bool cone_section = e.has("section") && base.scene->contours() > 0;
   if (e.has("noise_column") && !cone_section) e.fail("noise_column", "only for the sections of cone scenes (section = ...)");
   if (cone_section) return read_cone_section_experiment(e, path, std::move(base));
   if (e.has("section")) return section(e, path, std::move(base));

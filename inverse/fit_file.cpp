@@ -171,7 +171,7 @@ std::unique_ptr<Experiment> read_experiment(const io::TomlTable& e, const std::s
   if (!fs::exists(scene_path)) e.fail("scene", "scene file not found at " + scene_path);
   const scene::SceneKind* kind = scene::find_scene_kind(scene::scene_kind_of_file(scene_path));
   if (!kind) (void)scene::read_scene(scene_path);  // names the unknown kind and the known ones
-  const bool fe = kind->family != "material_point";
+  const bool fe = !kind->jets;  // FE scenes: experiments on the scene's typed result; Jet scenes: material-point experiments
   if (fe) e.allow_only(fe_experiment_keys());
   else allow_material_point_keys(e);
   std::shared_ptr<const scene::Scene> fe_scene;

@@ -76,17 +76,32 @@ void read_metrics(const io::TomlTable& st, SweepSpec& s) {
   }
 }
 
+// Whether any observable of the kind needs the option, and the kinds that have one that does.
+bool kind_needs(const scene::SceneKind& k, scene::Observable::Needs needs) {
+  for (const auto& o : k.observables)
+    if (o.needs == needs) return true;
+  return false;
+}
+std::string kinds_needing(scene::Observable::Needs needs) {
+  std::string s;
+  for (const auto& k : scene::scene_kinds())
+    if (kind_needs(k, needs)) s += (s.empty() ? "" : ", ") + k.name;
+  return s;
+}
+
 void read_options(const io::TomlTable& st, SweepSpec& s) {
-  const std::string family = s.kind->family;
+  using Needs = scene::Observable::Needs;
   if (st.has("window")) {
-    if (family != "forming") st.fail("window", "only for forming scenes (indent, indent_line, line)");
+    if (!kind_needs(*s.kind, Needs::window))
+      st.fail("window", "only for scene kinds with metrics over a travel window (" + kinds_needing(Needs::window) + "), not " + s.kind->name);
     const auto w = st.number_list("window");
     if (w.size() != 2) st.fail("window", "expected [from_mm, to_mm] (tool travel)");
     if (!(w[0] >= 0.0 && w[1] > w[0])) st.fail("window", "expected 0 <= from_mm < to_mm (tool travel)");
     s.options.window = std::array<double, 2>{w[0], w[1]};
   }
   if (st.has("contours")) {
-    if (family != "cone") st.fail("contours", "only for cone scenes");
+    if (!kind_needs(*s.kind, Needs::contours))
+      st.fail("contours", "only for scene kinds with metrics over contours (" + kinds_needing(Needs::contours) + "), not " + s.kind->name);
     const auto c = st.number_list("contours");
     if (c.size() != 2 || c[0] != std::floor(c[0]) || c[1] != std::floor(c[1]) || !(c[0] >= 1 && c[1] >= c[0]))
       st.fail("contours", "expected [from, to]: whole contour numbers with 1 <= from <= to");

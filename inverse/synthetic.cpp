@@ -3,7 +3,6 @@
 #include "forward/io/csv_writer.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/common/fe_scene_result.hpp"
-#include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/material_point/curve_columns.hpp"
 #include "inverse/fe_experiment.hpp"
 
@@ -72,8 +71,9 @@ std::string synthetic_force_curve_csv(const scene::Scene& sc, const SyntheticOpt
   if (!path || !sc.card()) throw io::InputError(sc.file(), "scene.kind", sc.kind(), "has no tool force to write");
   const auto r = sc.run(scene::RunFiles(), {});
   if (!r->ok()) throw std::runtime_error("scene " + sc.name() + " failed: " + r->message);
-  const auto& fe = dynamic_cast<const scene::FeSceneResult&>(*r);
-  const ForceCurve c = force_curve(fe.force, path->at_distance(0.0), sc.input("sheet.thickness"), sc.input("tool.radius"), o.x, o.y);
+  const scene::ToolForceHistory* force = r->tool_force();
+  if (!force) throw io::InputError(sc.file(), "scene.kind", sc.kind(), "has no tool force to write");
+  const ForceCurve c = force_curve(*force, path->at_distance(0.0), sc.input("sheet.thickness"), sc.input("tool.radius"), o.x, o.y);
   GaussianNoise noise(o.seed);
   io::CsvTable t({o.x + " [" + force_curve_abscissa_unit(o.x) + "]", o.y + " [N]"});
   for (std::size_t i = static_cast<std::size_t>(o.every); i < c.x.size(); i += static_cast<std::size_t>(o.every))
@@ -100,16 +100,16 @@ std::string synthetic_section_csv(const scene::Scene& sc, const std::string& poi
 }
 
 std::string synthetic_contour_means_csv(const scene::Scene& sc, const SyntheticOptions& o) {
-  if (!is_contour_mean(o.y)) throw io::InputError("", "y", o.y, std::string("not a contour mean (known: ") + contour_mean_names() + ")");
+  if (!scene::is_contour_mean(o.y)) throw io::InputError("", "y", o.y, std::string("not a contour mean (known: ") + scene::contour_mean_names() + ")");
   if (!(o.noise >= 0)) throw io::InputError("", "noise", io::format_number(o.noise), "must be >= 0");
+  if (sc.contours() == 0) throw io::InputError(sc.file(), "scene.kind", sc.kind(), "has no contours to average the tool force over");
   const auto r = sc.run(scene::RunFiles(), {});
   if (!r->ok()) throw std::runtime_error("scene " + sc.name() + " failed: " + r->message);
-  const auto* cone = dynamic_cast<const scene::ConeResult*>(r.get());
-  if (!cone) throw io::InputError(sc.file(), "scene.kind", sc.kind(), "contour means are a cone's");
+  const scene::ResultCurve m = r->contour_means(o.y);
   GaussianNoise noise(o.seed);
   const bool ratio = o.y.find("_over_") != std::string::npos;
   io::CsvTable t({"contour", ratio ? o.y : o.y + " [N]"});
-  for (std::size_t i = 0; i < cone->contours.size(); ++i) t.add_row({static_cast<double>(i + 1), contour_mean_value(cone->contours[i], o.y) + o.noise * noise.next()});
+  for (std::size_t i = 0; i < m.x.size(); ++i) t.add_row({m.x[i], m.y[i] + o.noise * noise.next()});
   return synthetic_header(sc.file(), *sc.card(), o, "contour") + t.str();
 }
 

@@ -4,6 +4,7 @@
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/text_file.hpp"
+#include "forward/scenes/scene_registry.hpp"
 #include "reports/output_table.hpp"
 #include "reports/plot_session.hpp"
 #include "reports/report_files.hpp"
@@ -23,8 +24,6 @@ using nlohmann::json;
 
 namespace {
 
-constexpr const char* kFeKinds[] = {"indent", "indent_line", "line", "cone"};
-
 std::optional<json> read_summary(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_regular_file(dir / "summary.json", ec)) return std::nullopt;
@@ -35,9 +34,17 @@ std::optional<json> read_summary(const fs::path& dir) {
   }
 }
 
+// The scene kind of summary.json runs FE with a tool (the registry's SceneKind::fe_run).
 bool is_fe_kind(const json& s) {
-  const std::string kind = s.value("kind", "");
-  return std::any_of(std::begin(kFeKinds), std::end(kFeKinds), [&](const char* k) { return kind == k; });
+  const scene::SceneKind* k = scene::find_scene_kind(s.value("kind", ""));
+  return k && k->fe_run;
+}
+
+std::string fe_kind_names() {
+  std::string s;
+  for (const auto& k : scene::scene_kinds())
+    if (k.fe_run) s += (s.empty() ? "" : ", ") + k.name;
+  return s;
 }
 
 double number_at(const json& j, const char* key, double fallback = NAN) {
@@ -57,6 +64,18 @@ struct RunContent {
   std::vector<std::pair<std::string, OutputTable>> sections;  // forming: path point, section
   std::vector<std::pair<std::string, std::string>> figures;   // image, caption
 };
+
+// The force log has the polar components of an axisymmetric part (Fr, Ftheta at the tool's angle).
+bool has_polar_force(const RunContent& c) { return !c.force.column("Fr").empty(); }
+
+// The tool only went up and down (an indent): the force is plotted against the tool-tip depth.
+bool tool_moved_vertically_only(const RunContent& c) {
+  const std::vector<double> x = c.force.column("tool_x"), y = c.force.column("tool_y");
+  if (x.empty() || y.empty()) return false;
+  for (std::size_t i = 1; i < x.size(); ++i)
+    if (x[i] != x[0] || y[i] != y[0]) return false;
+  return true;
+}
 
 // Tool travel [mm] of each force.csv row: time x feed (every FE scene writes time = travel / feed).
 std::vector<double> travel(const RunContent& c) {
@@ -82,16 +101,15 @@ PlotSpec titled(const std::string& stem, const std::string& title, const std::st
 
 PlotSpec force_plot(const RunContent& c) {
   PlotSpec p = titled("run_force", "Tool force (by the sheet on the tool)", "tool travel [mm]", "force [N]");
-  const std::string kind = c.summary.value("kind", "");
   std::vector<double> x = travel(c);
-  if (kind == "indent") {  // tool-tip depth below the first touch
+  if (tool_moved_vertically_only(c)) {  // tool-tip depth below the first touch
     const std::vector<double> z = c.force.column("tool_z");
     const double z0 = c.summary.contains("tool") ? number_at(c.summary["tool"], "radius", 0.0) + 0.5 * number_at(c.summary["model"], "thickness", 0.0)
                                                  : 0.0;
     for (std::size_t i = 0; i < x.size() && i < z.size(); ++i) x[i] = z0 - z[i];
     p.xlabel = "tool-tip depth [mm]";
   }
-  const bool cone = kind == "cone";
+  const bool cone = has_polar_force(c);
   for (const char* name : cone ? std::vector<const char*>{"Fr", "Ftheta", "Fz"} : std::vector<const char*>{"Fx", "Fy", "Fz"}) {
     const std::vector<double> y = c.force.column(name);
     if (y.empty() || (std::string(name) != "Fz" && !any_nonzero(y))) continue;
@@ -168,7 +186,9 @@ void read_tables(const fs::path& dir, RunContent& c, std::vector<std::string>* w
   optional_table("contours.csv", &c.contours);
   optional_table("sections.csv", &c.cone_sections);
   std::error_code ec;
-  if (c.summary.value("kind", "") == "cone" || !fs::is_directory(dir / "sections", ec)) return;
+  // An axisymmetric run's sections/ holds its radial sections after each contour (sections.csv
+  // lists them); the sections at named path points are the others'.
+  if (has_polar_force(c) || !fs::is_directory(dir / "sections", ec)) return;
   std::vector<fs::path> files;
   for (const auto& e : fs::directory_iterator(dir / "sections", ec))
     if (e.path().extension() == ".csv" && e.path().stem().string().rfind("section_", 0) == 0) files.push_back(e.path());
@@ -190,7 +210,7 @@ void render_plots(const fs::path& dir, const ReportOptions& options, RunContent&
     const fs::path image = session.render(spec);
     if (!image.empty()) c.figures.emplace_back("plots/" + image.filename().string(), caption);
   };
-  const bool cone = c.summary.value("kind", "") == "cone";
+  const bool cone = has_polar_force(c);
   if (c.force.rows() > 0) add(force_plot(c), cone ? "Tool force in polar components at the tool's angle (Fr outward, Fθ along the path)" : "Tool force");
   if (c.contours.rows() > 0) add(contour_plot(c), "Contour means (thesis §8.3: the steady state of the forming forces)");
   if (c.cone_sections.rows() > 0) add(cone_depth_plot(c), "Shape after each contour");
@@ -325,7 +345,7 @@ RunReportSummary render_run_report(const fs::path& dir, const ReportOptions& opt
   const auto summary = read_summary(dir);
   if (!summary || !is_fe_kind(*summary))
     throw io::InputError((dir / "summary.json").string(), "", "",
-                         "no summary.json of an FE run (indent, indent_line, line, cone) here: not an output directory of `spifit run`");
+                         "no summary.json of an FE run (" + fe_kind_names() + ") here: not an output directory of `spifit run`");
   RunReportSummary out;
   RunContent c;
   c.summary = *summary;

@@ -133,7 +133,7 @@ TEST(ConeSweepCli, ContourRangeAndWindowEdges) {
   EXPECT_EQ(e.code, 2);
   EXPECT_NE(e.err.find((dir / "window.toml").string()), std::string::npos) << e.err;
   EXPECT_NE(e.err.find("sweep.window"), std::string::npos) << e.err;
-  EXPECT_NE(e.err.find("only for forming scenes"), std::string::npos) << e.err;
+  EXPECT_NE(e.err.find("only for scene kinds with metrics over a travel window (indent, indent_line, line)"), std::string::npos) << e.err;
   EXPECT_FALSE(fs::exists(dir / "window"));
 
   // Contours 2 to 3 of a one-contour cone.

@@ -120,7 +120,7 @@ TEST(FeFitFile, InputErrorsNameFileKeyAndValue) {
       {fit_head(kFriction) + experiment(scene, "observable = \"mean_fx\"\nvalue = 1.0\nwindow = [0.0, 90.0]\n"), {"window", "inside the tool path's travel"}},
       {fit_head(kFriction) + experiment(scene, "observable = \"increments\"\nvalue = 100.0\n"), {"observable = \"increments\"", "a count of the run"}},
       {fit_head(kFriction) + experiment(scene, curve + "value = 3.0\n"), {"value", "takes no scalar keys"}},
-      {fit_head(kFriction) + experiment(scene, "contour_means = \"ftheta\"\n" + curve), {"contour_means", "only for cone scenes"}},
+      {fit_head(kFriction) + experiment(scene, "contour_means = \"ftheta\"\n" + curve), {"contour_means", "only for scenes with contours"}},
       {fit_head(kFriction) + experiment(scene, "section = \"Q\"\n" + curve), {"section = \"Q\"", "no section at this path point", "C, E"}},
       {fit_head(kFriction) + experiment(scene, "section = \"E\"\ny = \"width\"\n" + curve), {"y = \"width\"", "z, thickness"}},
       {fit_head("[parameters.\"swift.K\"]\nlower = 50.0\nupper = 500.0\n[parameters.\"contact.friction\"]\nlower = 0.0\nupper = 0.5\n") +

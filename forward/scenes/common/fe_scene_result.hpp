@@ -27,6 +27,8 @@ class FeSceneResult : public SceneResult {
   model::ModelEnergies final_energies;
   ForceRipple ripple;  // over one element length (element_size of take)
 
+  const ToolForceHistory* tool_force() const override { return &force; }
+
   // After the run: its outcome (status, message, wall time), the force and energy logs, the
   // force ripple, and warnings when the tool sank deeper into the tool-side surface than its
   // contact points felt or deeper into the sheet than the penalty should let it (ShellContact's

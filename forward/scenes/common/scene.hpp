@@ -93,6 +93,8 @@ struct SceneKind {
   std::string family;  // material_point, shell_benchmark, forming, cone
   std::string doc;     // one line
   bool resumable = false;        // checkpoints and --resume
+  bool fe_run = false;           // an FE run with a tool: force.csv, energies.csv, vtu/ and the run report
+  bool jets = false;             // runs on ceres::Jet scalars (material points): fits evaluate it in process with exact derivatives
   bool parallel_sweeps = false;  // sweep points run side by side (each run serial)
   std::function<std::unique_ptr<Scene>(const std::string& file)> read;  // io::InputError naming file, key, value
   std::vector<io::InputInfo> inputs;  // the kind's own (the card's parameters come from material_inputs)

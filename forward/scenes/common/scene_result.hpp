@@ -12,6 +12,19 @@
 
 namespace spifit::scene {
 
+class ToolForceHistory;
+
+// A curve read off a result (a section, the contour means): x increasing; empty when the result
+// has no such curve.
+struct ResultCurve {
+  std::vector<double> x, y;
+};
+
+// The components a contour mean can give: fr, ftheta, fz (polar, at the tool's polar angle), fx,
+// fy, and the ratios ftheta_over_fz, fr_over_fz.
+const char* contour_mean_names();
+bool is_contour_mean(const std::string& y);
+
 class SceneResult {
  public:
   virtual ~SceneResult() = default;
@@ -24,6 +37,20 @@ class SceneResult {
   virtual nlohmann::json to_json() const = 0;
   // One line: what ran and its main numbers.
   virtual std::string brief_report() const = 0;
+
+  // What fits, sweeps and synthetic measurements read off a result, asked by what it holds rather
+  // than by its scene kind (null or empty when the result holds none):
+  // the tool force history of an FE run;
+  virtual const ToolForceHistory* tool_force() const { return nullptr; }
+  // the section at a named path point (Scene::section_points()), x in {x, x0}, y in {z, thickness},
+  // sorted by x; empty too when two nodes share an x (the section folds over);
+  virtual ResultCurve path_section(const std::string& /*point*/, const std::string& /*x*/, const std::string& /*y*/) const { return {}; }
+  // the section after contour K (1-based, Scene::contours()), x in {r, r0}, y in {z, thickness},
+  // sorted by x; empty too when it folds over;
+  virtual ResultCurve contour_section(int /*contour*/, const std::string& /*x*/, const std::string& /*y*/) const { return {}; }
+  // one value per completed contour (x = 1, 2, ...), y one of contour_mean_names() (NaN for a
+  // contour without samples).
+  virtual ResultCurve contour_means(const std::string& /*y*/) const { return {}; }
 
  protected:
   // status, message (unless ok or empty), warnings and wall_seconds into j.

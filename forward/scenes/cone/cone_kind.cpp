@@ -76,6 +76,7 @@ SceneKind cone_kind() {
   k.family = "cone";
   k.doc = "a cone formed contour by contour on a disc or a pie with cyclic ties (thesis §4.1.2, §8, §9)";
   k.resumable = true;
+  k.fe_run = true;
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> { return std::make_unique<ConeSceneFile>(read_cone_scene(file)); };
   k.inputs = cone_inputs().infos();
   k.observables = cone_observables();

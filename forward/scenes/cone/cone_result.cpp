@@ -3,6 +3,8 @@
 #include "forward/io/format_text.hpp"
 #include "forward/scenes/common/fe_run_summary.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace spifit::scene {
@@ -50,6 +52,49 @@ std::string ConeResult::brief_report() const {
                 "%-16s %-12s peak force (%.2f, %.2f, %.2f) N, final (Fr, Ftheta, Fz) (%.2f, %.2f, %.2f) N, %d/%d contours  (%d elements, %d increments, %d iterations, %.2f s)",
                 name.c_str(), "cone", pk.x(), pk.y(), pk.z(), fp.x(), fp.y(), fp.z(), run.marks_reached, contours_total, elements,
                 run.counters.increments, run.counters.iterations, wall_seconds);
+}
+
+namespace {
+
+double point_value(const SectionPoint& p, const std::string& c) {
+  if (c == "r") return p.r;
+  if (c == "r0") return p.r0;
+  if (c == "z") return p.z;
+  return p.thickness;
+}
+
+double contour_mean_value(const ContourMean& m, const std::string& y) {
+  if (y == "fr") return m.polar.x();
+  if (y == "ftheta") return m.polar.y();
+  if (y == "fz") return m.polar.z();
+  if (y == "fx") return m.force.x();
+  if (y == "fy") return m.force.y();
+  if (y == "ftheta_over_fz") return m.polar.y() / m.polar.z();
+  return m.polar.x() / m.polar.z();  // fr_over_fz
+}
+
+}  // namespace
+
+ResultCurve ConeResult::contour_section(int contour, const std::string& x, const std::string& y) const {
+  ResultCurve c;
+  if (contour < 1 || static_cast<std::size_t>(contour) > section_profiles.size()) return c;
+  std::vector<SectionPoint> points = section_profiles[static_cast<std::size_t>(contour - 1)].points;
+  std::stable_sort(points.begin(), points.end(), [&](const auto& a, const auto& b) { return point_value(a, x) < point_value(b, x); });
+  for (const auto& p : points) {
+    if (!c.x.empty() && !(point_value(p, x) > c.x.back())) return {};  // two nodes at one r: a fold
+    c.x.push_back(point_value(p, x));
+    c.y.push_back(point_value(p, y));
+  }
+  return c;
+}
+
+ResultCurve ConeResult::contour_means(const std::string& y) const {
+  ResultCurve c;
+  for (std::size_t i = 0; i < contours.size(); ++i) {
+    c.x.push_back(static_cast<double>(i + 1));
+    c.y.push_back(contour_mean_value(contours[i], y));
+  }
+  return c;
 }
 
 }  // namespace spifit::scene

@@ -31,6 +31,8 @@ class ConeResult final : public FeSceneResult {
   Eigen::Vector3d final_polar_force() const;
   nlohmann::json to_json() const override;
   std::string brief_report() const override;
+  ResultCurve contour_section(int contour, const std::string& x, const std::string& y) const override;
+  ResultCurve contour_means(const std::string& y) const override;
 };
 
 }  // namespace spifit::scene

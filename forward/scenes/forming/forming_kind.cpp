@@ -90,6 +90,7 @@ SceneKind forming_kind(const char* name, const char* doc) {
   k.family = "forming";
   k.doc = doc;
   k.resumable = true;
+  k.fe_run = true;
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
     FormingScene s = read_forming_scene(file);
     std::string kind = s.kind;

@@ -3,6 +3,7 @@
 #include "forward/io/format_text.hpp"
 #include "forward/scenes/common/fe_run_summary.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace spifit::scene {
@@ -22,6 +23,24 @@ std::string FormingResult::brief_report() const {
   return io::format_text("%-16s %-12s peak force (%.2f, %.2f, %.2f) N, max penetration %.4f mm  (%d elements, %d increments, %d iterations, %.2f s)",
                 name.c_str(), kind.c_str(), pk.x(), pk.y(), pk.z(), force.max_penetration(), elements, run.counters.increments,
                 run.counters.iterations, wall_seconds);
+}
+
+ResultCurve FormingResult::path_section(const std::string& point, const std::string& x, const std::string& y) const {
+  ResultCurve c;
+  for (const auto& s : sections) {
+    if (s.point != point) continue;
+    const std::vector<double> xs = s.nodes.column(x), ys = s.nodes.column(y);
+    std::vector<std::size_t> order(xs.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return xs[a] < xs[b]; });
+    for (std::size_t i : order) {
+      if (!c.x.empty() && !(xs[i] > c.x.back())) return {};  // two nodes at one x: a fold
+      c.x.push_back(xs[i]);
+      c.y.push_back(ys[i]);
+    }
+    break;
+  }
+  return c;
 }
 
 }  // namespace spifit::scene

@@ -26,6 +26,7 @@ class FormingResult final : public FeSceneResult {
 
   nlohmann::json to_json() const override;
   std::string brief_report() const override;
+  ResultCurve path_section(const std::string& point, const std::string& x, const std::string& y) const override;
 };
 
 }  // namespace spifit::scene

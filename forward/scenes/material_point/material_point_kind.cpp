@@ -59,6 +59,7 @@ SceneKind material_point_kind(MaterialPointKind kind, const char* doc) {
   k.family = "material_point";
   k.doc = doc;
   k.parallel_sweeps = true;
+  k.jets = true;
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
     MaterialPointScene s = read_material_point_scene(file);
     std::string name = to_string(s.setup.kind);
