@@ -19,7 +19,7 @@
 #include "forward/runtime/omp_wait_policy.hpp"
 #include "bench/scene_runs.hpp"
 #include "forward/scenes/cone/cone_run.hpp"
-#include "inverse/measurement.hpp"
+#include "inverse/experiments/measurement.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>

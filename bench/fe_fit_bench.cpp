@@ -7,8 +7,8 @@
 //   iterations, scene runs and the largest relative deviation of the fitted values from the
 //   generating card or friction.
 #include "bench/fit_runs.hpp"
-#include "inverse/fit_file.hpp"
-#include "inverse/run_fit.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/fit/run_fit.hpp"
 
 #include <benchmark/benchmark.h>
 #include <omp.h>

@@ -3,9 +3,9 @@
 // its iterations, forward runs and the largest relative deviation of the fitted values from
 // the generating card C.2 (data are synthetic); without and with the per-experiment conflict
 // check that fit files of material points run by default (each experiment fitted alone after).
-#include "inverse/run_fit.hpp"
+#include "inverse/fit/run_fit.hpp"
 #include "bench/fit_runs.hpp"
-#include "inverse/fit_file.hpp"
+#include "inverse/fit/fit_file.hpp"
 
 #include <benchmark/benchmark.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 // Shared by the fit benchmarks (bench_fit, bench_fe_fit): run a fit once per benchmark iteration
 // and measure how far its values lie from the values the data were generated with.
-#include "inverse/fit_file.hpp"
-#include "inverse/run_fit.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/fit/run_fit.hpp"
 
 #include <benchmark/benchmark.h>
 

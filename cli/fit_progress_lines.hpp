@@ -6,7 +6,7 @@
 // line stays; in a log a run line at most every `log_every` seconds. A fit of material points
 // only prints once it has taken `quiet_for` seconds (most end before), and then an iteration line
 // at most every half second (terminal) or `log_every` seconds (log).
-#include "inverse/fit_progress.hpp"
+#include "inverse/fit/fit_progress.hpp"
 
 #include <nlohmann/json.hpp>
 

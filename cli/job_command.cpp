@@ -1,9 +1,9 @@
 // `spifit job`: not for people (hidden from --help). A worker rank of an MPI fit or sweep starts
 // one per forward run (cli/job_process.hpp): the job's bytes on stdin, the answer's on stdout.
 #include "cli/commands.hpp"
-#include "inverse/fe_evaluation_worker.hpp"
-#include "inverse/fit_file.hpp"
-#include "inverse/sweep.hpp"
+#include "inverse/fit/fe_evaluation_worker.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/sweeps/sweep.hpp"
 
 #include <cstdio>
 #include <iostream>

@@ -4,7 +4,7 @@
 // writes the answer on stdout. A run that crashes, is killed or runs out of memory takes its
 // child with it, not the rank or the MPI job: the job runs once more, and if its process dies
 // again the answer says so (a failed forward run, which fits and sweeps survive).
-#include "inverse/job_pool.hpp"
+#include "inverse/runs/job_pool.hpp"
 
 #include <functional>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // spifit under mpirun or srun (docs/guide/parallel-runs.md): rank 0 runs the command (fit,
-// sweep) and hands its forward runs to the other ranks as jobs (inverse/job_pool.hpp); ranks
+// sweep) and hands its forward runs to the other ranks as jobs (inverse/runs/job_pool.hpp); ranks
 // 1.. read the same fit or sweep file and answer jobs until rank 0 stops them. Without an MPI
 // launcher (or in a build without Open MPI) this is one process: rank 0 of 1, no pool.
 //
@@ -8,7 +8,7 @@
 // every 2 s while it runs one (rank 0 counts a rank silent for 30 s as dead and gives its job to
 // another). Only one thread of rank 0 (the pool's) calls MPI while the pool lives; both sides poll
 // with a short sleep instead of blocking in MPI, so that an idle rank leaves its core to the runs.
-#include "inverse/job_pool.hpp"
+#include "inverse/runs/job_pool.hpp"
 
 #include <memory>
 

@@ -1,11 +1,11 @@
 // `spifit scan`: a laser-scan point cloud averaged into a cross section with a 90 % band
-// (inverse/scan_section.hpp; thesis §8.2.1, footnotes 4 and 5).
+// (inverse/experiments/scan_section.hpp; thesis §8.2.1, footnotes 4 and 5).
 #include "cli/commands.hpp"
 #include "cli/cli_errors.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
-#include "inverse/scan_section.hpp"
+#include "inverse/experiments/scan_section.hpp"
 #include "reports/plot.hpp"
 
 #include <nlohmann/json.hpp>

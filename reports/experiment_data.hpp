@@ -1,7 +1,7 @@
 #pragma once
 // The data file of each experiment of a fit, DIR/experiments/NAME.csv (docs/reference/file-formats.md):
 // columns X (or "index"), measured, simulated_initial, simulated_final.
-#include "inverse/fit_record.hpp"
+#include "inverse/fit/fit_record.hpp"
 
 #include <filesystem>
 #include <string>

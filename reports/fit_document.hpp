@@ -2,7 +2,7 @@
 // The fit report as a Document (report_document.hpp): warnings, summary, parameters,
 // experiments, curves, convergence, forward runs, correlation, singular values and files, in the order
 // docs/guide/reading-reports.md lists them.
-#include "inverse/fit_record.hpp"
+#include "inverse/fit/fit_record.hpp"
 #include "reports/experiment_data.hpp"
 #include "reports/fit_plots.hpp"
 #include "reports/fit_verdict.hpp"

@@ -2,7 +2,7 @@
 // The plots of a fit report (docs/guide/reading-reports.md "Plots and gnuplot"): per curve experiment the
 // data with the initial and fitted simulation, and the residuals; the scalar experiments as
 // bars; the cost per iteration.
-#include "inverse/fit_record.hpp"
+#include "inverse/fit/fit_record.hpp"
 #include "reports/experiment_data.hpp"
 #include "reports/fit_verdict.hpp"
 #include "reports/plot_session.hpp"

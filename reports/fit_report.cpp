@@ -3,7 +3,7 @@
 #include "reports/fit_report.hpp"
 
 #include "forward/io/input_error.hpp"
-#include "inverse/fit_record.hpp"
+#include "inverse/fit/fit_record.hpp"
 #include "reports/fit_document.hpp"
 #include "reports/report_files.hpp"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Sections of the fit report (fit_document.cpp): which experiment informs which parameter, and
 // the forward runs and wall time per experiment and per FE scene file.
-#include "inverse/fit_record.hpp"
+#include "inverse/fit/fit_record.hpp"
 #include "reports/report_document.hpp"
 
 namespace spifit::reports {

@@ -1,7 +1,7 @@
 #include "reports/fit_verdict.hpp"
 
-#include "inverse/fit_assessment.hpp"
-#include "inverse/fit_output.hpp"
+#include "inverse/fit/fit_assessment.hpp"
+#include "inverse/fit/fit_output.hpp"
 #include "reports/report_format.hpp"
 
 #include <algorithm>

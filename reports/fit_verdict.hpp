@@ -2,7 +2,7 @@
 // What a fit report concludes from a fit (docs/guide/reading-reports.md "Rules for verdicts and findings"):
 // a verdict per experiment (is it consistent with its noise, or in conflict), parameters at a
 // bound, and findings in plain words: warnings (problems that need attention) and notes.
-#include "inverse/fit_record.hpp"
+#include "inverse/fit/fit_record.hpp"
 #include "reports/experiment_data.hpp"
 
 #include <cmath>

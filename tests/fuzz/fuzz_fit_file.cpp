@@ -1,5 +1,5 @@
-// Fit files: inverse/fit_file.hpp.
-#include "inverse/fit_file.hpp"
+// Fit files: inverse/fit/fit_file.hpp.
+#include "inverse/fit/fit_file.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

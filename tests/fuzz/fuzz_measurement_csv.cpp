@@ -1,5 +1,5 @@
-// Measurement CSV files: inverse/measurement.hpp.
-#include "inverse/measurement.hpp"
+// Measurement CSV files: inverse/experiments/measurement.hpp.
+#include "inverse/experiments/measurement.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

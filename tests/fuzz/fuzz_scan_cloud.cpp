@@ -1,5 +1,5 @@
-// Laser-scan point clouds: inverse/scan_section.hpp.
-#include "inverse/scan_section.hpp"
+// Laser-scan point clouds: inverse/experiments/scan_section.hpp.
+#include "inverse/experiments/scan_section.hpp"
 #include "tests/fuzz/fuzz_support.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

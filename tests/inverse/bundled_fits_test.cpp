@@ -1,6 +1,6 @@
 // The bundled fit files do what experiments/README.md says.
-#include "inverse/run_fit.hpp"
-#include "inverse/fit_file.hpp"
+#include "inverse/fit/run_fit.hpp"
+#include "inverse/fit/fit_file.hpp"
 
 #include <gtest/gtest.h>
 

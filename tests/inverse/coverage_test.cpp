@@ -1,8 +1,8 @@
 // Do the 95 % intervals mean what they say? 100 fits of the classic problem (tensile 0/45/90
 // + shear, card C.2, Hill + Swift free) to data with seeded Gaussian noise: each interval
 // must contain the truth between 88 and 99 times (binomial(100, 0.95): 95 +- 2.2 sigma).
-#include "inverse/ceres_fit.hpp"
-#include "inverse/synthetic.hpp"
+#include "inverse/fit/ceres_fit.hpp"
+#include "inverse/experiments/synthetic.hpp"
 
 #include <gtest/gtest.h>
 

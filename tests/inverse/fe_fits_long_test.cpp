@@ -1,8 +1,8 @@
 // The bundled fits on FE scenes as twin experiments (experiments/README.md): started 30 % or more
 // off, each recovers the values its synthetic data were made with, every one inside its 95 %
 // interval. Minutes each on 2 cores: label long (ctest -L long).
-#include "inverse/fit_file.hpp"
-#include "inverse/run_fit.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/fit/run_fit.hpp"
 
 #include <gtest/gtest.h>
 

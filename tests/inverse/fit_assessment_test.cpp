@@ -1,12 +1,12 @@
-// When a fit is usable, and when its data are implausible before it runs (inverse/fit_assessment.hpp,
-// inverse/measurement_plausibility.hpp): chi-square quantiles against published tables, and real
+// When a fit is usable, and when its data are implausible before it runs (inverse/fit/fit_assessment.hpp,
+// inverse/experiments/measurement_plausibility.hpp): chi-square quantiles against published tables, and real
 // fits of the bundled tensile data that end at a bound, on a single point, far above a stated
 // noise, or start from a data file whose header names the wrong unit.
 #include "forward/io/input_error.hpp"
-#include "inverse/chi_square.hpp"
-#include "inverse/fit_assessment.hpp"
-#include "inverse/fit_file.hpp"
-#include "inverse/run_fit.hpp"
+#include "inverse/uncertainty/chi_square.hpp"
+#include "inverse/fit/fit_assessment.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/fit/run_fit.hpp"
 #include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>

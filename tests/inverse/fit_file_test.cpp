@@ -1,7 +1,7 @@
 // Bad fit files are input errors naming file, key and value.
 #include "forward/io/input_error.hpp"
-#include "inverse/fit_file.hpp"
-#include "inverse/measurement.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/experiments/measurement.hpp"
 
 #include <gtest/gtest.h>
 

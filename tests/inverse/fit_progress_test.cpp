@@ -1,7 +1,7 @@
-// A fit's progress (inverse/fit_progress.hpp): the runs counted per iteration, the time left of
+// A fit's progress (inverse/fit/fit_progress.hpp): the runs counted per iteration, the time left of
 // an iteration from the median run time and the runs that go side by side, and the events in the
 // order they happened however many threads end runs at once.
-#include "inverse/fit_progress.hpp"
+#include "inverse/fit/fit_progress.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
-#include "inverse/sweep.hpp"
+#include "inverse/sweeps/sweep.hpp"
 #include "tests/support/input_errors.hpp"
 
 #include <gtest/gtest.h>

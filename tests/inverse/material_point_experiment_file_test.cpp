@@ -2,7 +2,7 @@
 // (one run and one residual per row), the angle of an experiment over its scene's, a scene
 // without a card of its own, and their input errors naming file, key and value.
 #include "forward/io/input_error.hpp"
-#include "inverse/fit_file.hpp"
+#include "inverse/fit/fit_file.hpp"
 #include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // Black-box experiments (no Jets) are differentiated by central differences inside the bounds.
 #include "forward/material/hardening/hardening_laws.hpp"
-#include "inverse/ceres_fit.hpp"
-#include "inverse/synthetic.hpp"
+#include "inverse/fit/ceres_fit.hpp"
+#include "inverse/experiments/synthetic.hpp"
 
 #include <gtest/gtest.h>
 

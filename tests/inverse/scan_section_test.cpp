@@ -3,7 +3,7 @@
 // band must hold about 90 % of the points of a second, independent cloud, the shifts must move
 // the section by T/2 vertically or along the normal; malformed files name file, line and value.
 #include "forward/io/input_error.hpp"
-#include "inverse/scan_section.hpp"
+#include "inverse/experiments/scan_section.hpp"
 #include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // succeeds, and the stopping tolerances a fit with FE experiments gets by default.
 #include "forward/io/input_error.hpp"
 #include "forward/scenes/scene_registry.hpp"
-#include "inverse/fit_file.hpp"
-#include "inverse/scene_runs.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/runs/scene_runs.hpp"
 #include "tests/support/temp_files.hpp"
 #include "tests/support/tiny_scenes.hpp"
 

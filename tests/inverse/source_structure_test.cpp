@@ -111,6 +111,22 @@ TEST(IncludeStructure, CheckerFindsALoop) {
   EXPECT_EQ(joined(find_loop(Graph{{"a", {"b"}}, {"b", {}}})), "");
 }
 
+// The parts of inverse/ (its subfolders) include only downwards: no loop between folders either.
+TEST(IncludeStructure, InverseFoldersHaveNoLoop) {
+  Graph folders;
+  auto folder_of = [](const std::string& module) {
+    const std::size_t a = module.find('/'), b = module.find('/', a + 1);
+    return b == std::string::npos ? module.substr(0, a) : module.substr(0, b);
+  };
+  for (const auto& [m, includes] : module_includes("inverse")) {
+    folders[folder_of(m)];
+    for (const auto& i : includes)
+      if (folder_of(i) != folder_of(m)) folders[folder_of(m)].insert(folder_of(i));
+  }
+  EXPECT_EQ(folders.size(), 5u);  // runs, experiments, fit, uncertainty, sweeps
+  EXPECT_EQ(joined(find_loop(folders)), "");
+}
+
 TEST(SceneKindKnowledge, InverseAndReportsNameNoKind) {
   std::vector<std::string> needles{"dynamic_cast"};
   for (const auto& k : spifit::scene::scene_kinds()) {

@@ -2,7 +2,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_card.hpp"
-#include "inverse/sweep.hpp"
+#include "inverse/sweeps/sweep.hpp"
 
 #include <gtest/gtest.h>
 

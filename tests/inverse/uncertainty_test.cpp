@@ -1,5 +1,5 @@
 // Uncertainty analysis on problems with known answers.
-#include "inverse/uncertainty.hpp"
+#include "inverse/uncertainty/uncertainty.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>

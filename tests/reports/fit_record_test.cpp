@@ -4,10 +4,10 @@
 #include "tests/support/temp_files.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
-#include "inverse/run_fit.hpp"
-#include "inverse/fit_file.hpp"
-#include "inverse/fit_output.hpp"
-#include "inverse/fit_record.hpp"
+#include "inverse/fit/run_fit.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/fit/fit_output.hpp"
+#include "inverse/fit/fit_record.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>

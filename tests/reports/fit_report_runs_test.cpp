@@ -4,9 +4,9 @@
 #include "tests/support/markdown_rows.hpp"
 #include "tests/support/temp_files.hpp"
 #include "forward/io/output_directory.hpp"
-#include "inverse/fit_file.hpp"
-#include "inverse/fit_output.hpp"
-#include "inverse/run_fit.hpp"
+#include "inverse/fit/fit_file.hpp"
+#include "inverse/fit/fit_output.hpp"
+#include "inverse/fit/run_fit.hpp"
 #include "reports/fit_report.hpp"
 #include "reports/report_format.hpp"
 

@@ -53,7 +53,7 @@ TEST(FitVerdict, CurvesAgainstTheNoise) {
   EXPECT_TRUE(high.above_noise);
   EXPECT_EQ(judge_experiment(curve("a", 0.3, true), alternating).text, "rms 0.30 σ: below the stated noise");
   // Twice the noise and beyond what 20 points of random noise reach once in a million: the fit is
-  // not usable (inverse/fit_assessment.hpp); with fewer points the chi-square bound is higher.
+  // not usable (inverse/fit/fit_assessment.hpp); with fewer points the chi-square bound is higher.
   EXPECT_EQ(judge_experiment(curve("a", 2.5, true), alternating).text, "FAR ABOVE THE NOISE: rms 2.5 σ");
   EXPECT_TRUE(judge_experiment(curve("a", 2.5, true), alternating).far_above_noise);
   EXPECT_EQ(judge_experiment(curve("a", 2.1, true, 10), data(10, [](int i) { return i % 2 ? 0.1 : -0.1; })).text, "CONFLICT: rms 2.10 σ");

@@ -4,7 +4,7 @@
 #include "tests/forward/scenes/example/strip_press.hpp"
 
 #include "forward/scenes/scene_registry.hpp"
-#include "inverse/sweep.hpp"
+#include "inverse/sweeps/sweep.hpp"
 #include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>

@@ -1,0 +1,323 @@
+#include "inverse/experiments/fe_experiment.hpp"
+
+#include "inverse/runs/fe_evaluation_job.hpp"
+#include "inverse/experiments/measurement_plausibility.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace spifit::inverse {
+namespace {
+
+constexpr const char* kAbscissae[] = {"depth", "travel", "time"};
+constexpr const char* kComponents[] = {"fx", "fy", "fz", "fr", "ftheta"};
+
+// x of a tool position: tip depth below the initial top surface (the tip path's z = 0 is the
+// top surface: the centre sits t/2 + R above the mid-surface), travel or time.
+double abscissa(const std::string& x, const Eigen::Vector3d& centre, double travel, double time, double thickness, double radius) {
+  if (x == "depth") return 0.5 * thickness + radius - centre.z();
+  if (x == "travel") return travel;
+  return time;
+}
+
+double component(const std::string& y, const Eigen::Vector3d& centre, const Eigen::Vector3d& f) {
+  if (y == "fx") return f.x();
+  if (y == "fy") return f.y();
+  if (y == "fz") return f.z();
+  const double theta = std::atan2(centre.y(), centre.x());
+  const double c = std::cos(theta), s = std::sin(theta);
+  return y == "fr" ? c * f.x() + s * f.y() : -s * f.x() + c * f.y();
+}
+
+// Residuals of measured (xs, ys) against the simulated curve c, interpolated linearly at xs;
+// false when an xs lies outside c (never extrapolate).
+bool curve_residuals(const ForceCurve& c, const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& sqrt_w,
+                     double scale, double* r, std::vector<double>* simulated) {
+  std::size_t seg = 0;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    const double x = xs[i];
+    if (c.x.size() < 2 || x < c.x.front() - 1e-9 || x > c.x.back() + 1e-9) return false;
+    while (seg + 2 < c.x.size() && c.x[seg + 1] < x) ++seg;
+    const double u = std::clamp((x - c.x[seg]) / (c.x[seg + 1] - c.x[seg]), 0.0, 1.0);
+    const double y = c.y[seg] + (c.y[seg + 1] - c.y[seg]) * u;
+    r[i] = sqrt_w[i] * (y - ys[i]) / scale;
+    if (simulated) (*simulated)[i] = y;
+  }
+  return true;
+}
+
+// The FE experiments' common part: the run at a point (from the shared runs) and conditioning.
+class FeExperiment : public Experiment {
+ public:
+  explicit FeExperiment(const FeExperimentBase& b) : scene_(b.scene), runs_(b.runs) {
+    name_ = b.name;
+    weight_ = b.weight;
+    noise_given_ = b.noise > 0;
+  }
+  bool residuals(const material::MaterialParams<Jet>&, Jet*) const override { return false; }
+  bool supports_jets() const override { return false; }
+  int parallel_evaluations() const override { return runs_->pool() ? runs_->pool()->workers() : 0; }
+  std::string scene_file() const override { return scene_->file(); }
+  // Against the scene's scales: an FE run is too dear to make for a plausibility check.
+  MagnitudeCheck check_magnitudes(const ParameterPoint& start) const final {
+    const ExperimentCurve a = axes();
+    return fe_magnitudes(a.y_name, a.y_unit, measured_values(), *scene_, start.material);
+  }
+  // The residuals at p: kept from an earlier (killed) fit when the runs keep evaluations, else
+  // computed (and kept).
+  bool residuals(const ParameterPoint& p, double* r) const final {
+    count_evaluation();
+    EvaluationCache* cache = runs_->evaluations();
+    const std::string key = cache ? point_key(p) : std::string();
+    if (cache) {
+      if (const auto e = cache->find(name_, key); e && (!e->ok || static_cast<int>(e->residuals.size()) == num_residuals())) {
+        std::copy(e->residuals.begin(), e->residuals.end(), r);
+        return e->ok;
+      }
+    }
+    const bool ok = runs_->pool() ? compute_elsewhere(p, r) : compute(p, r);
+    if (cache) cache->add(name_, key, {ok, ok ? std::vector<double>(r, r + num_residuals()) : std::vector<double>{}});
+    return ok;
+  }
+
+ protected:
+  virtual bool compute(const ParameterPoint& p, double* r) const = 0;
+  virtual std::vector<double> measured_values() const = 0;
+  // On a worker of the runs' pool: the same numbers compute() gives, computed there, with those
+  // of the other experiments on this scene file (one job per scene file and point).
+  bool compute_elsewhere(const ParameterPoint& p, double* r) const {
+    FeEvaluationAnswer a;
+    try {
+      a = decode_fe_answer(runs_->shared_answer(scene_->file() + " " + point_key(p), [&] {
+        std::string bytes = runs_->pool()->run(fe_evaluation_job(name_, p));
+        const FeEvaluationAnswer first = decode_fe_answer(bytes);
+        runs_->add_remote(first.runs, first.failures);  // once per answer
+        return bytes;
+      }));
+    } catch (const std::exception& e) {
+      a.error = std::string("no answer: ") + e.what();
+    }
+    const FeEvaluationAnswer::Residuals* mine = nullptr;
+    for (const auto& e : a.experiments)
+      if (e.experiment == name_) mine = &e;
+    if (!a.error.empty() || !mine) {  // a failed evaluation, named among the fit's failures
+      const std::string why = a.error.empty() ? "the answer has no residuals of " + name_ : a.error;
+      runs_->add_remote({}, {{scene_->file(), describe_point(p, runs_->base()), "a worker could not evaluate " + name_ + ": " + why, false}});
+      return false;
+    }
+    if (!mine->ok || static_cast<int>(mine->values.size()) != num_residuals()) return false;
+    std::copy(mine->values.begin(), mine->values.end(), r);
+    return true;
+  }
+  std::shared_ptr<const scene::SceneResult> run_at(const ParameterPoint& p) const {
+    auto r = runs_->result(*scene_, p, name_);
+    return r && r->ok() ? r : nullptr;
+  }
+  std::shared_ptr<const scene::Scene> scene_;
+  std::shared_ptr<const SceneRuns> runs_;
+};
+
+class FeScalarExperiment final : public FeExperiment {
+ public:
+  explicit FeScalarExperiment(FeScalarSpec s) : FeExperiment(s), s_(std::move(s)) {
+    kind_ = "fe_scalar";
+    scale_ = s_.noise > 0 ? s_.noise : (s_.value != 0.0 ? std::abs(s_.value) : 1.0);
+  }
+  int num_residuals() const override { return 1; }
+  ExperimentCurve axes() const override { return {"", s_.observable->name, "", s_.observable->unit, {}, {}, {}, {}, {}}; }
+  ExperimentCurve compare(const ParameterPoint& p) const override {
+    ExperimentCurve c{"", s_.observable->name, "", s_.observable->unit, {0.0}, {s_.value}, {}, {}, {}};
+    double r = 0.0, sim = 0.0;
+    if (eval(p, &r, &sim)) c.simulated = {sim};
+    return c;
+  }
+
+ private:
+  bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
+  std::vector<double> measured_values() const override { return {s_.value}; }
+  bool eval(const ParameterPoint& p, double* r, double* simulated) const {
+    const auto res = run_at(p);
+    if (!res) return false;
+    const double v = s_.observable->value(*res, s_.options);
+    if (!std::isfinite(v)) return false;
+    r[0] = std::sqrt(s_.weight) * (v - s_.value) / scale_;
+    if (simulated) *simulated = v;
+    return true;
+  }
+  FeScalarSpec s_;
+};
+
+// A measured curve (xs, ys) against a curve the run gives: force curves and sections.
+class CurveFeExperiment : public FeExperiment {
+ public:
+  struct Curve {
+    std::string x, y, x_unit, y_unit;
+    std::vector<double> xs, ys, point_weights;
+  };
+  CurveFeExperiment(const FeExperimentBase& b, const char* kind, Curve c) : FeExperiment(b), c_(std::move(c)) {
+    kind_ = kind;
+    const CurveConditioning k = curve_conditioning(c_.ys, b.noise, b.noise_relative, b.weight, c_.point_weights);
+    scale_ = k.scale;
+    noise_given_ = k.noise_given;
+    sqrt_w_ = k.sqrt_weights;
+    residual_weights_ = k.weights;
+  }
+  int num_residuals() const override { return static_cast<int>(c_.xs.size()); }
+  ExperimentCurve axes() const override { return {c_.x, c_.y, c_.x_unit, c_.y_unit, {}, {}, {}, {}, {}}; }
+  ExperimentCurve compare(const ParameterPoint& p) const override {
+    ExperimentCurve c{c_.x, c_.y, c_.x_unit, c_.y_unit, c_.xs, c_.ys, {}, {}, {}};
+    std::vector<double> r(c_.xs.size()), sim(c_.xs.size());
+    if (eval(p, r.data(), &sim)) c.simulated = sim;
+    return c;
+  }
+
+ protected:
+  // The simulated curve of a run at p (empty: the run does not give it).
+  virtual ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const = 0;
+
+ private:
+  bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
+  std::vector<double> measured_values() const override { return c_.ys; }
+  bool eval(const ParameterPoint& p, double* r, std::vector<double>* sim) const {
+    const auto res = run_at(p);
+    return res && curve_residuals(simulated(*res, p), c_.xs, c_.ys, sqrt_w_, scale_, r, sim);
+  }
+  Curve c_;
+  std::vector<double> sqrt_w_;
+};
+
+// A curve experiment whose simulated curve a function gives.
+class FunctionCurveExperiment final : public CurveFeExperiment {
+ public:
+  FunctionCurveExperiment(const FeExperimentBase& b, const char* kind, FeCurve c, SimulatedCurve f)
+      : CurveFeExperiment(b, kind, {c.x, c.y, c.x_unit, c.y_unit, std::move(c.xs), std::move(c.ys), std::move(c.point_weights)}), f_(std::move(f)) {}
+
+ private:
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const override { return f_(r, p); }
+  SimulatedCurve f_;
+};
+
+class ForceCurveExperiment final : public CurveFeExperiment {
+ public:
+  explicit ForceCurveExperiment(const ForceCurveSpec& s)
+      : CurveFeExperiment(s, "force_curve", {s.x, s.y, force_curve_abscissa_unit(s.x), s.y_unit, s.xs, s.ys, s.point_weights}),
+        x_(s.x),
+        y_(s.y),
+        thickness_(s.scene->input("sheet.thickness")),
+        radius_(s.scene->input("tool.radius")),
+        start_(s.scene->tool_centre_path()->at_distance(0.0)) {}
+
+ private:
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const override {
+    const scene::ToolForceHistory* force = r.tool_force();
+    if (!force) return {};
+    // The scene inputs of p may move the tool (tool.radius) or the sheet (sheet.thickness); the
+    // tool path lifts the tip by t/2 + R, so its start moves with them.
+    const double t = input_at(p, "sheet.thickness", thickness_), radius = input_at(p, "tool.radius", radius_);
+    const Eigen::Vector3d start = start_ + Eigen::Vector3d(0.0, 0.0, 0.5 * (t - thickness_) + (radius - radius_));
+    return force_curve(*force, start, t, radius, x_, y_);
+  }
+  static double input_at(const ParameterPoint& p, const char* name, double fallback) {
+    for (const auto& [n, v] : p.scene)
+      if (n == name) return v;
+    return fallback;
+  }
+  std::string x_, y_;
+  double thickness_ = 0.0, radius_ = 0.0;
+  Eigen::Vector3d start_ = Eigen::Vector3d::Zero();
+};
+
+class SectionExperiment final : public CurveFeExperiment {
+ public:
+  explicit SectionExperiment(const SectionSpec& s)
+      : CurveFeExperiment(s, "section", {s.x, s.y, "mm", "mm", s.xs, s.ys, s.point_weights}), point_(s.point), x_(s.x), y_(s.y) {}
+
+ private:
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint&) const override { return section_curve(r, point_, x_, y_); }
+  std::string point_, x_, y_;
+};
+
+}  // namespace
+
+namespace {
+
+class ContourMeansExperiment final : public CurveFeExperiment {
+ public:
+  explicit ContourMeansExperiment(const ContourMeansSpec& s)
+      : CurveFeExperiment(s, "contour_means", {"contour", s.y, "", s.y.find("_over_") == std::string::npos ? "N" : "", s.contours, s.ys, s.point_weights}),
+        y_(s.y) {}
+
+ private:
+  ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint&) const override {
+    scene::ResultCurve m = r.contour_means(y_);
+    for (double v : m.y)
+      if (!std::isfinite(v)) return {};  // a contour without samples: nothing to compare
+    return {std::move(m.x), std::move(m.y)};
+  }
+  std::string y_;
+};
+
+}  // namespace
+
+std::unique_ptr<Experiment> make_contour_means_experiment(ContourMeansSpec spec) { return std::make_unique<ContourMeansExperiment>(spec); }
+
+std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated) {
+  return std::make_unique<FunctionCurveExperiment>(base, kind, std::move(curve), std::move(simulated));
+}
+
+std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec) { return std::make_unique<SectionExperiment>(spec); }
+bool is_section_abscissa(const std::string& x) { return x == "x" || x == "x0"; }
+bool is_section_response(const std::string& y) { return y == "z" || y == "thickness"; }
+
+ForceCurve section_curve(const scene::SceneResult& r, const std::string& point, const std::string& x, const std::string& y) {
+  scene::ResultCurve c = r.path_section(point, x, y);
+  return {std::move(c.x), std::move(c.y)};
+}
+
+std::unique_ptr<Experiment> make_fe_scalar_experiment(FeScalarSpec spec) { return std::make_unique<FeScalarExperiment>(std::move(spec)); }
+std::unique_ptr<Experiment> make_force_curve_experiment(ForceCurveSpec spec) { return std::make_unique<ForceCurveExperiment>(spec); }
+
+const char* force_curve_abscissa_names() { return "depth, travel, time"; }
+bool is_force_curve_abscissa(const std::string& x) {
+  return std::any_of(std::begin(kAbscissae), std::end(kAbscissae), [&](const char* a) { return x == a; });
+}
+const char* force_curve_abscissa_unit(const std::string& x) { return x == "time" ? "s" : "mm"; }
+const char* force_component_names() { return "fx, fy, fz, fr, ftheta"; }
+bool is_force_component(const std::string& y) {
+  return std::any_of(std::begin(kComponents), std::end(kComponents), [&](const char* c) { return y == c; });
+}
+
+ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& start, double thickness, double tool_radius,
+                       const std::string& x, const std::string& y) {
+  if (!is_force_curve_abscissa(x)) throw std::invalid_argument(std::string("unknown force curve abscissa ").append(x));
+  if (!is_force_component(y)) throw std::invalid_argument(std::string("unknown force component ").append(y));
+  ForceCurve c;
+  c.x.push_back(abscissa(x, start, 0.0, 0.0, thickness, tool_radius));
+  c.y.push_back(0.0);  // the tool starts off the sheet, or just touching it
+  for (const auto& s : h.samples()) {
+    const double v = abscissa(x, s.centre, s.travel, s.time, thickness, tool_radius);
+    if (!(v > c.x.back())) break;  // x stops increasing: the curve ends
+    c.x.push_back(v);
+    c.y.push_back(component(y, s.centre, s.force));
+  }
+  return c;
+}
+
+std::pair<double, double> force_curve_range(const toolpath::ToolPath& centre, double thickness, double tool_radius, const std::string& x) {
+  if (x == "travel") return {0.0, centre.length()};
+  if (x == "time") return {0.0, centre.duration()};
+  // depth: linear along each segment, so the waypoints give where it stops increasing.
+  const auto& w = centre.waypoints();
+  const double first = abscissa("depth", w.front().position, 0, 0, thickness, tool_radius);
+  double last = first;
+  for (std::size_t i = 1; i < w.size(); ++i) {
+    if (w[i].position == w[i - 1].position) continue;  // a zero-length segment
+    const double d = abscissa("depth", w[i].position, 0, 0, thickness, tool_radius);
+    if (!(d > last)) break;
+    last = d;
+  }
+  return {first, last};
+}
+
+}  // namespace spifit::inverse

@@ -1,0 +1,104 @@
+#include "inverse/fit/solution_analysis.hpp"
+
+#include "forward/io/input_error.hpp"
+#include "inverse/fit/ceres_cost.hpp"
+#include "inverse/fit/fit_assessment.hpp"
+
+#include <ceres/ceres.h>
+
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+namespace spifit::inverse {
+
+bool evaluate_residuals(const FitProblem& fp, const std::vector<double>& internal, Eigen::VectorXd* residuals) {
+  const ParameterPoint m = fp.parameters->point(internal.data());
+  int total = 0;
+  for (const auto& e : fp.experiments) total += e->num_residuals();
+  residuals->resize(total);
+  int offset = 0;
+  for (const auto& e : fp.experiments) {
+    if (!e->residuals(m, residuals->data() + offset)) return false;
+    offset += e->num_residuals();
+  }
+  return true;
+}
+
+void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int threads, FitResult* out_ptr) {
+  FitResult& out = *out_ptr;
+  const ParameterSet& ps = *fp.parameters;
+  const int p = ps.num_free();
+  std::vector<double> x = x_in;
+  out.values.clear();
+  for (int k = 0; k < p; ++k) out.values.push_back(ps.to_physical(k, x[k]));
+  out.card = ps.card_for(x);
+  std::atomic<long> runs{0};
+  ceres::Problem::Options popts;
+  popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+  ceres::Problem problem(popts);
+  for (const auto& e : fp.experiments) problem.AddResidualBlock(make_experiment_cost(ps, *e, &runs), nullptr, x.data());
+  ceres::Problem::EvaluateOptions eo;
+  eo.num_threads = std::max(1, threads);
+  double cost = 0.0;
+  std::vector<double> res;
+  ceres::CRSMatrix crs;
+  if (problem.Evaluate(eo, &cost, &res, nullptr, &crs)) {
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+    for (int i = 0; i < crs.num_rows; ++i) {
+      for (int j = crs.rows[i]; j < crs.rows[i + 1]; ++j) J(i, crs.cols[j]) = crs.values[j];
+    }
+    for (int k = 0; k < p; ++k) J.col(k) /= ps.physical_per_internal(k, x[k]);
+    const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
+    std::vector<std::string> names;
+    for (int idx : ps.free_indices()) names.push_back(ps.specs()[idx].name);
+    bool known_noise = true;
+    for (const auto& e : fp.experiments) known_noise = known_noise && e->noise_given();
+    out.uncertainty = analyse_uncertainty(J, r, out.values, names, known_noise ? 1.0 : std::numeric_limits<double>::quiet_NaN());
+    auto& u = out.uncertainty;
+    for (int k = 0; k < p; ++k) {
+      const auto& spec = ps.specs()[ps.free_indices()[k]];
+      // Log-scaled parameters: the interval is symmetric in ln(value), so it stays positive.
+      if (spec.log_scale && std::isfinite(u.std_error[k]) && out.values[k] > 0) {
+        const double f = std::exp(u.t_quantile * u.std_error[k] / out.values[k]);
+        u.ci95_lower[k] = out.values[k] / f;
+        u.ci95_upper[k] = out.values[k] * f;
+      }
+      if (bound_side(spec, out.values[k]) != 0) {
+        u.warnings.push_back(spec.name + " ended at its bound (" + io::format_number(out.values[k]) +
+                             "): the data push it further, or it is poorly determined; its interval is not meaningful.");
+      }
+    }
+    out.experiment_costs.clear();
+    std::vector<int> rows;
+    for (const auto& e : fp.experiments) rows.push_back(e->num_residuals());
+    const Eigen::MatrixXd shares = information_shares(J, rows);
+    int offset = 0;
+    for (std::size_t n = 0; n < fp.experiments.size(); ++n) {
+      const auto& e = fp.experiments[n];
+      ExperimentCost ec;
+      ec.name = e->name();
+      ec.kind = e->kind();
+      ec.points = e->num_residuals();
+      double noise_ss = 0.0;
+      for (int i = 0; i < ec.points; ++i) {
+        const double ri = r(offset + i), w = e->residual_weight(i);
+        ec.cost += 0.5 * ri * ri;
+        if (e->noise_given() && w > 0.0) {
+          noise_ss += ri * ri / w;
+          ++ec.noise_points;
+        }
+      }
+      ec.rms = std::sqrt(2.0 * ec.cost / ec.points);
+      if (ec.noise_points > 0) ec.noise_rms = std::sqrt(noise_ss / ec.noise_points);
+      for (int k = 0; k < p; ++k) ec.information_share.push_back(shares(static_cast<Eigen::Index>(n), k));
+      offset += ec.points;
+      out.experiment_costs.push_back(ec);
+    }
+  } else {
+    out.uncertainty.warnings.push_back("the forward model failed at the solution: no uncertainty estimate");
+  }
+  out.forward_runs += runs.load();
+}
+
+}  // namespace spifit::inverse

@@ -1,0 +1,20 @@
+#pragma once
+// What every fit engine does at its solution (docs/design/identification.md, "Uncertainty"): values,
+// card, the Jacobian-based uncertainty and the per-experiment costs; and the conditioned
+// residuals at a parameter vector.
+#include "inverse/fit/fit_result.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace spifit::inverse {
+
+// Fills values, card, Jacobian-based uncertainty and per-experiment costs at the internal
+// point x (shared by the Ceres and NLopt drivers).
+void analyse_solution(const FitProblem& problem, const std::vector<double>& x, int threads, FitResult* out);
+
+// Conditioned residuals at an internal parameter vector (false: a forward run failed).
+bool evaluate_residuals(const FitProblem& problem, const std::vector<double>& internal, Eigen::VectorXd* residuals);
+
+}  // namespace spifit::inverse
