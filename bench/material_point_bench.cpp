@@ -31,7 +31,7 @@ void tensile_curve(benchmark::State& state, const char* card_name, double angle)
     benchmark::DoNotOptimize(r.curve.data());
   }
   double err = 0.0;
-  if (card.params.kinematic == material::KinematicLaw::none) {
+  if (!card.params.kinematic.active()) {
     const test::UniaxialClosedForm cf{card.params, material::uniaxial_stress_factor(card.hill(), angle * std::numbers::pi / 180.0)};
     for (const auto& p : r.curve) {
       if (p.control_strain > 0) err = std::max(err, std::abs(p.stress_kirchhoff / cf.stress(p.control_strain) - 1.0));

@@ -1,6 +1,7 @@
 #include "reports/card_export.hpp"
 
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "reports/card_export_text.hpp"
 
@@ -13,7 +14,6 @@
 
 namespace spifit::reports {
 
-using material::KinematicLaw;
 using material::MaterialCard;
 
 std::string to_string(ExportFormat f) {
@@ -104,17 +104,21 @@ ExportedLaw exported_law(const MaterialCard& card, const ExportOptions& o) {
                 std::sqrt(1.5 * gh / hill.M)};
   law.lankford = material::lankford_from_hill(hill);
   law.plastic = p.plastic;
-  law.kinematic = p.plastic ? p.kinematic : KinematicLaw::none;
+  law.kinematic = p.plastic ? p.kinematic.law : -1;
   if (!p.plastic) return law;
 
-  if (law.kinematic == KinematicLaw::ziegler) {
-    law.C = p.CA / (law.h * law.h);
-    law.gamma = p.GA / law.h;
-  } else if (law.kinematic == KinematicLaw::armstrong_frederick) {
+  if (law.kinematic == material::kinematic_law_index<material::Ziegler>()) {
+    law.C = p.kinematic[material::Ziegler::CA] / (law.h * law.h);
+    law.gamma = p.kinematic[material::Ziegler::GA] / law.h;
+  } else if (law.kinematic == material::kinematic_law_index<material::ArmstrongFrederick>()) {
     const double k = (gh * gh + hill.G * hill.G + hill.H * hill.H) / (2.0 * gh);
-    law.C = p.CX * p.Xsat * k / (law.h * law.h);
-    law.gamma = p.CX / law.h;
+    const double CX = p.kinematic[material::ArmstrongFrederick::CX], Xsat = p.kinematic[material::ArmstrongFrederick::Xsat];
+    law.C = CX * Xsat * k / (law.h * law.h);
+    law.gamma = CX / law.h;
     law.kinematic_exact = deck::proportional_to_von_mises(hill);
+  } else if (law.kinematic >= 0) {
+    throw std::invalid_argument("card " + card.name + ": kinematic law " + material::kinematic_law(law.kinematic).name +
+                                " has no export to the FE codes yet (reports/card_export.cpp knows armstrong_frederick and ziegler)");
   }
 
   const double h = law.h;
@@ -155,13 +159,7 @@ MaterialCard exported_equivalent_card(const MaterialCard& card) {
   auto& p = eq.params;
   if (p.plastic) {
     material::scale_hardening_strain(p.hardening, law.h);
-    if (law.kinematic != KinematicLaw::none) {
-      p.kinematic = KinematicLaw::ziegler;
-      p.CA = law.C;
-      p.GA = law.gamma;
-      p.CX = 0.0;
-      p.Xsat = 0.0;
-    }
+    if (law.kinematic >= 0) p.kinematic = material::make_kinematic<material::Ziegler>({law.C, law.gamma});
   }
   return eq;
 }

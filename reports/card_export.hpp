@@ -11,6 +11,7 @@
 // G + H != 2 (cards C.5 and C.7 print G + H = 1.9997). For G + H = 2, h = 1 and this is the
 // card itself.
 #include "forward/material/hill48.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/material/material_card.hpp"
 
 #include <string>
@@ -56,7 +57,7 @@ struct ExportedLaw {
   std::vector<double> strain;     // ebar grid, strain[0] = 0
   std::vector<double> size;       // isotropic yield-surface size sigma_F(ebar/h)/h
   std::vector<double> monotonic;  // RD monotonic tension: size + X_RD(ebar)
-  material::KinematicLaw kinematic = material::KinematicLaw::none;
+  int kinematic = -1;  // the card's kinematic law (kinematic_laws.hpp); -1: none
   // Nonlinear kinematic hardening in Abaqus's (Ziegler) form, in ebar units:
   //   d alpha = C (sigma - alpha)/sigma_0 d ebar - gamma alpha d ebar,
   // giving X_RD(ebar) = (C/gamma)(1 - exp(-gamma ebar)) in monotonic RD tension.

@@ -10,7 +10,6 @@
 
 namespace spifit::reports {
 
-using material::KinematicLaw;
 using material::MaterialCard;
 using namespace deck;
 
@@ -61,13 +60,13 @@ Deviation measure_deviation(const MaterialCard& card, const MaterialCard& export
 std::string kinematic_note(const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o) {
   const auto& p = card.params;
   std::string s;
-  if (law.kinematic == KinematicLaw::ziegler) {
+  if (law.kinematic == material::kinematic_law_index<material::Ziegler>()) {
     s = "Ziegler kinematic hardening (eq. 3.9) is Abaqus's nonlinear kinematic law: C = CA/h^2 = " + num(law.C) +
-        " MPa, gamma = GA/h = " + num(law.gamma) + " (CA = " + num(p.CA) + ", GA = " + num(p.GA) + ", h = " + num(law.h) +
+        " MPa, gamma = GA/h = " + num(law.gamma) + " (CA = " + num(p.kinematic[material::Ziegler::CA]) + ", GA = " + num(p.kinematic[material::Ziegler::GA]) + ", h = " + num(law.h) +
         "): exact.";
   } else if (law.kinematic_exact) {
     s = "Armstrong-Frederick kinematic hardening (eq. 3.8, tensor components) with von Mises: gamma = CX/h = " +
-        num(law.gamma) + ", C = 1.5 CX Xsat/h = " + num(law.C) + " MPa (CX = " + num(p.CX) + ", Xsat = " + num(p.Xsat) +
+        num(law.gamma) + ", C = 1.5 CX Xsat/h = " + num(law.C) + " MPa (CX = " + num(p.kinematic[material::ArmstrongFrederick::CX]) + ", Xsat = " + num(p.kinematic[material::ArmstrongFrederick::Xsat]) +
         "): exact for von Mises.";
   } else {
     s = "APPROXIMATION: Armstrong-Frederick (eq. 3.8) with Hill moves the back-stress along the Hill normal; no Abaqus "
@@ -91,7 +90,7 @@ std::string kinematic_note(const MaterialCard& card, const ExportedLaw& law, con
 }
 
 std::vector<std::string> abaqus_notes(const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o) {
-  auto n = common_notes(card, law, o, law.kinematic == KinematicLaw::none ? "*PLASTIC" : "*CYCLIC HARDENING",
+  auto n = common_notes(card, law, o, law.kinematic < 0 ? "*PLASTIC" : "*CYCLIC HARDENING",
                         "Abaqus keeps the last yield stress (perfectly plastic)");
   if (!card.params.plastic) return n;
   if (!all_ratios_one(law.ratios)) {
@@ -104,7 +103,7 @@ std::vector<std::string> abaqus_notes(const MaterialCard& card, const ExportedLa
   } else {
     n.push_back("von Mises card: no *POTENTIAL (all stress ratios are 1).");
   }
-  if (law.kinematic != KinematicLaw::none) {
+  if (law.kinematic >= 0) {
     n.push_back(kinematic_note(card, law, o));
     n.push_back("combined hardening: *PLASTIC, HARDENING=COMBINED, DATATYPE=PARAMETERS gives sigma_0(0), C, gamma; "
                 "*CYCLIC HARDENING gives the isotropic size sigma_0(ebar) (Swift).");
@@ -128,7 +127,7 @@ std::string export_abaqus(const MaterialCard& card, std::vector<std::string>* no
   os << "*DENSITY\n" << num(card.density) << "\n";
   os << "*ELASTIC\n" << num(card.params.E) << ", " << num(card.params.nu) << "\n";
   if (law.plastic) {
-    if (law.kinematic == KinematicLaw::none) {
+    if (law.kinematic < 0) {
       os << "** yield stress [MPa], equivalent plastic strain\n*PLASTIC\n";
       for (std::size_t i = 0; i < law.strain.size(); ++i) os << num(law.size[i]) << ", " << num(law.strain[i]) << "\n";
     } else {

@@ -7,14 +7,13 @@
 
 namespace spifit::reports {
 
-using material::KinematicLaw;
 using material::MaterialCard;
 using namespace deck;
 
 namespace {
 
 std::vector<std::string> calculix_notes(const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o) {
-  const bool combined = law.kinematic != KinematicLaw::none && o.calculix_combined_hardening;
+  const bool combined = law.kinematic >= 0 && o.calculix_combined_hardening;
   auto n = common_notes(card, law, o, combined ? "*CYCLIC HARDENING" : "*PLASTIC",
                         "CalculiX keeps the last value (perfectly plastic)");
   if (!card.params.plastic) return n;
@@ -31,7 +30,7 @@ std::vector<std::string> calculix_notes(const MaterialCard& card, const Exported
                 fixed(h0 / material::shear_stress_factor(hill), 4) + "; the deck gives r = 1, 1, 1 and 1/sqrt(3) = 0.5774 "
                 "in shear.");
   }
-  if (law.kinematic == KinematicLaw::none) return n;
+  if (law.kinematic < 0) return n;
   const std::string fit = law.kinematic_exact ? "" : " (itself the nearest Ziegler-form fit of Hill + Armstrong-Frederick)";
   if (!combined) {
     const double xmax = law.gamma > 0 ? law.C / law.gamma : rd_back_stress(law.C, law.gamma, o.max_plastic_strain);
@@ -67,9 +66,9 @@ std::string export_calculix(const MaterialCard& card, std::vector<std::string>* 
   os << "*ELASTIC\n" << n20(card.params.E) << ", " << n20(card.params.nu) << "\n";
   os << "*DENSITY\n" << n20(card.density) << "\n";
   if (law.plastic) {
-    if (law.kinematic == KinematicLaw::none || !o.calculix_combined_hardening) {
+    if (law.kinematic < 0 || !o.calculix_combined_hardening) {
       os << "** von Mises stress [MPa], equivalent plastic strain"
-         << (law.kinematic == KinematicLaw::none ? "" : " (isotropic equivalent of the kinematic hardening)")
+         << (law.kinematic < 0 ? "" : " (isotropic equivalent of the kinematic hardening)")
          << "\n*PLASTIC\n";
       for (std::size_t i = 0; i < law.strain.size(); ++i) {
         os << n20(law.monotonic[i]) << ", " << n20(law.strain[i]) << "\n";

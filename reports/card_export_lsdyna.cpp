@@ -9,7 +9,6 @@
 
 namespace spifit::reports {
 
-using material::KinematicLaw;
 using material::MaterialCard;
 using namespace deck;
 
@@ -54,13 +53,13 @@ std::vector<std::string> lsdyna_notes(const MaterialCard& card, const ExportedLa
               "Hill coefficients; the card's out-of-plane L, M are not used.");
   n.push_back("material axes: AOPT = 2 with a = global x = RD and d = global y = TD (spifit's convention); change A/D "
               "(or AOPT) to match the mesh.");
-  if (law.kinematic == KinematicLaw::none && p.hardening.law == material::hardening_law_index<material::SwiftHardening>()) {
+  if (law.kinematic < 0 && p.hardening.law == material::hardening_law_index<material::SwiftHardening>()) {
     using S = material::SwiftHardening;
     const double K = p.hardening[S::K], eps0 = p.hardening[S::eps0], hn = p.hardening[S::n];
     n.push_back("analytic alternative: HR = 2 (sigma = P1 (E0 + ebar)^P2) with P1 = K h^-(1+n) = " +
                 num(K * std::pow(law.h, -(1.0 + hn))) + ", P2 = n = " + num(hn) + ", E0 = h eps0 = " +
                 num(law.h * eps0) + " gives the same curve; the deck uses HR = 3 (load curve).");
-  } else if (law.kinematic != KinematicLaw::none) {
+  } else if (law.kinematic >= 0) {
     const double xmax = law.gamma > 0 ? law.C / law.gamma : rd_back_stress(law.C, law.gamma, o.max_plastic_strain);
     n.push_back("APPROXIMATION: *MAT_122 has no kinematic hardening. The curve is the card's monotonic RD tension "
                 "(isotropic size + RD back-stress (C/gamma)(1 - exp(-gamma ebar)), C = " + num(law.C) +

@@ -185,7 +185,7 @@ ShellQ4::ShellQ4(const NodeVectors& X, const NodeVectors& D, double thickness, c
   if (!(thickness > 0.0)) throw std::invalid_argument("shell thickness must be > 0");
   const auto& p = law.params();
   shear_modulus_ = p.E / (2.0 * (1.0 + p.nu));
-  symmetric_material_ = p.kinematic == material::KinematicLaw::none;
+  symmetric_material_ = !p.kinematic.active();
   const double g = 1.0 / std::sqrt(3.0);
   const double gxi[4] = {-g, g, g, -g}, geta[4] = {-g, -g, g, g};
   // Element frame: e1 along the xi direction at the centre, projected on the tangent plane.

@@ -3,6 +3,7 @@
 #include "forward/io/toml_reader.hpp"
 #include "forward/material/material_inputs.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,22 +16,6 @@ namespace spifit::material {
 
 using io::format_number;
 using io::InputError;
-
-std::string to_string(KinematicLaw law) {
-  switch (law) {
-    case KinematicLaw::armstrong_frederick: return "armstrong_frederick";
-    case KinematicLaw::ziegler: return "ziegler";
-    default: return "none";
-  }
-}
-
-bool kinematic_law_from_string(const std::string& s, KinematicLaw* law) {
-  if (s == "none") *law = KinematicLaw::none;
-  else if (s == "armstrong_frederick" || s == "af") *law = KinematicLaw::armstrong_frederick;
-  else if (s == "ziegler") *law = KinematicLaw::ziegler;
-  else return false;
-  return true;
-}
 
 Hill48 MaterialCard::hill() const {
   return {params.F, params.G, params.H, params.L, params.M, params.N};
@@ -72,8 +57,9 @@ constexpr double kHillSpread = 1e6;  // largest over smallest of F + G, G + H, H
 }  // namespace
 
 MaterialCard read_material_card(const io::TomlTable& root) {
-  std::vector<std::string> tables{"card", "elastic", "hill", "armstrong_frederick", "ziegler", "density", "fitted"};
+  std::vector<std::string> tables{"card", "elastic", "hill", "density", "fitted"};
   for (const auto& law : hardening_laws()) tables.push_back(law.name);
+  for (const auto& law : kinematic_laws()) tables.push_back(law.name);
   root.allow_only(tables);
   MaterialCard card;
   card.file = root.file();
@@ -123,18 +109,14 @@ MaterialCard read_material_card(const io::TomlTable& root) {
     read_law_table(*t, law.name, p);
   }
 
-  auto af = root.table("armstrong_frederick");
-  auto zi = root.table("ziegler");
-  if (af && zi) root.fail("ziegler", "a card has at most one kinematic law ([armstrong_frederick] or [ziegler])");
-  if ((af || zi) && !p.plastic)
-    root.fail(af ? "armstrong_frederick" : "ziegler", "kinematic hardening needs a hardening table (" + hardening_table_list() + ")");
-  if (af) {
-    p.kinematic = KinematicLaw::armstrong_frederick;
-    read_law_table(*af, "armstrong_frederick", p);
-  }
-  if (zi) {
-    p.kinematic = KinematicLaw::ziegler;
-    read_law_table(*zi, "ziegler", p);
+  // At most one kinematic table, on a card with a hardening table.
+  for (const auto& law : kinematic_laws()) {
+    const auto t = root.table(law.name);
+    if (!t) continue;
+    if (p.kinematic.active()) root.fail(law.name, "a card has at most one kinematic law (" + kinematic_table_list() + ")");
+    if (!p.plastic) root.fail(law.name, "kinematic hardening needs a hardening table (" + hardening_table_list() + ")");
+    p.kinematic = Kinematic<double>{law.id, {}};
+    read_law_table(*t, law.name, p);
   }
   validate_material_card(card);
   return card;
@@ -236,10 +218,11 @@ std::string material_card_to_toml(const MaterialCard& card) {
     for (std::size_t i = 0; i < law.coefficients.size(); ++i)
       os << law.coefficients[i].key << " = " << format_number(p.hardening[static_cast<int>(i)]) << "\n";
   }
-  if (p.kinematic == KinematicLaw::armstrong_frederick) {
-    os << "\n[armstrong_frederick]\nCX = " << format_number(p.CX) << "\nXsat = " << format_number(p.Xsat) << "\n";
-  } else if (p.kinematic == KinematicLaw::ziegler) {
-    os << "\n[ziegler]\nCA = " << format_number(p.CA) << "\nGA = " << format_number(p.GA) << "\n";
+  if (p.kinematic.active()) {
+    const KinematicLawInfo& law = kinematic_law(p.kinematic.law);
+    os << "\n[" << law.name << "]\n";
+    for (std::size_t i = 0; i < law.coefficients.size(); ++i)
+      os << law.coefficients[i].key << " = " << format_number(p.kinematic[static_cast<int>(i)]) << "\n";
   }
   return os.str();
 }
@@ -275,13 +258,14 @@ std::string describe_material_card(const MaterialCard& card) {
     os << (i == 0 ? " " : ", ") << c.key << " = " << format_number(p.hardening[static_cast<int>(i)]) << (*c.unit ? " " : "") << c.unit;
   }
   os << (is_perfectly_plastic(p) ? " (perfectly plastic)" : "") << "\n";
-  if (p.kinematic == KinematicLaw::armstrong_frederick) {
-    os << "kinematic      Armstrong-Frederick CX = " << format_number(p.CX) << ", Xsat = " << format_number(p.Xsat)
-       << " MPa (uniaxial von Mises offset saturates at 1.5 Xsat = " << format_number(1.5 * p.Xsat) << " MPa)\n";
-  } else if (p.kinematic == KinematicLaw::ziegler) {
-    os << "kinematic      Ziegler CA = " << format_number(p.CA) << " MPa, GA = " << format_number(p.GA);
-    if (p.GA > 0) os << " (uniaxial offset saturates at CA/GA = " << format_number(p.CA / p.GA) << " MPa)";
-    os << "\n";
+  if (p.kinematic.active()) {
+    const KinematicLawInfo& k = kinematic_law(p.kinematic.law);
+    os << "kinematic      " << k.title;
+    for (std::size_t i = 0; i < k.coefficients.size(); ++i) {
+      const LawCoefficient& c = k.coefficients[i];
+      os << (i == 0 ? " " : ", ") << c.key << " = " << format_number(p.kinematic[static_cast<int>(i)]) << (*c.unit ? " " : "") << c.unit;
+    }
+    os << k.saturation(p.kinematic.c.data()) << "\n";
   } else {
     os << "kinematic      none (isotropic hardening)\n";
   }

@@ -1,6 +1,7 @@
 #include "forward/material/material_inputs.hpp"
 
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 
 namespace spifit::material {
 namespace {
@@ -15,7 +16,7 @@ MaterialInput param(const char* name, MaterialField f, const char* unit, Range r
 MaterialField field(MaterialField::Kind k) { return MaterialField{k}; }
 
 std::vector<MaterialInput> make_inputs() {
-  const Range positive = Range::positive(), non_negative = Range::non_negative();
+  const Range positive = Range::positive();
   std::vector<MaterialInput> out{
       param("elastic.E", field(MaterialField::E), "MPa", positive, "Young's modulus", "elastic.E"),
       param("elastic.nu", field(MaterialField::nu), "", Range{-1.0, 0.5, true, true}, "Poisson's ratio", "elastic.nu"),
@@ -32,13 +33,13 @@ std::vector<MaterialInput> make_inputs() {
       out.push_back({io::InputInfo{name, io::InputType::real, c.unit, c.range, {}, c.doc, true}, MaterialField{MaterialField::hardening, law.id, i}, {}, name});
     }
   }
-  for (MaterialInput& in : std::vector<MaterialInput>{
-      param("af.CX", field(MaterialField::CX), "", non_negative, "Armstrong-Frederick rate C_X (eq. 3.8)", "armstrong_frederick.CX"),
-      param("af.Xsat", field(MaterialField::Xsat), "MPa", non_negative, "Armstrong-Frederick saturation X_sat", "armstrong_frederick.Xsat"),
-      param("ziegler.CA", field(MaterialField::CA), "MPa", non_negative, "Ziegler C_A (eq. 3.9)", "ziegler.CA"),
-      param("ziegler.GA", field(MaterialField::GA), "", non_negative, "Ziegler G_A", "ziegler.GA"),
-  })
-    out.push_back(std::move(in));
+  for (const KinematicLawInfo& law : kinematic_laws()) {
+    for (int i = 0; i < static_cast<int>(law.coefficients.size()); ++i) {
+      const LawCoefficient& c = law.coefficients[static_cast<std::size_t>(i)];
+      out.push_back({io::InputInfo{law.input_prefix + "." + c.key, io::InputType::real, c.unit, c.range, {}, c.doc, true},
+                     MaterialField{MaterialField::kinematic, law.id, i}, {}, law.name + "." + c.key});
+    }
+  }
   return out;
 }
 
@@ -58,16 +59,20 @@ const MaterialInput* find_material_input(const std::string& name) {
 bool input_in_use(const MaterialParams<double>& p, const MaterialInput& in) {
   switch (in.field.kind) {
     case MaterialField::hardening: return p.plastic && holds_input(p, in);
-    case MaterialField::CX:
-    case MaterialField::Xsat: return p.kinematic == KinematicLaw::armstrong_frederick;
-    case MaterialField::CA:
-    case MaterialField::GA: return p.kinematic == KinematicLaw::ziegler;
+    case MaterialField::kinematic: return holds_input(p, in);
     default: return true;
   }
 }
 
 std::string why_not_held(const MaterialParams<double>& p, const MaterialInput& in) {
   if (holds_input(p, in)) return {};
+  if (in.field.kind == MaterialField::kinematic) {
+    if (!p.kinematic.active()) return in.info.name + " is not a parameter of this card: it has no kinematic hardening (" + kinematic_table_list() + ")";
+    const KinematicLawInfo& law = kinematic_law(p.kinematic.law);
+    std::string names;
+    for (const auto& c : law.coefficients) names += (names.empty() ? "" : ", ") + law.input_prefix + "." + c.key;
+    return in.info.name + " is not a parameter of this card: its kinematic law is " + law.name + " (" + names + ")";
+  }
   const HardeningLawInfo& law = hardening_law(p.hardening.law);
   std::string names;
   for (const auto& c : law.coefficients) names += (names.empty() ? "" : ", ") + law.name + "." + c.key;

@@ -18,13 +18,13 @@
 
 namespace spifit::material {
 
-// A parameter's place in MaterialParams: a named field, or coefficient `slot` of hardening law
-// `law` (which the card must use).
+// A parameter's place in MaterialParams: a named field, or coefficient `slot` of hardening or
+// kinematic law `law` (which must be the card's).
 struct MaterialField {
-  enum Kind : unsigned char { E, nu, F, G, H, L, M, N, CX, Xsat, CA, GA, hardening };
+  enum Kind : unsigned char { E, nu, F, G, H, L, M, N, hardening, kinematic };
   Kind kind = E;
-  int law = -1;  // hardening only: the law's index in HardeningLawList
-  int slot = 0;  // hardening only: the coefficient's index in the law
+  int law = -1;  // hardening, kinematic: the law's index in HardeningLawList, KinematicLawList
+  int slot = 0;  // hardening, kinematic: the coefficient's index in the law
 };
 
 struct MaterialInput {
@@ -41,17 +41,22 @@ const MaterialInput* find_material_input(const std::string& name);
 // The InputInfo of every parameter (for listings and the documentation).
 std::vector<io::InputInfo> material_input_infos();
 
-// Whether p holds a value for the input: all but the coefficients of hardening laws other than
-// p's (the kinematic constants are held whatever the kinematic law).
+// Whether p holds a value for the input: elastic and Hill always, a law's coefficients when it is
+// p's hardening or kinematic law.
 template <typename T>
 bool holds_input(const MaterialParams<T>& p, const MaterialInput& in) {
-  return in.field.kind != MaterialField::hardening || in.field.law == p.hardening.law;
+  switch (in.field.kind) {
+    case MaterialField::hardening: return in.field.law == p.hardening.law;
+    case MaterialField::kinematic: return in.field.law == p.kinematic.law;
+    default: return true;
+  }
 }
 // Whether the card's laws use the input: holds_input, an elastic card no hardening coefficient,
 // and only the kinematic law in use its constants.
 bool input_in_use(const MaterialParams<double>& p, const MaterialInput& in);
 // Why p cannot take a value of the input ("swift.K is not a parameter of this card: its hardening
-// law is voce (voce.sigma0, voce.Q, voce.b)"); empty when it can.
+// law is voce (voce.sigma0, voce.Q, voce.b)", "af.CX ...: it has no kinematic hardening"); empty
+// when it can.
 std::string why_not_held(const MaterialParams<double>& p, const MaterialInput& in);
 
 template <typename T>
@@ -68,10 +73,9 @@ T& material_field(MaterialParams<T>& p, MaterialField f) {
     case MaterialField::hardening:
       if (f.law != p.hardening.law) throw std::logic_error("a coefficient of another hardening law than the card's");
       return p.hardening[f.slot];
-    case MaterialField::CX: return p.CX;
-    case MaterialField::Xsat: return p.Xsat;
-    case MaterialField::CA: return p.CA;
-    case MaterialField::GA: return p.GA;
+    case MaterialField::kinematic:
+      if (f.law != p.kinematic.law) throw std::logic_error("a coefficient of another kinematic law than the card's");
+      return p.kinematic[f.slot];
   }
   return p.E;
 }

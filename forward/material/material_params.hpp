@@ -1,20 +1,16 @@
 #pragma once
 // Constitutive parameters of the Hill48 + isotropic hardening (a law of the registry,
-// hardening/hardening_laws.hpp: Swift, Voce, Swift-Voce) + {none, Armstrong-Frederick, Ziegler} law,
+// hardening/hardening_laws.hpp: Swift, Voce, Swift-Voce) + kinematic hardening (none or a law of
+// kinematic/kinematic_laws.hpp: Armstrong-Frederick, Ziegler) law,
 // templated on the scalar type so that ceres::Jet gives exact parameter derivatives of a
 // material-point curve (docs/design/numerics-material.md, "Jets (exact parameter derivatives)").
 #include "forward/material/hardening/hardening_coefficients.hpp"
+#include "forward/material/kinematic/kinematic_coefficients.hpp"
 #include "forward/material/scalar.hpp"
 
 #include <string>
 
 namespace spifit::material {
-
-enum class KinematicLaw { none, armstrong_frederick, ziegler };
-
-std::string to_string(KinematicLaw law);
-// Accepts "none", "armstrong_frederick" (alias "af"), "ziegler"; returns false otherwise.
-bool kinematic_law_from_string(const std::string& s, KinematicLaw* law);
 
 template <typename T>
 struct MaterialParams {
@@ -26,10 +22,10 @@ struct MaterialParams {
   // default is Swift K = 180 MPa, eps0 = 0.00109, n = 0.21. plastic = false: an elastic card.
   bool plastic = true;
   Hardening<T> hardening{0, {T(180.0), T(0.00109), T(0.21)}};
-  // Kinematic hardening. Armstrong-Frederick (eq. 3.8): dX = CX (Xsat deps_p - X dp).
-  // Ziegler (eq. 3.9): dX = CA (sigma - X) dp / sigma_F - GA X dp.
-  KinematicLaw kinematic = KinematicLaw::none;
-  T CX = T(0.0), Xsat = T(0.0), CA = T(0.0), GA = T(0.0);
+  // Kinematic hardening: none (law -1) or the law's index and coefficients (kinematic_laws.hpp),
+  // e.g. Armstrong-Frederick (eq. 3.8) dX = CX (Xsat deps_p - X dp), Ziegler (eq. 3.9)
+  // dX = CA (sigma - X) dp / sigma_F - GA X dp.
+  Kinematic<T> kinematic;
 
   template <typename U>
   MaterialParams<U> cast() const {
@@ -38,7 +34,8 @@ struct MaterialParams {
     o.F = U(F); o.G = U(G); o.H = U(H); o.L = U(L); o.M = U(M); o.N = U(N);
     o.plastic = plastic; o.hardening.law = hardening.law;
     for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = U(hardening[i]);
-    o.kinematic = kinematic; o.CX = U(CX); o.Xsat = U(Xsat); o.CA = U(CA); o.GA = U(GA);
+    o.kinematic.law = kinematic.law;
+    for (int i = 0; i < kMaxKinematicCoefficients; ++i) o.kinematic[i] = U(kinematic[i]);
     return o;
   }
 };
@@ -51,7 +48,8 @@ MaterialParams<double> values_of(const MaterialParams<T>& p) {
   o.F = value_of(p.F); o.G = value_of(p.G); o.H = value_of(p.H); o.L = value_of(p.L); o.M = value_of(p.M); o.N = value_of(p.N);
   o.plastic = p.plastic; o.hardening.law = p.hardening.law;
   for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = value_of(p.hardening[i]);
-  o.kinematic = p.kinematic; o.CX = value_of(p.CX); o.Xsat = value_of(p.Xsat); o.CA = value_of(p.CA); o.GA = value_of(p.GA);
+  o.kinematic.law = p.kinematic.law;
+  for (int i = 0; i < kMaxKinematicCoefficients; ++i) o.kinematic[i] = value_of(p.kinematic[i]);
   return o;
 }
 

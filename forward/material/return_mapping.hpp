@@ -21,6 +21,7 @@
 // With T = ceres::Jet the multiplier is converged in double precision on a value copy of the
 // law and one Newton update in Jets follows: exact parameter derivatives (integrate_jet).
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/material/material_params.hpp"
 #include "forward/material/material_state.hpp"
 #include "forward/material/scalar.hpp"
@@ -84,11 +85,8 @@ class ReturnMapping {
   // sub-step for accuracy (0 for isotropic hardening, where the update is exact for
   // proportional loading).
   double kinematic_rate(const State& s) const {
-    switch (m_.kinematic) {
-      case KinematicLaw::armstrong_frederick: return value_of(m_.CX);
-      case KinematicLaw::ziegler: return value_of(m_.GA + m_.CA / flow_stress(s));
-      default: return 0.0;
-    }
+    if (!m_.kinematic.active()) return 0.0;
+    return visit_kinematic_law(m_.kinematic.law, [&](auto law) { return decltype(law)::rate(m_.kinematic.c.data(), flow_stress(s)); });
   }
 
   // Integrates from the committed state s0 over the strain increment d_eps (engineering
@@ -169,7 +167,8 @@ class ReturnMapping {
 
  private:
   struct Eval {
-    T s, ds, q, dq, a, e, m;
+    T s, ds, q, dq;
+    KinematicStep<T> k;  // the kinematic law's a, e, m and their derivatives
     Vec xi, dxi;
     T seq, phi, dphi;
     Mat Minv;  // inverse of Mat(dl): closed-form cofactors for 3x3, LU for 6x6
@@ -181,22 +180,17 @@ class ReturnMapping {
                         UpdateResult result) const {
     const Vec d_eps_p = ev.q * (P_ * ev.xi);
     s1.stress = sigma_tr - C_ * d_eps_p;
-    if (m_.kinematic != KinematicLaw::none) s1.back_stress = s1.stress - ev.xi;  // else X1 = X0 exactly
+    if (m_.kinematic.active()) s1.back_stress = s1.stress - ev.xi;  // else X1 = X0 exactly
     s1.plastic_strain = s0.plastic_strain + d_eps_p;
     s1.eqps = s0.eqps + dl;
     s1.flow_stress = ev.s;  // yield_stress(s0.eqps + dl) of the last evaluation: that of s1.eqps
     s1.plastic_work = s0.plastic_work + s1.stress.dot(d_eps_p);
     if constexpr (Dim == 3) {
-      const T d_eps_p_zz = -(d_eps_p(0) + d_eps_p(1));
-      switch (m_.kinematic) {
-        case KinematicLaw::armstrong_frederick:
-          s1.back_stress_zz = ev.m * s0.back_stress_zz + ev.e * d_eps_p_zz;
-          break;
-        case KinematicLaw::ziegler:
-          s1.back_stress_zz = ev.m * s0.back_stress_zz / ev.a;
-          break;
-        default:
-          break;
+      if (m_.kinematic.active()) {
+        const T d_eps_p_zz = -(d_eps_p(0) + d_eps_p(1));
+        s1.back_stress_zz = visit_kinematic_law(m_.kinematic.law, [&](auto law) {
+          return decltype(law)::back_stress_zz(m_.kinematic.c.data(), ev.k, s0.back_stress_zz, d_eps_p_zz);
+        });
       }
     }
     for (int i = 0; i < Dim; ++i) {
@@ -260,34 +254,16 @@ class ReturnMapping {
     ev.ds = hardening_slope(m_, s0.eqps, dl, ev.s);
     ev.q = dl / (2.0 * ev.s);
     ev.dq = (ev.s - dl * ev.ds) / (2.0 * ev.s * ev.s);
-    T a = T(1.0), da = T(0.0), e = T(0.0), de = T(0.0), m = T(1.0), dm = T(0.0);
-    switch (m_.kinematic) {
-      case KinematicLaw::armstrong_frederick: {
-        const T x = m_.CX * dl;
-        const T k = m_.CX * m_.Xsat;
-        e = k * psi_exp(x);
-        de = k * m_.CX * psi_exp_derivative(x);
-        m = exp(-x);
-        dm = -m_.CX * m;
-        break;
-      }
-      case KinematicLaw::ziegler: {
-        const T x = m_.GA * dl;
-        const T psi = psi_exp(x);
-        a = 1.0 + m_.CA * psi * dl / ev.s;
-        da = m_.CA * (m_.GA * psi_exp_derivative(x) * dl / ev.s + psi / ev.s - psi * dl * ev.ds / (ev.s * ev.s));
-        m = exp(-x);
-        dm = -m_.GA * m;
-        break;
-      }
-      default:
-        break;
+    ev.k = KinematicStep<T>();
+    if (m_.kinematic.active()) {
+      visit_kinematic_law(m_.kinematic.law, [&](auto law) {
+        decltype(law)::step(m_.kinematic.c.data(), dl, ev.s, ev.ds, ev.k);
+        return 0;
+      });
     }
-    ev.a = a;
-    ev.e = e;
-    ev.m = m;
+    const T &a = ev.k.a, &da = ev.k.da, &e = ev.k.e, &de = ev.k.de, &m = ev.k.m, &dm = ev.k.dm;
     // Isotropic hardening (a = 1, e = 0): the products are constants of the law.
-    const bool isotropic = m_.kinematic == KinematicLaw::none;
+    const bool isotropic = !m_.kinematic.active();
     const Mat KP = isotropic ? CP_ : Mat((C_ + e * A_) * P_);
     const Mat M = a * Mat::Identity() + ev.q * KP;
     const Mat dM = isotropic ? Mat(ev.dq * KP) : Mat(da * Mat::Identity() + ev.dq * KP + (ev.q * de) * (A_ * P_));

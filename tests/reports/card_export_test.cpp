@@ -1,6 +1,7 @@
 // Card exports (reports/card_export.hpp): every deck read back and compared with the card, the
 // Hill notation checked against Abaqus's own definition of the potential, tables, options,
 // names and malformed decks. card_export_equivalence_test.cpp runs the law each deck encodes.
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "reports/card_export.hpp"
 #include "tests/support/card_export_readers.hpp"
 
@@ -16,7 +17,6 @@
 #include <sstream>
 
 using namespace spifit;
-using material::KinematicLaw;
 using material::MaterialCard;
 
 namespace {
@@ -42,13 +42,13 @@ struct Expected {
 Expected expected(const MaterialCard& c) {
   const auto& p = c.params;
   Expected e{std::sqrt((p.G + p.H) / 2.0), 0.0, 0.0};
-  if (p.kinematic == KinematicLaw::ziegler) {
-    e.C = p.CA / (e.h * e.h);
-    e.gamma = p.GA / e.h;
-  } else if (p.kinematic == KinematicLaw::armstrong_frederick) {
+  if (material::is_kinematic<material::Ziegler>(p.kinematic)) {
+    e.C = p.kinematic[material::Ziegler::CA] / (e.h * e.h);
+    e.gamma = p.kinematic[material::Ziegler::GA] / e.h;
+  } else if (material::is_kinematic<material::ArmstrongFrederick>(p.kinematic)) {
     const double k = ((p.G + p.H) * (p.G + p.H) + p.G * p.G + p.H * p.H) / (2.0 * (p.G + p.H));
-    e.C = p.CX * p.Xsat * k / (e.h * e.h);
-    e.gamma = p.CX / e.h;
+    e.C = p.kinematic[material::ArmstrongFrederick::CX] * p.kinematic[material::ArmstrongFrederick::Xsat] * k / (e.h * e.h);
+    e.gamma = p.kinematic[material::ArmstrongFrederick::CX] / e.h;
   }
   return e;
 }
@@ -136,7 +136,7 @@ TEST_P(CardExport, AbaqusRoundTrip) {
     EXPECT_TRUE(m.plastic.empty() && m.plastic_parameters.empty() && !m.potential);
     return;
   }
-  if (c.params.kinematic == KinematicLaw::none) {
+  if (!c.params.kinematic.active()) {
     EXPECT_EQ(m.hardening, "ISOTROPIC");
     check_table(c, m.plastic, false, 1e-14, "*PLASTIC");
   } else {
@@ -147,14 +147,14 @@ TEST_P(CardExport, AbaqusRoundTrip) {
     EXPECT_LT(rel(m.plastic_parameters[1], ex.C), 1e-14);
     EXPECT_LT(rel(m.plastic_parameters[2], ex.gamma), 1e-14);
     check_table(c, m.cyclic_hardening, false, 1e-14, "*CYCLIC HARDENING");
-    if (c.params.kinematic == KinematicLaw::armstrong_frederick && c.hill().is_von_mises()) {
+    if (material::is_kinematic<material::ArmstrongFrederick>(c.params.kinematic) && c.hill().is_von_mises()) {
       // The classic von Mises mapping: gamma = CX, C = 1.5 CX Xsat.
-      EXPECT_LT(rel(m.plastic_parameters[1], 1.5 * c.params.CX * c.params.Xsat), 1e-14);
-      EXPECT_LT(rel(m.plastic_parameters[2], c.params.CX), 1e-14);
+      EXPECT_LT(rel(m.plastic_parameters[1], 1.5 * c.params.kinematic[material::ArmstrongFrederick::CX] * c.params.kinematic[material::ArmstrongFrederick::Xsat]), 1e-14);
+      EXPECT_LT(rel(m.plastic_parameters[2], c.params.kinematic[material::ArmstrongFrederick::CX]), 1e-14);
     }
-    if (c.params.kinematic == KinematicLaw::ziegler && c.hill().is_von_mises()) {
-      EXPECT_EQ(m.plastic_parameters[1], c.params.CA);
-      EXPECT_EQ(m.plastic_parameters[2], c.params.GA);
+    if (material::is_kinematic<material::Ziegler>(c.params.kinematic) && c.hill().is_von_mises()) {
+      EXPECT_EQ(m.plastic_parameters[1], c.params.kinematic[material::Ziegler::CA]);
+      EXPECT_EQ(m.plastic_parameters[2], c.params.kinematic[material::Ziegler::GA]);
     }
   }
   if (is_scaled_von_mises(c)) {
@@ -189,7 +189,7 @@ TEST_P(CardExport, AbaqusYieldSurfaceEqualsCard) {
   if (!c.params.plastic) GTEST_SKIP() << "elastic-only card";
   const auto m = test::read_inp_material(reports::export_abaqus(c, nullptr));
   const material::AbaqusPotential r = m.potential.value_or(material::AbaqusPotential{});
-  const auto& table = c.params.kinematic == KinematicLaw::none ? m.plastic : m.cyclic_hardening;
+  const auto& table = !c.params.kinematic.active() ? m.plastic : m.cyclic_hardening;
   const double h = expected(c).h;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-200.0, 200.0);
@@ -266,7 +266,7 @@ TEST_P(CardExport, CalculixRoundTrip) {
   EXPECT_EQ(m.hardening, "ISOTROPIC");
   EXPECT_TRUE(m.cyclic_hardening.empty());
   check_table(c, m.plastic, true, 1e-13, "*PLASTIC");
-  if (c.params.kinematic == KinematicLaw::none) return;
+  if (!c.params.kinematic.active()) return;
   // Optionally with ccx's own combined hardening.
   reports::ExportOptions o;
   o.calculix_combined_hardening = true;

@@ -4,13 +4,13 @@
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_params.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 
 #include <cmath>
 #include <functional>
 
 namespace spifit::test {
 
-using material::KinematicLaw;
 
 // Equivalent plastic strain p at which a closed form's total strain reaches `strain`
 // (strain_at_p is monotonic in p): bisection to round-off.
@@ -31,11 +31,12 @@ struct UniaxialClosedForm {
   MaterialParams<double> m;
   double h = 1.0;  // sigma_eq of a unit uniaxial stress
   double offset(double p) const {
-    switch (m.kinematic) {
-      case KinematicLaw::armstrong_frederick: return 1.5 * m.Xsat * (1.0 - std::exp(-m.CX * p));
-      case KinematicLaw::ziegler: return m.CA / m.GA * (1.0 - std::exp(-m.GA * p));
-      default: return 0.0;
-    }
+    using AF = material::ArmstrongFrederick;
+    using Z = material::Ziegler;
+    const auto& k = m.kinematic;
+    if (material::is_kinematic<AF>(k)) return 1.5 * k[AF::Xsat] * (1.0 - std::exp(-k[AF::CX] * p));
+    if (material::is_kinematic<Z>(k)) return k[Z::CA] / k[Z::GA] * (1.0 - std::exp(-k[Z::GA] * p));
+    return 0.0;
   }
   double stress_at_p(double p) const { return material::hardening_stress(m, p) / h + offset(p); }
   double strain_at_p(double p) const { return stress_at_p(p) / m.E + h * p; }
@@ -53,11 +54,12 @@ struct ShearClosedForm {
   MaterialParams<double> m;
   double back_stress(double p) const {
     const double r = std::sqrt(m.N);
-    switch (m.kinematic) {
-      case KinematicLaw::armstrong_frederick: return r * m.Xsat / 2.0 * (1.0 - std::exp(-m.CX * p));
-      case KinematicLaw::ziegler: return m.CA / (r * m.GA) * (1.0 - std::exp(-m.GA * p));
-      default: return 0.0;
-    }
+    using AF = material::ArmstrongFrederick;
+    using Z = material::Ziegler;
+    const auto& k = m.kinematic;
+    if (material::is_kinematic<AF>(k)) return r * k[AF::Xsat] / 2.0 * (1.0 - std::exp(-k[AF::CX] * p));
+    if (material::is_kinematic<Z>(k)) return k[Z::CA] / (r * k[Z::GA]) * (1.0 - std::exp(-k[Z::GA] * p));
+    return 0.0;
   }
   double mu() const { return m.E / (2.0 * (1.0 + m.nu)); }
   double stress_at_p(double p) const { return material::hardening_stress(m, p) / std::sqrt(m.N) + back_stress(p); }

@@ -3,7 +3,7 @@
 // law's index in the registry (hardening_laws.hpp) and its coefficients in the order the law
 // declares them. Templated on the scalar type, so that ceres::Jet carries exact parameter
 // derivatives through any law.
-#include "forward/io/named_inputs.hpp"
+#include "forward/material/law_coefficient.hpp"
 
 #include <array>
 
@@ -20,13 +20,7 @@ struct Hardening {
   const T& operator[](int i) const { return c[static_cast<std::size_t>(i)]; }
 };
 
-// One coefficient as a law declares it: its key in the law's card table (also the second part of
-// its fit and sweep name, "swift.K"), unit, valid values and a one-line description.
-struct HardeningCoefficient {
-  const char* key;
-  const char* unit;
-  io::Range range;
-  const char* doc;
-};
+// One coefficient as a law declares it (law_coefficient.hpp).
+using HardeningCoefficient = LawCoefficient;
 
 }  // namespace spifit::material

@@ -2,6 +2,7 @@
 // independently of the laws' code, slopes against finite differences, Jets against finite
 // differences, material-point tension (several angles), equibiaxial tension and shear against
 // closed forms, and cards with the new tables.
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/hill48.hpp"
@@ -121,7 +122,7 @@ TEST(HardeningLaws, VoceUniaxialAtAnglesMatchesClosedForm) {
 TEST(HardeningLaws, SwiftVoceEquibiaxialYield) {
   const auto card = test::swift_voce_af_test_card();
   auto m = card.params;
-  m.kinematic = material::KinematicLaw::none;  // isotropic: the whole curve has a closed form
+  m.kinematic = {};  // isotropic: the whole curve has a closed form
   scene::MaterialPointSetup s;
   s.kind = scene::MaterialPointKind::biaxial;
   s.stress_ratio = 1.0;

@@ -1,5 +1,6 @@
 // With T = ceres::Jet the material-point curve carries exact parameter derivatives
 // (needed by the Ceres fits): compare them with central differences of double runs.
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/cards.hpp"
@@ -20,8 +21,8 @@ material::MaterialParams<Jet> seeded(const material::MaterialParams<double>& p) 
   j.N.v[2] = 1.0;     // d/dN (Hill shear coefficient)
   j.L = j.N;
   j.M = j.N;
-  if (p.kinematic == material::KinematicLaw::armstrong_frederick) j.CX.v[3] = 1.0;
-  if (p.kinematic == material::KinematicLaw::ziegler) j.CA.v[3] = 1.0;
+  if (material::is_kinematic<material::ArmstrongFrederick>(p.kinematic)) j.kinematic[material::ArmstrongFrederick::CX].v[3] = 1.0;
+  if (material::is_kinematic<material::Ziegler>(p.kinematic)) j.kinematic[material::Ziegler::CA].v[3] = 1.0;
   return j;
 }
 
@@ -31,8 +32,8 @@ material::MaterialParams<double> perturbed(material::MaterialParams<double> p, i
     case 1: p.hardening[material::SwiftHardening::n] += h; break;
     case 2: p.N += h; p.L = p.N; p.M = p.N; break;
     case 3:
-      if (p.kinematic == material::KinematicLaw::armstrong_frederick) p.CX += h;
-      else p.CA += h;
+      if (material::is_kinematic<material::ArmstrongFrederick>(p.kinematic)) p.kinematic[material::ArmstrongFrederick::CX] += h;
+      else p.kinematic[material::Ziegler::CA] += h;
       break;
   }
   return p;
@@ -43,7 +44,7 @@ double step_for(const material::MaterialParams<double>& p, int k) {
     case 0: return 1e-4 * p.hardening[material::SwiftHardening::K];
     case 1: return 1e-5;
     case 2: return 1e-5;
-    default: return 1e-4 * (p.kinematic == material::KinematicLaw::ziegler ? p.CA : std::max(p.CX, 1.0));
+    default: return 1e-4 * (material::is_kinematic<material::Ziegler>(p.kinematic) ? p.kinematic[material::Ziegler::CA] : std::max(p.kinematic[material::ArmstrongFrederick::CX], 1.0));
   }
 }
 
@@ -57,7 +58,7 @@ TEST_P(JetDerivatives, TensileCurveMatchesCentralDifferences) {
   setup.driver.kinematic_substep = 0.0;  // fixed steps: the discrete curve is smooth in the parameters
   const auto rj = scene::run_material_point(seeded(card.params), setup);
   ASSERT_TRUE(rj.ok) << rj.message;
-  const int nk = card.params.kinematic == material::KinematicLaw::none ? 3 : 4;
+  const int nk = !card.params.kinematic.active() ? 3 : 4;
   for (int k = 0; k < nk; ++k) {
     SCOPED_TRACE(k);
     const double h = step_for(card.params, k);

@@ -1,5 +1,6 @@
 // Loading and validating material cards: every bundled card loads with the thesis values;
 // bad cards fail with an InputError naming file, key and value.
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/material/material_inputs.hpp"
@@ -24,16 +25,16 @@ TEST(MaterialCard, BundledCardsCarryTheThesisValues) {
   EXPECT_EQ(c.params.hardening[material::SwiftHardening::K], 180.0);
   EXPECT_NEAR(material::hardening_stress(c.params, 0.0), 42.97, 5e-3);  // Table C.4
   const auto c7 = test::card("aa3003o_c7_af_shell");
-  EXPECT_EQ(c7.params.kinematic, material::KinematicLaw::armstrong_frederick);
-  EXPECT_EQ(c7.params.CX, 51.4);
-  EXPECT_EQ(c7.params.Xsat, 46.0);
+  EXPECT_TRUE(material::is_kinematic<material::ArmstrongFrederick>(c7.params.kinematic));
+  EXPECT_EQ(c7.params.kinematic[material::ArmstrongFrederick::CX], 51.4);
+  EXPECT_EQ(c7.params.kinematic[material::ArmstrongFrederick::Xsat], 46.0);
   EXPECT_EQ(c7.params.H, 0.8067);
   EXPECT_EQ(test::card("aa3003o_c7n_af_shell").params.H, 0.807);
   const auto c8 = test::card("aa3003o_c8_ziegler_shell");
   EXPECT_TRUE(c8.hill().is_von_mises());
-  EXPECT_EQ(c8.params.kinematic, material::KinematicLaw::ziegler);
-  EXPECT_EQ(c8.params.CA, 3000.0);
-  EXPECT_EQ(c8.params.GA, 56.9);
+  EXPECT_TRUE(material::is_kinematic<material::Ziegler>(c8.params.kinematic));
+  EXPECT_EQ(c8.params.kinematic[material::Ziegler::CA], 3000.0);
+  EXPECT_EQ(c8.params.kinematic[material::Ziegler::GA], 56.9);
   for (const auto& n : test::thesis_card_names()) EXPECT_NO_THROW(test::card(n)) << n;
 }
 
@@ -123,12 +124,16 @@ TEST(MaterialCard, RangeMessagesComeFromTheNamedInputs) {
   for (const auto& in : material::material_inputs()) {
     if (in.info.range.lo == -std::numeric_limits<double>::infinity()) continue;  // Hill F, G, H: convexity
     auto c = valid;
-    if (!material::holds_input(c.params, in)) {  // another hardening law: 0.5 is in every coefficient's range
-      c.params.hardening = material::Hardening<double>{in.field.law, {}};
-      c.params.hardening.c.fill(0.5);
+    if (!material::holds_input(c.params, in)) {  // another law than the card's: 0.5 is in every coefficient's range
+      if (in.field.kind == material::MaterialField::hardening) {
+        c.params.hardening = material::Hardening<double>{in.field.law, {}};
+        c.params.hardening.c.fill(0.5);
+      } else {
+        c.params.kinematic = material::Kinematic<double>{in.field.law, {}};
+        c.params.kinematic.c.fill(0.5);
+      }
     }
     material::set_material_input(c.params, in, in.info.range.lo - 1.0);
-    if (in.card_key.rfind("ziegler", 0) == 0) c.params.kinematic = material::KinematicLaw::ziegler;
     try {
       material::validate_material_card(c);
       ADD_FAILURE() << in.info.name << " accepted " << in.info.range.lo - 1.0;

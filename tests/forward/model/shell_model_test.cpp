@@ -1,3 +1,4 @@
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/mesh/benchmark_meshes.hpp"
 #include "forward/mesh/square_sheet.hpp"
@@ -122,7 +123,7 @@ TEST(ShellModel, AutomaticLinearSolverFollowsTheTangentsSymmetry) {
   material::MaterialParams<double> af;
   af.F = 1.224; af.G = 1.193; af.H = 0.807; af.N = af.L = af.M = 4.06;
   af.hardening[material::SwiftHardening::K] = 111.0; af.hardening[material::SwiftHardening::eps0] = 5e-4; af.hardening[material::SwiftHardening::n] = 0.266;
-  af.kinematic = material::KinematicLaw::armstrong_frederick; af.CX = 51.4; af.Xsat = 46.0;
+  af.kinematic = material::make_kinematic<material::ArmstrongFrederick>({51.4, 46.0});
   ShellModel model(m, 1.0, af, {});
   solver::DofConstraints c(model.num_dofs());
   for (int n : m.node_sets.at("clamped"))

@@ -1,4 +1,5 @@
 // Regressions found in review (2026-11-21); each test failed before its fix.
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/material/return_mapping.hpp"
@@ -57,7 +58,7 @@ TEST(Regression, AccuracySubstepsIndependentOfCutbackBudget) {
 // the remaining accuracy bound is waived and reported.
 TEST(Regression, SubstepsAreCapped) {
   auto card = test::card("aa3003o_c7_af_shell");
-  card.params.CX = 1e6;
+  card.params.kinematic[material::ArmstrongFrederick::CX] = 1e6;
   auto s = test::tensile(0.0, {0.3}, 10);
   const auto r = scene::run_material_point(card.params, s);
   ASSERT_TRUE(r.ok) << r.message;
