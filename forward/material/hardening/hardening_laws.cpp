@@ -3,23 +3,15 @@
 #include <stdexcept>
 
 namespace spifit::material {
-namespace {
-
-template <std::size_t... I>
-std::vector<HardeningLawInfo> make_infos(std::index_sequence<I...>) {
-  std::vector<HardeningLawInfo> out;
-  (out.push_back(HardeningLawInfo{static_cast<int>(I), std::tuple_element_t<I, HardeningLawList>::name,
-                                  std::tuple_element_t<I, HardeningLawList>::title, std::tuple_element_t<I, HardeningLawList>::formula,
-                                  std::tuple_element_t<I, HardeningLawList>::initial_formula,
-                                  std::tuple_element_t<I, HardeningLawList>::coefficients()}),
-   ...);
-  return out;
-}
-
-}  // namespace
-
 const std::vector<HardeningLawInfo>& hardening_laws() {
-  static const std::vector<HardeningLawInfo> laws = make_infos(std::make_index_sequence<kHardeningLawCount>());
+  static const std::vector<HardeningLawInfo> laws = [] {
+    std::vector<HardeningLawInfo> out;
+    for_each_law<HardeningLawList>([&](auto law, int id) {
+      using Law = decltype(law);
+      out.push_back({id, Law::name, Law::title, Law::formula, Law::initial_formula, Law::coefficients()});
+    });
+    return out;
+  }();
   return laws;
 }
 

@@ -7,12 +7,12 @@
 #include "forward/material/hardening/swift_hardening.hpp"
 #include "forward/material/hardening/swift_voce_hardening.hpp"
 #include "forward/material/hardening/voce_hardening.hpp"
+#include "forward/material/law_registry.hpp"
 #include "forward/material/material_params.hpp"
 
-#include <string>
 #include <initializer_list>
+#include <string>
 #include <tuple>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -24,33 +24,22 @@ using HardeningLawList = std::tuple<SwiftHardening, VoceHardening, SwiftVoceHard
 inline constexpr int kHardeningLawCount = static_cast<int>(std::tuple_size_v<HardeningLawList>);
 
 // Calls f(Law{}) for the law with this index.
-template <int I = 0, typename F>
+template <typename F>
 decltype(auto) visit_hardening_law(int law, F&& f) {
-  using Law = std::tuple_element_t<I, HardeningLawList>;
-  static_assert(Law::count <= kMaxHardeningCoefficients, "raise kMaxHardeningCoefficients");
-  if constexpr (I + 1 == kHardeningLawCount) {
-    return f(Law{});
-  } else {
-    if (law == I) return f(Law{});
-    return visit_hardening_law<I + 1>(law, std::forward<F>(f));
-  }
+  return visit_law<HardeningLawList>(law, std::forward<F>(f));
 }
 
 // The index of a law in the registry: hardening_law_index<SwiftHardening>() == 0.
-template <typename Law, int I = 0>
+template <typename Law>
 constexpr int hardening_law_index() {
-  static_assert(I < kHardeningLawCount, "not a registered hardening law");
-  if constexpr (std::is_same_v<Law, std::tuple_element_t<I, HardeningLawList>>) return I;
-  else return hardening_law_index<Law, I + 1>();
+  static_assert(Law::count <= kMaxHardeningCoefficients, "raise kMaxHardeningCoefficients");
+  return law_index<HardeningLawList, Law>();
 }
 
 // A law's coefficients in its declared order: make_hardening<SwiftHardening>({K, eps0, n}).
 template <typename Law, typename T = double>
 Hardening<T> make_hardening(std::initializer_list<T> coefficients) {
-  Hardening<T> h{hardening_law_index<Law>(), {}};
-  int i = 0;
-  for (const T& c : coefficients) h[i++] = c;
-  return h;
+  return make_law<Hardening<T>, hardening_law_index<Law>()>(coefficients);
 }
 
 // The yield stress sigma_F(p) of the card's law.

@@ -3,23 +3,15 @@
 #include <stdexcept>
 
 namespace spifit::material {
-namespace {
-
-template <std::size_t... I>
-std::vector<KinematicLawInfo> make_infos(std::index_sequence<I...>) {
-  std::vector<KinematicLawInfo> out;
-  (out.push_back(KinematicLawInfo{static_cast<int>(I), std::tuple_element_t<I, KinematicLawList>::name,
-                                  std::tuple_element_t<I, KinematicLawList>::input_prefix, std::tuple_element_t<I, KinematicLawList>::title,
-                                  std::tuple_element_t<I, KinematicLawList>::coefficients(),
-                                  &std::tuple_element_t<I, KinematicLawList>::saturation}),
-   ...);
-  return out;
-}
-
-}  // namespace
-
 const std::vector<KinematicLawInfo>& kinematic_laws() {
-  static const std::vector<KinematicLawInfo> laws = make_infos(std::make_index_sequence<kKinematicLawCount>());
+  static const std::vector<KinematicLawInfo> laws = [] {
+    std::vector<KinematicLawInfo> out;
+    for_each_law<KinematicLawList>([&](auto law, int id) {
+      using Law = decltype(law);
+      out.push_back({id, Law::name, Law::input_prefix, Law::title, Law::coefficients(), &Law::saturation});
+    });
+    return out;
+  }();
   return laws;
 }
 

@@ -6,10 +6,11 @@
 // find it here.
 #include "forward/material/kinematic/armstrong_frederick.hpp"
 #include "forward/material/kinematic/ziegler.hpp"
+#include "forward/material/law_registry.hpp"
 
+#include <initializer_list>
 #include <string>
 #include <tuple>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -21,24 +22,16 @@ using KinematicLawList = std::tuple<ArmstrongFrederick, Ziegler>;
 inline constexpr int kKinematicLawCount = static_cast<int>(std::tuple_size_v<KinematicLawList>);
 
 // Calls f(Law{}) for the law with this index (which must be one: check Kinematic::active()).
-template <int I = 0, typename F>
+template <typename F>
 decltype(auto) visit_kinematic_law(int law, F&& f) {
-  using Law = std::tuple_element_t<I, KinematicLawList>;
-  static_assert(Law::count <= kMaxKinematicCoefficients, "raise kMaxKinematicCoefficients");
-  if constexpr (I + 1 == kKinematicLawCount) {
-    return f(Law{});
-  } else {
-    if (law == I) return f(Law{});
-    return visit_kinematic_law<I + 1>(law, std::forward<F>(f));
-  }
+  return visit_law<KinematicLawList>(law, std::forward<F>(f));
 }
 
 // The index of a law in the registry: kinematic_law_index<Ziegler>() == 1.
-template <typename Law, int I = 0>
+template <typename Law>
 constexpr int kinematic_law_index() {
-  static_assert(I < kKinematicLawCount, "not a registered kinematic law");
-  if constexpr (std::is_same_v<Law, std::tuple_element_t<I, KinematicLawList>>) return I;
-  else return kinematic_law_index<Law, I + 1>();
+  static_assert(Law::count <= kMaxKinematicCoefficients, "raise kMaxKinematicCoefficients");
+  return law_index<KinematicLawList, Law>();
 }
 
 // Whether the card's kinematic law is Law.
@@ -50,10 +43,7 @@ bool is_kinematic(const Kinematic<T>& k) {
 // A law's coefficients in its declared order: make_kinematic<Ziegler>({CA, GA}).
 template <typename Law, typename T = double>
 Kinematic<T> make_kinematic(std::initializer_list<T> coefficients) {
-  Kinematic<T> k{kinematic_law_index<Law>(), {}};
-  int i = 0;
-  for (const T& c : coefficients) k[i++] = c;
-  return k;
+  return make_law<Kinematic<T>, kinematic_law_index<Law>()>(coefficients);
 }
 
 struct KinematicLawInfo {
