@@ -50,6 +50,12 @@ nlohmann::json RunHeartbeat::running() const {
   return running_;
 }
 
+nlohmann::json RunHeartbeat::ended() const {
+  nlohmann::json j = running();
+  for (const char* k : {"pid", "host", "heartbeat", "heartbeat_interval"}) j.erase(k);
+  return j;
+}
+
 void RunHeartbeat::stop() {
   const std::lock_guard<std::mutex> lock(mutex_);
   stopped_ = true;

@@ -45,6 +45,9 @@ class RunHeartbeat {
 
   // The running summary as last written (a copy: thread-safe).
   nlohmann::json running() const;
+  // The running summary without what only a live run has (pid, host, heartbeat,
+  // heartbeat_interval): the head of a final summary (failed, interrupted).
+  nlohmann::json ended() const;
 
  private:
   void write_locked();
