@@ -1,6 +1,7 @@
 #pragma once
-// Implicit return mapping for Hill48 + isotropic hardening (any law of the registry,
-// hardening/hardening_laws.hpp) + {none, Armstrong-Frederick, Ziegler} kinematic hardening, in 3D (Dim = 6) or plane stress (Dim = 3), with the consistent tangent.
+// Implicit return mapping for Hill48 + an isotropic hardening law (hardening/hardening_laws.hpp)
+// + none or a kinematic hardening law (kinematic/kinematic_laws.hpp: Armstrong-Frederick,
+// Ziegler), in 3D (Dim = 6) or plane stress (Dim = 3), with the consistent tangent.
 //
 // Algorithm (docs/design/numerics-material.md gives the derivation):
 //  * Elastic predictor sigma_tr = sigma_0 + C d_eps; xi = sigma - X is the shifted stress.
@@ -248,7 +249,6 @@ class ReturnMapping {
 
   // xi(dl), phi(dl) and d phi / d dl for the current law (see the header comment).
   void evaluate(const State& s0, const Vec& sigma_tr, const T& dl, Eval& ev) const {
-    using std::exp;
     // The slope may reuse the stress (Swift: n sigma_F / (eps0 + p), one pow per evaluation).
     ev.s = yield_stress(s0.eqps + dl);
     ev.ds = hardening_slope(m_, s0.eqps, dl, ev.s);
