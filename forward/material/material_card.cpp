@@ -4,6 +4,7 @@
 #include "forward/material/material_inputs.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/kinematic/kinematic_laws.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -58,6 +59,7 @@ constexpr double kHillSpread = 1e6;  // largest over smallest of F + G, G + H, H
 
 MaterialCard read_material_card(const io::TomlTable& root) {
   std::vector<std::string> tables{"card", "elastic", "hill", "density", "fitted"};
+  for (const auto& law : yield_functions()) tables.push_back(law.name);
   for (const auto& law : hardening_laws()) tables.push_back(law.name);
   for (const auto& law : kinematic_laws()) tables.push_back(law.name);
   root.allow_only(tables);
@@ -97,7 +99,15 @@ MaterialCard read_material_card(const io::TomlTable& root) {
   if (!elastic) root.fail("elastic", "required table [elastic] (E, nu) is missing");
   read_law_table(*elastic, "elastic", p);
   if (auto h = root.table("hill")) read_law_table(*h, "hill", p);
-  // no [hill]: von Mises (F = G = H = 1, N = L = M = 3)
+  // no [hill]: von Mises (F = G = H = 1, N = L = M = 3), unless a registered function replaces it
+  for (const auto& law : yield_functions()) {
+    const auto t = root.table(law.name);
+    if (!t) continue;
+    if (root.table("hill")) root.fail(law.name, "a card has one yield function: [hill] or [" + law.name + "], not both");
+    if (p.yield.active()) root.fail(law.name, "a card has one yield function; it also has [" + yield_function(p.yield.law).name + "]");
+    p.yield = YieldFunction<double>{law.id, {}};
+    read_law_table(*t, law.name, p);
+  }
   // At most one hardening table; none: an elastic-only card.
   p.plastic = false;
   for (const auto& law : hardening_laws()) {
@@ -136,6 +146,14 @@ void validate_material_card(const MaterialCard& card) {
     const double v = material_field(p, in.field);
     if (const std::string msg = in.info.check(v); !msg.empty()) bad(in.card_key, v, msg);
   }
+  if (p.yield.active()) {  // a registered function: its own convexity check; F..N are unused
+    const YieldFunctionInfo& law = yield_function(p.yield.law);
+    int coefficient = 0;
+    if (const std::string msg = law.violation(p.yield.c.data(), coefficient); !msg.empty())
+      bad(law.name + "." + law.coefficients[static_cast<std::size_t>(coefficient)].key, p.yield[coefficient], "not a closed convex yield surface: " + msg);
+    if (!(card.density > 0)) bad("density", card.density, "must be > 0 t/mm^3");
+    return;
+  }
   // Hill convexity (thesis eq. 3.5: a positive definite quadratic form); name the coefficient
   // involved in the violated condition.
   if (!(p.L > 0)) bad("hill.L", p.L, "must be > 0");
@@ -168,7 +186,8 @@ std::vector<std::string> material_card_warnings(const MaterialCard& card) {
   const Hill48 h = card.hill();
   const double deg[] = {0.0, 45.0, 90.0};
   for (double d : deg) {
-    const double r = r_value_at_angle(h, d * std::numbers::pi / 180.0);
+    const double a = d * std::numbers::pi / 180.0;
+    const double r = card.params.yield.active() ? uniaxial_r_value(card.params, a) : r_value_at_angle(h, a);
     if (!(r >= 0.1 && r <= 10.0)) {
       char buf[200];
       std::snprintf(buf, sizeof buf, "its r-value at %.0f deg to RD is %.4g, beyond any measured sheet (about 0.2 to 6)", d, r);
@@ -209,9 +228,16 @@ std::string material_card_to_toml(const MaterialCard& card) {
     os << "]\nspifit_version = \"" << esc(f.spifit_version) << "\"\ndate = \"" << esc(f.date) << "\"\n\n";
   }
   os << "[elastic]\nE = " << format_number(p.E) << "\nnu = " << format_number(p.nu) << "\n\n";
-  os << "[hill]  # thesis notation, eq. 3.5 (factor 1/2)\nF = " << format_number(p.F) << "\nG = " << format_number(p.G)
-     << "\nH = " << format_number(p.H) << "\nN = " << format_number(p.N) << "\nL = " << format_number(p.L)
-     << "\nM = " << format_number(p.M) << "\n";
+  if (p.yield.active()) {
+    const YieldFunctionInfo& law = yield_function(p.yield.law);
+    os << "[" << law.name << "]  # " << law.title << "\n";
+    for (std::size_t i = 0; i < law.coefficients.size(); ++i)
+      os << law.coefficients[i].key << " = " << format_number(p.yield[static_cast<int>(i)]) << "\n";
+  } else {
+    os << "[hill]  # thesis notation, eq. 3.5 (factor 1/2)\nF = " << format_number(p.F) << "\nG = " << format_number(p.G)
+       << "\nH = " << format_number(p.H) << "\nN = " << format_number(p.N) << "\nL = " << format_number(p.L)
+       << "\nM = " << format_number(p.M) << "\n";
+  }
   if (p.plastic) {
     const HardeningLawInfo& law = hardening_law(p.hardening.law);
     os << "\n[" << law.name << "]\n";
@@ -227,29 +253,11 @@ std::string material_card_to_toml(const MaterialCard& card) {
   return os.str();
 }
 
-std::string describe_material_card(const MaterialCard& card) {
-  const auto& p = card.params;
-  const Hill48 h = card.hill();
-  std::ostringstream os;
-  os << "material card  " << card.name << "\n";
-  if (!card.description.empty()) os << "description    " << card.description << "\n";
-  if (!card.source.empty()) os << "source         " << card.source << "\n";
-  if (!card.file.empty()) os << "file           " << card.file << "\n";
-  if (card.fitted) {
-    const FitProvenance& f = *card.fitted;
-    os << "fitted         by spifit " << f.spifit_version << " on " << f.date << " from " << f.fit_file << " (start card " << f.start_card
-       << ")" << (f.usable ? "" : ": the fit was NOT USABLE") << "\n";
-    for (const auto& d : f.data) os << "  data         " << d << "\n";
-  }
-  os << "elastic        E = " << format_number(p.E) << " MPa, nu = " << format_number(p.nu) << "\n";
-  os << "yield          Hill 1948 (thesis notation, eq. 3.5)" << (h.is_von_mises() ? " = von Mises" : "") << ": F = "
-     << format_number(h.F) << ", G = " << format_number(h.G) << ", H = " << format_number(h.H)
-     << ", N = " << format_number(h.N) << ", L = " << format_number(h.L) << ", M = " << format_number(h.M) << "\n";
-  if (std::abs(h.G + h.H - 2.0) > 1e-9) os << "               note: G + H = " << format_number(h.G + h.H) << " (not normalised to 2)\n";
-  if (!p.plastic) {
-    os << "hardening      none (elastic-only card)\n";
-    return os.str();
-  }
+namespace {
+
+// `material show`'s hardening, kinematic and initial-yield lines of a plastic card; returns
+// sigma_F(0).
+double describe_hardening(std::ostringstream& os, const MaterialParams<double>& p) {
   const double s0 = hardening_stress(p, 0.0);
   const HardeningLawInfo& law = hardening_law(p.hardening.law);
   os << "hardening      " << law.title << " " << law.formula << ":";
@@ -269,8 +277,73 @@ std::string describe_material_card(const MaterialCard& card) {
   } else {
     os << "kinematic      none (isotropic hardening)\n";
   }
-  char line[160];
   os << "initial yield  sigma_F(0) = " << law.initial_formula << " = " << format_number(s0) << " MPa\n";
+  return s0;
+}
+
+// `material show` of a card with a registered yield function (Yld2000-2d): its coefficients,
+// hardening, and the uniaxial, equibiaxial and shear properties from its gradient.
+std::string describe_registered_yield(const MaterialCard& card, std::string head) {
+  const auto& p = card.params;
+  const YieldFunctionInfo& y = yield_function(p.yield.law);
+  std::ostringstream os;
+  os << head << "yield          " << y.title << " " << y.formula << ":";
+  for (std::size_t i = 0; i < y.coefficients.size(); ++i) os << (i == 0 ? " " : ", ") << y.coefficients[i].key << " = " << format_number(p.yield[static_cast<int>(i)]);
+  os << "\n";
+  if (!p.plastic) {
+    os << "hardening      none (elastic-only card)\n";
+    return os.str();
+  }
+  const double s0 = describe_hardening(os, p);
+  char line[200];
+  os << "uniaxial       angle   r-value   initial yield [MPa]\n";
+  double r[3];
+  int i = 0;
+  for (double deg : {0.0, 45.0, 90.0}) {
+    const double a = deg * std::numbers::pi / 180.0;
+    r[i++] = uniaxial_r_value(p, a);
+    std::snprintf(line, sizeof line, "               %5.0f   %7.4f   %8.3f\n", deg, r[i - 1], s0 / uniaxial_yield_factor(p, a));
+    os << line;
+  }
+  std::snprintf(line, sizeof line, "               r_bar = (r0 + 2 r45 + r90)/4 = %.4f, delta_r = (r0 - 2 r45 + r90)/2 = %.4f\n",
+                (r[0] + 2 * r[1] + r[2]) / 4, (r[0] - 2 * r[1] + r[2]) / 2);
+  os << line;
+  std::snprintf(line, sizeof line, "equibiaxial    initial yield %.3f MPa, r_b = %.4f\n", s0 / equibiaxial_yield_factor(p), equibiaxial_r_value(p));
+  os << line;
+  std::snprintf(line, sizeof line, "shear          initial yield tau = %.3f MPa\n", s0 / shear_yield_factor(p));
+  os << line;
+  for (const auto& w : material_card_warnings(card)) os << "warning        " << w << "\n";
+  return os.str();
+}
+
+}  // namespace
+
+std::string describe_material_card(const MaterialCard& card) {
+  const auto& p = card.params;
+  const Hill48 h = card.hill();
+  std::ostringstream os;
+  os << "material card  " << card.name << "\n";
+  if (!card.description.empty()) os << "description    " << card.description << "\n";
+  if (!card.source.empty()) os << "source         " << card.source << "\n";
+  if (!card.file.empty()) os << "file           " << card.file << "\n";
+  if (card.fitted) {
+    const FitProvenance& f = *card.fitted;
+    os << "fitted         by spifit " << f.spifit_version << " on " << f.date << " from " << f.fit_file << " (start card " << f.start_card
+       << ")" << (f.usable ? "" : ": the fit was NOT USABLE") << "\n";
+    for (const auto& d : f.data) os << "  data         " << d << "\n";
+  }
+  os << "elastic        E = " << format_number(p.E) << " MPa, nu = " << format_number(p.nu) << "\n";
+  if (p.yield.active()) return describe_registered_yield(card, os.str());
+  os << "yield          Hill 1948 (thesis notation, eq. 3.5)" << (h.is_von_mises() ? " = von Mises" : "") << ": F = "
+     << format_number(h.F) << ", G = " << format_number(h.G) << ", H = " << format_number(h.H)
+     << ", N = " << format_number(h.N) << ", L = " << format_number(h.L) << ", M = " << format_number(h.M) << "\n";
+  if (std::abs(h.G + h.H - 2.0) > 1e-9) os << "               note: G + H = " << format_number(h.G + h.H) << " (not normalised to 2)\n";
+  if (!p.plastic) {
+    os << "hardening      none (elastic-only card)\n";
+    return os.str();
+  }
+  const double s0 = describe_hardening(os, p);
+  char line[160];
   os << "uniaxial       angle   r-value   initial yield [MPa]\n";
   for (double deg : {0.0, 45.0, 90.0}) {
     const double a = deg * std::numbers::pi / 180.0;

@@ -2,6 +2,7 @@
 
 #include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/kinematic/kinematic_laws.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 
 namespace spifit::material {
 namespace {
@@ -26,6 +27,13 @@ std::vector<MaterialInput> make_inputs() {
       param("hill.N", field(MaterialField::N), "", positive, "Hill 1948 N (in-plane shear); sets L and M too (N = L = M)", "hill.N",
             {field(MaterialField::L), field(MaterialField::M)}),
   };
+  for (const YieldFunctionInfo& law : yield_functions()) {
+    for (int i = 0; i < static_cast<int>(law.coefficients.size()); ++i) {
+      const LawCoefficient& c = law.coefficients[static_cast<std::size_t>(i)];
+      const std::string name = law.name + "." + c.key;
+      out.push_back({io::InputInfo{name, io::InputType::real, c.unit, c.range, {}, c.doc, true}, MaterialField{MaterialField::yield, law.id, i}, {}, name});
+    }
+  }
   for (const HardeningLawInfo& law : hardening_laws()) {
     for (int i = 0; i < static_cast<int>(law.coefficients.size()); ++i) {
       const HardeningCoefficient& c = law.coefficients[static_cast<std::size_t>(i)];
@@ -60,12 +68,26 @@ bool input_in_use(const MaterialParams<double>& p, const MaterialInput& in) {
   switch (in.field.kind) {
     case MaterialField::hardening: return p.plastic && holds_input(p, in);
     case MaterialField::kinematic: return holds_input(p, in);
-    default: return true;
+    default: return holds_input(p, in);
   }
 }
 
 std::string why_not_held(const MaterialParams<double>& p, const MaterialInput& in) {
   if (holds_input(p, in)) return {};
+  auto names_of = [](const std::string& prefix, const std::vector<LawCoefficient>& cs) {
+    std::string names;
+    for (const auto& c : cs) names += (names.empty() ? "" : ", ") + prefix + "." + c.key;
+    return names;
+  };
+  if (in.field.kind == MaterialField::yield) {
+    if (!p.yield.active()) return in.info.name + " is not a parameter of this card: its yield function is Hill 1948 (hill.F, hill.G, hill.H, hill.N)";
+    const YieldFunctionInfo& law = yield_function(p.yield.law);
+    return in.info.name + " is not a parameter of this card: its yield function is " + law.name + " (" + names_of(law.name, law.coefficients) + ")";
+  }
+  if (in.field.kind != MaterialField::hardening && in.field.kind != MaterialField::kinematic) {  // Hill's, on a card with another function
+    const YieldFunctionInfo& law = yield_function(p.yield.law);
+    return in.info.name + " is not a parameter of this card: its yield function is " + law.name + " (" + names_of(law.name, law.coefficients) + ")";
+  }
   if (in.field.kind == MaterialField::kinematic) {
     if (!p.kinematic.active()) return in.info.name + " is not a parameter of this card: it has no kinematic hardening (" + kinematic_table_list() + ")";
     const KinematicLawInfo& law = kinematic_law(p.kinematic.law);

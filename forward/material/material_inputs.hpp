@@ -21,9 +21,9 @@ namespace spifit::material {
 // A parameter's place in MaterialParams: a named field, or coefficient `slot` of hardening or
 // kinematic law `law` (which must be the card's).
 struct MaterialField {
-  enum Kind : unsigned char { E, nu, F, G, H, L, M, N, hardening, kinematic };
+  enum Kind : unsigned char { E, nu, F, G, H, L, M, N, hardening, kinematic, yield };
   Kind kind = E;
-  int law = -1;  // hardening, kinematic: the law's index in HardeningLawList, KinematicLawList
+  int law = -1;  // hardening, kinematic, yield: the law's index in HardeningLawList, KinematicLawList, YieldFunctionList
   int slot = 0;  // hardening, kinematic: the coefficient's index in the law
 };
 
@@ -34,21 +34,24 @@ struct MaterialInput {
   std::string card_key;           // table.key in the card file
 };
 
-// In a fixed order: elastic, Hill, each hardening law in registry order (Swift first),
+// In a fixed order: elastic, Hill, each registered yield function (Yld2000-2d), each hardening law in registry order (Swift first),
 // Armstrong-Frederick, Ziegler.
 const std::vector<MaterialInput>& material_inputs();
 const MaterialInput* find_material_input(const std::string& name);
 // The InputInfo of every parameter (for listings and the documentation).
 std::vector<io::InputInfo> material_input_infos();
 
-// Whether p holds a value for the input: elastic and Hill always, a law's coefficients when it is
-// p's hardening or kinematic law.
+// Whether p holds a value for the input: elastic always, Hill when p has no registered yield
+// function, a law's coefficients when it is p's yield function, hardening or kinematic law.
 template <typename T>
 bool holds_input(const MaterialParams<T>& p, const MaterialInput& in) {
   switch (in.field.kind) {
     case MaterialField::hardening: return in.field.law == p.hardening.law;
     case MaterialField::kinematic: return in.field.law == p.kinematic.law;
-    default: return true;
+    case MaterialField::yield: return in.field.law == p.yield.law;
+    case MaterialField::E:
+    case MaterialField::nu: return true;
+    default: return !p.yield.active();
   }
 }
 // Whether the card's laws use the input: holds_input, an elastic card no hardening coefficient,
@@ -76,6 +79,9 @@ T& material_field(MaterialParams<T>& p, MaterialField f) {
     case MaterialField::kinematic:
       if (f.law != p.kinematic.law) throw std::logic_error("a coefficient of another kinematic law than the card's");
       return p.kinematic[f.slot];
+    case MaterialField::yield:
+      if (f.law != p.yield.law) throw std::logic_error("a coefficient of another yield function than the card's");
+      return p.yield[f.slot];
   }
   return p.E;
 }

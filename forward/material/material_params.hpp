@@ -1,5 +1,5 @@
 #pragma once
-// Constitutive parameters of the Hill48 + isotropic hardening (a law of the registry,
+// Constitutive parameters of the Hill48 (or a registered yield function) + isotropic hardening (a law of the registry,
 // hardening/hardening_laws.hpp: Swift, Voce, Swift-Voce) + kinematic hardening (none or a law of
 // kinematic/kinematic_laws.hpp: Armstrong-Frederick, Ziegler) law,
 // templated on the scalar type so that ceres::Jet gives exact parameter derivatives of a
@@ -7,6 +7,7 @@
 #include "forward/material/hardening/hardening_coefficients.hpp"
 #include "forward/material/kinematic/kinematic_coefficients.hpp"
 #include "forward/material/scalar.hpp"
+#include "forward/material/yield/yield_function_coefficients.hpp"
 
 #include <string>
 
@@ -16,7 +17,10 @@ template <typename T>
 struct MaterialParams {
   // Isotropic elasticity [MPa, -].
   T E = T(72600.0), nu = T(0.36);
-  // Hill 1948, thesis notation (factor 1/2, L on xz, M on yz).
+  // The yield function: Hill 1948 (yield.law = -1, the default), thesis notation (factor 1/2, L on
+  // xz, M on yz), or a function of the registry (yield/yield_functions.hpp: Yld2000-2d), whose
+  // coefficients `yield` holds; F..N are then unused.
+  YieldFunction<T> yield;
   T F = T(1.0), G = T(1.0), H = T(1.0), L = T(3.0), M = T(3.0), N = T(3.0);
   // Isotropic hardening sigma_F(p): the law's index and coefficients (hardening_laws.hpp); the
   // default is Swift K = 180 MPa, eps0 = 0.00109, n = 0.21. plastic = false: an elastic card.
@@ -32,6 +36,8 @@ struct MaterialParams {
     MaterialParams<U> o;
     o.E = U(E); o.nu = U(nu);
     o.F = U(F); o.G = U(G); o.H = U(H); o.L = U(L); o.M = U(M); o.N = U(N);
+    o.yield.law = yield.law;
+    for (int i = 0; i < kMaxYieldCoefficients; ++i) o.yield[i] = U(yield[i]);
     o.plastic = plastic; o.hardening.law = hardening.law;
     for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = U(hardening[i]);
     o.kinematic.law = kinematic.law;
@@ -46,6 +52,8 @@ MaterialParams<double> values_of(const MaterialParams<T>& p) {
   MaterialParams<double> o;
   o.E = value_of(p.E); o.nu = value_of(p.nu);
   o.F = value_of(p.F); o.G = value_of(p.G); o.H = value_of(p.H); o.L = value_of(p.L); o.M = value_of(p.M); o.N = value_of(p.N);
+  o.yield.law = p.yield.law;
+  for (int i = 0; i < kMaxYieldCoefficients; ++i) o.yield[i] = value_of(p.yield[i]);
   o.plastic = p.plastic; o.hardening.law = p.hardening.law;
   for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = value_of(p.hardening[i]);
   o.kinematic.law = p.kinematic.law;

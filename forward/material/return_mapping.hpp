@@ -19,6 +19,11 @@
 //    is solved by Newton's method safeguarded by bisection on a bracket, so that large
 //    increments (10 % strain and more) converge.
 //  * The consistent tangent follows from implicit differentiation of (xi, dl).
+// A registered yield function (yield/yield_functions.hpp: Yld2000-2d, plane stress only) has no
+// such linear system: for a given dl, xi solves the nonlinear a xi + dl (C + e A) w n(xi) = b, with
+// n = d sigma_eq / d xi and the weight w = (sigma_eq / sigma_F)^(k - 1) (1 at the root), by
+// Newton's method with a line search on the smooth convex potential whose gradient it is
+// (evaluate_general); the scalar loop on dl and the tangent keep their form.
 // With T = ceres::Jet the multiplier is converged in double precision on a value copy of the
 // law and one Newton update in Jets follows: exact parameter derivatives (integrate_jet).
 #include "forward/material/hardening/hardening_laws.hpp"
@@ -27,11 +32,13 @@
 #include "forward/material/material_state.hpp"
 #include "forward/material/scalar.hpp"
 #include "forward/material/stress_space.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 
 #include <Eigen/Dense>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <type_traits>
 
 namespace spifit::material {
@@ -51,7 +58,9 @@ class ReturnMapping {
 
   explicit ReturnMapping(const MaterialParams<T>& params, ReturnMappingOptions options = {})
       : m_(params), options_(options), C_(Space::elastic(params)), P_(Space::hill(params)),
-        A_(Space::kinematic_map()), CP_(C_ * P_) {
+        A_(Space::kinematic_map()), CP_(C_ * P_), general_(params.yield.active()) {
+    if (general_ && Dim != 3)
+      throw std::invalid_argument(yield_function_title(params.yield.law) + " is a plane-stress yield function: it has no 3D return mapping");
     if constexpr (!std::is_same_v<T, double>) values_ = std::make_shared<const ReturnMapping<double, Dim>>(values_of(params), options);
   }
 
@@ -63,9 +72,14 @@ class ReturnMapping {
   }
   const Mat& elastic_matrix() const { return C_; }
   const Mat& hill_matrix() const { return P_; }
+  // Hill 1948: sigma_eq^2 = xi^T P xi / 2 (hill_matrix); otherwise a registered function.
+  bool quadratic() const { return !general_; }
 
   T equivalent_stress(const Vec& xi) const {
     using std::sqrt;
+    if constexpr (Dim == 3) {
+      if (general_) return general_value(xi, false).value;
+    }
     const T q = 0.5 * xi.dot(P_ * xi);
     return value_of(q) > 0.0 ? sqrt(q) : T(0.0);
   }
@@ -77,8 +91,12 @@ class ReturnMapping {
   }
   // d sigma_eq / d sigma at the shifted stress: the plastic strain rate (engineering shear)
   // per unit equivalent plastic strain rate.
-  Vec flow_direction(const State& s) const {
-    const Vec xi = s.stress - s.back_stress;
+  Vec flow_direction(const State& s) const { return flow_direction_at(Vec(s.stress - s.back_stress)); }
+  // The same at a shifted stress xi.
+  Vec flow_direction_at(const Vec& xi) const {
+    if constexpr (Dim == 3) {
+      if (general_) return general_value(xi, false).gradient;
+    }
     const T seq = equivalent_stress(xi);
     return value_of(seq) > 0.0 ? Vec(P_ * xi / (2.0 * seq)) : Vec(Vec::Zero());
   }
@@ -149,7 +167,14 @@ class ReturnMapping {
       const double r = ev.valid ? value_of(ev.s) / seq - 1.0 : 0.0;
       const double dr = ev.valid ? (value_of(ev.ds) * seq - value_of(ev.s) * dseq) / (seq * seq) : 0.0;
       const double cand = dr > 0.0 ? dl_v - r / dr : -1.0;
-      if (dr > 0.0 && cand > lo && cand < hi && std::isfinite(cand)) {
+      // A registered function's weighted iteration (evaluate_general) makes xi(dl) steep at the
+      // trial state (w = (sigma_eq / sigma_F)^(k - 1) far off the surface): its first step is the
+      // closest-point estimate phi_tr / (n . C n + d sigma_F / dp) instead, and Newton goes on
+      // from there.
+      const double first = general_ && it == 0 && ev.valid ? value_of(ev.phi / (ev.grad.dot(C_ * ev.grad) + ev.ds)) : -1.0;
+      if (first > lo && first < hi && std::isfinite(first)) {
+        dl = T(first);
+      } else if (dr > 0.0 && cand > lo && cand < hi && std::isfinite(cand)) {
         const T rT = ev.s / ev.seq - 1.0;
         const T drT = (ev.ds * ev.seq - ev.s * (ev.dphi + ev.ds)) / (ev.seq * ev.seq);
         dl = dl - rT / drT;  // carried out in T (Jet derivatives)
@@ -173,13 +198,25 @@ class ReturnMapping {
     Vec xi, dxi;
     T seq, phi, dphi;
     Mat Minv;  // inverse of Mat(dl): closed-form cofactors for 3x3, LU for 6x6
+    // Registered yield function: d sigma_eq / d xi, the weighted flow w n, d (dl w n) / d dl and
+    // d (w n) / d xi at xi (evaluate_general).
+    Vec grad, wn, n;
+    Mat hess;
+    T dl;  // the multiplier of this evaluation
     bool valid = false;
   };
+
+  // Plane stress only (the constructor refuses a registered function in 3D).
+  YieldValue<T> general_value(const Eigen::Matrix<T, 3, 1>& xi, bool hessian) const {
+    YieldValue<T> v;
+    registered_yield_value(m_, xi, v, hessian);
+    return v;
+  }
 
   // End-of-step state (and tangent) from the converged evaluation.
   UpdateResult assemble(const State& s0, const Vec& sigma_tr, const T& dl, const Eval& ev, State& s1, Mat* tangent,
                         UpdateResult result) const {
-    const Vec d_eps_p = ev.q * (P_ * ev.xi);
+    const Vec d_eps_p = general_ ? Vec(dl * ev.wn) : Vec(ev.q * (P_ * ev.xi));
     s1.stress = sigma_tr - C_ * d_eps_p;
     if (m_.kinematic.active()) s1.back_stress = s1.stress - ev.xi;  // else X1 = X0 exactly
     s1.plastic_strain = s0.plastic_strain + d_eps_p;
@@ -199,7 +236,12 @@ class ReturnMapping {
         return fail(result, "non-finite stress after return mapping");
       }
     }
-    if (tangent) {
+    if (tangent && general_) {
+      const Vec g = -(ev.Minv.transpose() * ev.grad) / ev.dphi;  // d dl / d sigma_tr
+      const Mat dxi = ev.Minv + ev.dxi * g.transpose();
+      const Mat dsig_dtr = Mat::Identity() - C_ * (ev.n * g.transpose() + dl * ev.hess * dxi);
+      *tangent = dsig_dtr * C_;
+    } else if (tangent) {
       const Mat& Minv = ev.Minv;
       const Vec grad = P_ * ev.xi / (2.0 * ev.seq);
       const Vec phi_tr = Minv.transpose() * grad;
@@ -247,9 +289,9 @@ class ReturnMapping {
     return r;
   }
 
-  // xi(dl), phi(dl) and d phi / d dl for the current law (see the header comment).
-  void evaluate(const State& s0, const Vec& sigma_tr, const T& dl, Eval& ev) const {
-    // The slope may reuse the stress (Swift: n sigma_F / (eps0 + p), one pow per evaluation).
+  // The hardening and kinematic laws at dl: sigma_F, its slope, q = dl / (2 sigma_F) and the
+  // kinematic step's a, e, m.
+  void laws_at(const State& s0, const T& dl, Eval& ev) const {
     ev.s = yield_stress(s0.eqps + dl);
     ev.ds = hardening_slope(m_, s0.eqps, dl, ev.s);
     ev.q = dl / (2.0 * ev.s);
@@ -261,6 +303,15 @@ class ReturnMapping {
         return 0;
       });
     }
+  }
+
+  // xi(dl), phi(dl) and d phi / d dl for the current law (see the header comment).
+  void evaluate(const State& s0, const Vec& sigma_tr, const T& dl, Eval& ev) const {
+    if constexpr (Dim == 3) {
+      if (general_) return evaluate_general(s0, sigma_tr, dl, ev);
+    }
+    // The slope may reuse the stress (Swift: n sigma_F / (eps0 + p), one pow per evaluation).
+    laws_at(s0, dl, ev);
     const T &a = ev.k.a, &da = ev.k.da, &e = ev.k.e, &de = ev.k.de, &m = ev.k.m, &dm = ev.k.dm;
     // Isotropic hardening (a = 1, e = 0): the products are constants of the law.
     const bool isotropic = !m_.kinematic.active();
@@ -299,11 +350,116 @@ class ReturnMapping {
     }
   }
 
+  // The same for a registered yield function: xi(dl) solves
+  //   R(xi) = a xi + dl K w(xi) n(xi) - b = 0,  K = C + e A,  w = (sigma_eq / sigma_F)^(k - 1),
+  // with k the function's exponent (sigma_eq^k is smooth). At the root sigma_eq = sigma_F, so
+  // w = 1 and the plastic strain is dl n; away from it the weight makes R the gradient (times K)
+  // of the smooth, strictly convex psi(xi) = a xi^T K^-1 xi / 2 + dl sigma_F (sigma_eq /
+  // sigma_F)^k / k - xi^T K^-1 b: for Hill (k = 2) R is the linear system above, and Newton's
+  // method with a backtracking line search on psi converges for any dl, from the previous
+  // evaluation's xi. The iteration on sigma_eq itself (w = 1) has a cone at xi = 0 that large
+  // increments reach, where Newton stalls.
+  void evaluate_general(const State& s0, const Vec& sigma_tr, const T& dl, Eval& ev) const requires(Dim == 3) {
+    const bool warm = ev.valid;
+    ev.valid = false;
+    laws_at(s0, dl, ev);
+    const T &a = ev.k.a, &da = ev.k.da, &e = ev.k.e, &de = ev.k.de, &m = ev.k.m, &dm = ev.k.dm;
+    const bool isotropic = !m_.kinematic.active();
+    const Mat K = isotropic ? C_ : Mat(C_ + e * A_);
+    const Mat Kinv = K.inverse();
+    const Vec b = sigma_tr - m * s0.back_stress;
+    const Vec db = -dm * s0.back_stress;
+    const Vec Kb = Kinv * b;
+    const T& sF = ev.s;
+    // The weighted gradient w n and its Jacobian G = w H + (k - 1) (w / sigma_eq) n n^T.
+    struct Weighted {
+      YieldValue<T> y;
+      T w;
+      Vec wn;
+      Mat G;
+    };
+    auto weighted = [&](const Vec& x, Weighted& out) {
+      out.y = general_value(x, true);
+      if (!(value_of(out.y.value) > 0.0)) return false;
+      const T& k = out.y.exponent;
+      out.w = real_power(T(out.y.value / sF), T(k - 1.0));
+      out.wn = out.w * out.y.gradient;
+      out.G = out.w * out.y.hessian + ((k - 1.0) * out.w / out.y.value) * (out.y.gradient * out.y.gradient.transpose());
+      return is_finite(out.w);
+    };
+    auto psi = [&](const Vec& x, const Weighted& wv) {
+      const T& k = wv.y.exponent;
+      return value_of(0.5 * a * x.dot(Kinv * x) + dl * sF * wv.w * (wv.y.value / sF) / k - x.dot(Kb));
+    };
+
+    // From the previous evaluation's xi moved along its d xi / d dl (error second order in the
+    // change of dl; not from the trial state, where xi(dl) is steep).
+    // From the trial state, the first step of a closest-point iteration (xi_tr - dl K n_tr).
+    Vec xi = !warm ? Vec(b / a) : value_of(ev.dl) > 0.0 ? Vec(ev.xi + ev.dxi * (dl - ev.dl)) : Vec(ev.xi - dl * (K * ev.grad));
+    Weighted cur;
+    if (!weighted(xi, cur)) {
+      xi = b / a;
+      if (!weighted(xi, cur)) return;
+    }
+    const int extra_steps = std::is_same_v<T, double> ? 0 : 1;  // Jets: one step past convergence
+    int after = -1;
+    for (int it = 0; it < 100 && after < extra_steps; ++it) {
+      const Vec R = a * xi + dl * (K * cur.wn) - b;
+      const Mat J = a * Mat::Identity() + dl * (K * cur.G);
+      const Vec d = -(J.inverse() * R);
+      const double size = value_of(d.cwiseAbs().maxCoeff()), ref = value_of(xi.cwiseAbs().maxCoeff());
+      if (!std::isfinite(size)) return;
+      if (after >= 0) {  // Jets: the full step at the root carries the implicit derivatives
+        xi = xi + d;
+        if (!weighted(xi, cur)) return;
+        ++after;
+        continue;
+      }
+      double t = 1.0;
+      Vec trial = xi + d;
+      Weighted next;
+      bool ok = weighted(trial, next);
+      if (size > 1e-8 * ref) {  // far from the root: backtrack on psi
+        const double psi0 = psi(xi, cur);
+        const double slope = value_of((Kinv * R).dot(d));
+        while (t > 1e-12 && !(ok && psi(trial, next) <= psi0 + 1e-4 * t * slope)) {
+          t *= 0.5;
+          trial = xi + t * d;
+          ok = weighted(trial, next);
+        }
+      }
+      if (!ok) return;
+      xi = trial;
+      cur = next;
+      // Newton converges quadratically here: after a full step of 1e-8 the error is of round-off.
+      if (t == 1.0 && size <= 1e-8 * ref) after = 0;
+    }
+    if (after < 0) return;  // the inner iteration did not converge: the outer loop bisects
+    const T& k = cur.y.exponent;
+    const Mat J = a * Mat::Identity() + dl * (K * cur.G);
+    ev.Minv = J.inverse();
+    // d R / d dl, with d w / d dl = -(k - 1) w ds / sigma_F.
+    const Vec dwn = (-(k - 1.0) * ev.ds / sF) * cur.wn;
+    ev.n = cur.wn + dl * dwn;  // d (dl w n) / d dl at fixed xi
+    const Vec dR = da * xi + K * ev.n + (dl * de) * (A_ * cur.wn) - db;
+    ev.xi = xi;
+    ev.dl = dl;
+    ev.dxi = -(ev.Minv * dR);
+    ev.wn = cur.wn;
+    ev.grad = cur.y.gradient;
+    ev.hess = cur.G;
+    ev.seq = cur.y.value;
+    ev.phi = ev.seq - ev.s;
+    ev.dphi = ev.grad.dot(ev.dxi) - ev.ds;
+    ev.valid = is_finite(ev.phi) && is_finite(ev.dphi) && is_finite(ev.Minv(0, 0));
+  }
+
   MaterialParams<T> m_;
   std::shared_ptr<const ReturnMapping<double, Dim>> values_;  // Jets only: the value law
   ReturnMappingOptions options_;
   Mat C_, P_, A_;
   Mat CP_;  // C P
+  bool general_ = false;  // a registered yield function (yield_functions.hpp), not Hill 1948
 };
 
 }  // namespace spifit::material

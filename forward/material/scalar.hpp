@@ -38,4 +38,25 @@ inline T psi_exp_derivative(const T& x) {
   return (exp(-x) * (T(1.0) + x) - T(1.0)) / (x * x);
 }
 
+// x^p for x > 0: by repeated multiplication when p is a small whole number and T is double (the
+// usual exponents of Yld2000-2d, 6 and 8, and their neighbours: ten times faster than std::pow,
+// within a few ulps of it), by pow otherwise (Jets carry d/dp through pow).
+template <typename T>
+inline T real_power(const T& x, const T& p) {
+  if constexpr (std::is_same_v<T, double>) {
+    if (p == std::nearbyint(p) && std::abs(p) <= 64.0) {
+      int n = static_cast<int>(std::abs(p));
+      double base = x, r = 1.0;
+      while (n > 0) {
+        if (n & 1) r *= base;
+        base *= base;
+        n >>= 1;
+      }
+      return p < 0.0 ? 1.0 / r : r;
+    }
+  }
+  using std::pow;
+  return pow(x, p);
+}
+
 }  // namespace spifit

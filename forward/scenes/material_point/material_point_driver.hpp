@@ -282,17 +282,22 @@ class MaterialPointDriver {
     de(c) = T(d);
     for (int i = 0; i < 3; ++i) if (control_.role[i] == ComponentRole::zero_strain) de(i) = T(0.0);
     const Vec3 dsig = C * (Q_ * de);
-    const auto& P = law_.hill_matrix();
     const Vec3 xi0 = state_.material.stress - state_.material.back_stress;
     const T sF = law_.yield_stress(state_.material.eqps);
-    const T a = 0.5 * dsig.dot(P * dsig), b = xi0.dot(P * dsig), cc = 0.5 * xi0.dot(P * xi0) - sF * sF;
-    using std::sqrt;
-    const T disc = b * b - 4.0 * a * cc;
-    if (!(value_of(a) > 0.0) || value_of(disc) < 0.0) return;
-    T theta = (-b + sqrt(disc)) / (2.0 * a);
-    // A start state already on (within the return-mapping tolerance outside) the surface
-    // yields at the start of the increment.
-    if (value_of(theta) < 0.0 && value_of(cc) >= 0.0) theta = T(0.0);
+    T theta;
+    if (law_.quadratic()) {
+      const auto& P = law_.hill_matrix();
+      const T a = 0.5 * dsig.dot(P * dsig), b = xi0.dot(P * dsig), cc = 0.5 * xi0.dot(P * xi0) - sF * sF;
+      using std::sqrt;
+      const T disc = b * b - 4.0 * a * cc;
+      if (!(value_of(a) > 0.0) || value_of(disc) < 0.0) return;
+      theta = (-b + sqrt(disc)) / (2.0 * a);
+      // A start state already on (within the return-mapping tolerance outside) the surface
+      // yields at the start of the increment.
+      if (value_of(theta) < 0.0 && value_of(cc) >= 0.0) theta = T(0.0);
+    } else if (!crossing(xi0, dsig, sF, theta)) {
+      return;
+    }
     if (value_of(theta) < -1e-9 || value_of(theta) > 1.0 + 1e-9) return;
     PointState<T> at = state_;
     at.strain += theta * de;
@@ -300,6 +305,27 @@ class MaterialPointDriver {
     const T sk = stress_loading(at.material)(c);
     trial.onset = true;
     trial.event = {segment_, state_.control_strain + value_of(theta) * d, sk, sk / jacobian(at)};
+  }
+
+  // The crossing for any convex yield function: f(theta) = sigma_eq(xi0 + theta d_sigma) - sigma_F0
+  // is convex in theta, negative at 0 (else the crossing is at 0) and positive at 1; bisection and
+  // Newton in double precision, then one Newton step in T (Jets: the implicit derivative).
+  bool crossing(const Vec3& xi0, const Vec3& dsig, const T& sF, T& theta) const {
+    auto f = [&](const T& t) { return law_.equivalent_stress(Vec3(xi0 + t * dsig)) - sF; };
+    if (value_of(f(T(0.0))) >= 0.0) {
+      theta = T(0.0);
+      return true;
+    }
+    if (value_of(f(T(1.0))) < 0.0) return false;
+    double lo = 0.0, hi = 1.0;
+    for (int it = 0; it < 200 && hi - lo > 1e-15; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (value_of(f(T(mid))) < 0.0 ? lo : hi) = mid;
+    }
+    theta = T(hi);
+    const T slope = law_.flow_direction_at(Vec3(xi0 + theta * dsig)).dot(dsig);
+    if (value_of(slope) > 0.0) theta = theta - f(theta) / slope;
+    return true;
   }
 
   void commit(double d, const Trial& trial) {

@@ -4,6 +4,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/material/material_inputs.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
 #include "tests/support/cards.hpp"
 
@@ -125,7 +126,11 @@ TEST(MaterialCard, RangeMessagesComeFromTheNamedInputs) {
     if (in.info.range.lo == -std::numeric_limits<double>::infinity()) continue;  // Hill F, G, H: convexity
     auto c = valid;
     if (!material::holds_input(c.params, in)) {  // another law than the card's: 0.5 is in every coefficient's range
-      if (in.field.kind == material::MaterialField::hardening) {
+      if (in.field.kind == material::MaterialField::yield) {  // the registered function's defaults
+        c.params.yield = material::YieldFunction<double>{in.field.law, {}};
+        const auto& d = material::yield_function(in.field.law).defaults;
+        for (std::size_t i = 0; i < d.size(); ++i) c.params.yield[static_cast<int>(i)] = d[i];
+      } else if (in.field.kind == material::MaterialField::hardening) {
         c.params.hardening = material::Hardening<double>{in.field.law, {}};
         c.params.hardening.c.fill(0.5);
       } else {
