@@ -1,4 +1,5 @@
 #include "forward/material/material_inputs.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "reports/fit_document.hpp"
 
@@ -163,6 +164,29 @@ std::string parameter_origin(const FitRecord& rec, const std::string& name) {
   return "start card";
 }
 
+// What a card with a registered yield function (Yld2000-2d) predicts: uniaxial tension at 0, 45
+// and 90 degrees, equibiaxial tension and in-plane shear, from its gradient.
+void add_registered_yield_predictions(Document& d, const material::MaterialCard& card) {
+  const auto& p = card.params;
+  Table r;
+  r.id = "card_predictions";
+  r.header = {"stress state", "r-value", "initial yield stress"};
+  r.right = {false, true, true};
+  const double s0 = p.plastic ? material::hardening_stress(p, 0.0) : kNaN;
+  for (double deg : {0.0, 45.0, 90.0}) {
+    const double a = deg * std::numbers::pi / 180.0;
+    r.rows.push_back({cell("uniaxial at " + fmt(deg, 3) + "° to RD"), cell(fmt(material::uniaxial_r_value(p, a), 4)),
+                      cell(with_unit(fmt(s0 / material::uniaxial_yield_factor(p, a), 4), "MPa"))});
+  }
+  r.rows.push_back({cell("equibiaxial"), cell(fmt(material::equibiaxial_r_value(p), 4)),
+                    cell(with_unit(fmt(s0 / material::equibiaxial_yield_factor(p), 4), "MPa"))});
+  r.rows.push_back({cell("in-plane shear"), cell("-"), cell(with_unit(fmt(s0 / material::shear_yield_factor(p), 4), "MPa"))});
+  d.table(r);
+  d.para({{"What the card predicts (" + material::yield_function_title(p.yield.law) +
+           ", from its flow direction; yield stress sigma_F(0) over the equivalent stress of a unit stress in each state). "
+           "The equibiaxial r-value is d eps_TD / d eps_RD."}});
+}
+
 // The whole card as written, fixed parameters too, and what it predicts at 0, 45 and 90 degrees
 // to RD (closed forms of Hill 1948, thesis eq. C.2; initial yield stress K eps0^n scaled by the
 // uniaxial factor).
@@ -185,6 +209,7 @@ void add_card(Document& d, const FitReportContent& c) {
     }
   }
   d.table(t);
+  if (p.yield.active()) return add_registered_yield_predictions(d, card);
   const material::Hill48 h = card.hill();
   Table r;
   r.id = "card_predictions";

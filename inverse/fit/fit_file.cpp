@@ -2,6 +2,7 @@
 
 #include "forward/io/toml_reader.hpp"
 #include "forward/material/material_inputs.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "inverse/experiments/fe_experiment_file.hpp"
 #include "inverse/experiments/material_point_experiment_file.hpp"
@@ -67,7 +68,11 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   const std::string card_path = resolve_path(path, ft->string("card"));
   if (!fs::exists(card_path)) ft->fail("card", "starting card not found at " + card_path);
   auto card = material::load_material_card(card_path);
-  *normalise = ft->boolean("normalise_hill", true);
+  // Hill's normalisation G + H = 2 only where Hill 1948 is the card's yield function.
+  const bool hill = !card.params.yield.active();
+  *normalise = ft->boolean("normalise_hill", hill);
+  if (*normalise && !hill)
+    ft->fail("normalise_hill", "the starting card's yield function is " + material::yield_function(card.params.yield.law).name + ", not Hill 1948");
   auto& st = fp.settings;
   st.algorithm = ft->string("algorithm", st.algorithm);
   if (!is_fit_algorithm(st.algorithm)) ft->fail("algorithm", "unknown algorithm (known: " + fit_algorithm_names() + ")");
@@ -100,10 +105,12 @@ const io::InputInfo* scene_input(const io::TomlTable& pt, const std::string& nam
   return found;
 }
 
-// What a fit may vary, for messages: the card's parameters and the FE scenes' real inputs.
-std::string fittable_names(const std::vector<const scene::Scene*>& fe_scenes) {
+// What a fit may vary, for messages: the parameters of the card's laws and the FE scenes' real
+// inputs.
+std::string fittable_names(const material::MaterialCard& card, const std::vector<const scene::Scene*>& fe_scenes) {
   std::string known;
-  for (const auto& k : known_parameter_names()) known += (known.empty() ? "" : ", ") + k;
+  for (const auto& in : material::material_inputs())
+    if (material::holds_input(card.params, in)) known += (known.empty() ? "" : ", ") + in.info.name;
   if (fe_scenes.empty()) return known + "; scene inputs such as contact.friction with an FE scene";
   for (const auto& i : scene::find_scene_kind(fe_scenes.front()->kind())->inputs)
     if (i.variable && i.type == io::InputType::real) known += ", " + i.name;
@@ -118,7 +125,7 @@ void read_parameters(const io::TomlTable& root, const material::MaterialCard& ca
   if (!pt) root.fail("parameters", "required table [parameters] is missing");
   for (const auto& name : pt->keys()) {
     const io::InputInfo* info = is_known_parameter(name) ? nullptr : scene_input(*pt, name, fe_scenes);
-    if (!is_known_parameter(name) && !info) pt->fail(name, "unknown parameter (known: " + fittable_names(fe_scenes) + ")");
+    if (!is_known_parameter(name) && !info) pt->fail(name, "unknown parameter (known for this card: " + fittable_names(card, fe_scenes) + ")");
     if (name == "hill.H" && normalise) pt->fail(name, "H = 2 - G while [fit] normalise_hill = true; fit hill.G instead");
     if (const material::MaterialInput* in = info ? nullptr : material::find_material_input(name))
       if (const std::string why = material::why_not_held(card.params, *in); !why.empty()) pt->fail(name, why + " (card " + card.file + ")");

@@ -6,15 +6,6 @@
 
 namespace spifit::inverse {
 
-const std::vector<std::string>& known_parameter_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> n;
-    for (const auto& m : material::material_inputs()) n.push_back(m.info.name);
-    return n;
-  }();
-  return names;
-}
-
 bool is_known_parameter(const std::string& name) { return material::find_material_input(name) != nullptr; }
 
 double parameter_value(const material::MaterialCard& card, const std::string& n) {

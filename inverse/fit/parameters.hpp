@@ -26,8 +26,7 @@ struct ParameterSpec {
   bool scene_input = false;  // a named input of the FE scenes, not of the material card
 };
 
-// Names spifit knows, in a fixed order.
-const std::vector<std::string>& known_parameter_names();
+// Whether spifit knows a material parameter by this name (material_inputs()).
 bool is_known_parameter(const std::string& name);
 // Current value of a named parameter in a card.
 double parameter_value(const material::MaterialCard& card, const std::string& name);
