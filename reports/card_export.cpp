@@ -2,6 +2,7 @@
 
 #include "forward/material/hardening/hardening_laws.hpp"
 #include "forward/material/kinematic/kinematic_laws.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "reports/card_export_text.hpp"
 
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <numbers>
 #include <stdexcept>
 
 namespace spifit::reports {
@@ -88,12 +90,18 @@ double interpolate(const std::vector<double>& x, const std::vector<double>& y, d
 
 }  // namespace
 
+namespace {
+void tabulate(const material::MaterialParams<double>& p, const ExportOptions& o, ExportedLaw& law);
+ExportedLaw exported_registered_yield(const MaterialCard& card, const ExportOptions& o);
+}  // namespace
+
 ExportedLaw exported_law(const MaterialCard& card, const ExportOptions& o) {
   std::string err;
   if (!o.IsValid(&err)) throw std::invalid_argument("ExportOptions: " + err);
   const auto& p = card.params;
   const material::Hill48 hill = card.hill();
   ExportedLaw law;
+  if (p.yield.active()) return exported_registered_yield(card, o);
   const double gh = hill.G + hill.H;
   law.h = std::sqrt(0.5 * gh);
   law.ratios = {1.0,
@@ -121,6 +129,14 @@ ExportedLaw exported_law(const MaterialCard& card, const ExportOptions& o) {
                                 " has no export to the FE codes yet (reports/card_export.cpp knows armstrong_frederick and ziegler)");
   }
 
+  tabulate(p, o, law);
+  return law;
+}
+
+namespace {
+
+// The hardening tables of an exported law whose h, C and gamma are set.
+void tabulate(const material::MaterialParams<double>& p, const ExportOptions& o, ExportedLaw& law) {
   const double h = law.h;
   auto size_at = [&](double e) { return material::hardening_stress(p, e / h) / h; };
   auto mono_at = [&](double e) { return size_at(e) + rd_back_stress(law.C, law.gamma, e); };
@@ -145,10 +161,29 @@ ExportedLaw exported_law(const MaterialCard& card, const ExportOptions& o) {
                                          std::abs(interpolate(law.strain, law.monotonic, e) - mono_at(e)) / mono_at(e));
     }
   }
+}
+
+// A card with a registered yield function (Yld2000-2d): h is its sigma_eq of a unit RD
+// uniaxial stress, the r-values come from its flow direction; no kinematic hardening is exported.
+ExportedLaw exported_registered_yield(const MaterialCard& card, const ExportOptions& o) {
+  const auto& p = card.params;
+  ExportedLaw law;
+  law.h = material::uniaxial_yield_factor(p, 0.0);
+  law.lankford = {material::uniaxial_r_value(p, 0.0), material::uniaxial_r_value(p, std::numbers::pi / 4.0),
+                  material::uniaxial_r_value(p, std::numbers::pi / 2.0)};
+  law.plastic = p.plastic;
+  if (!p.plastic) return law;
+  if (p.kinematic.active())
+    throw std::invalid_argument("card " + card.name + ": " + material::yield_function_title(p.yield.law) + " with kinematic hardening (" +
+                                material::kinematic_law(p.kinematic.law).name + ") has no export: the codes' own kinematic models for it are other laws");
+  tabulate(p, o, law);
   return law;
 }
 
+}  // namespace
+
 MaterialCard exported_equivalent_card(const MaterialCard& card) {
+  if (card.params.yield.active()) throw std::invalid_argument("card " + card.name + ": exported_equivalent_card serves Hill 1948 cards (the Abaqus deck)");
   const ExportedLaw law = exported_law(card);
   MaterialCard eq = card;
   eq.name = card.name + "_exported";

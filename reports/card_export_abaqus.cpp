@@ -2,11 +2,14 @@
 #include "reports/card_export.hpp"
 #include "reports/card_export_text.hpp"
 
+#include "forward/material/yield/yield_functions.hpp"
+
 #include "forward/scenes/material_point/material_point_run.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace spifit::reports {
 
@@ -118,6 +121,9 @@ std::vector<std::string> abaqus_notes(const MaterialCard& card, const ExportedLa
 }  // namespace
 
 std::string export_abaqus(const MaterialCard& card, std::vector<std::string>* notes_out, const ExportOptions& o) {
+  if (card.params.yield.active())
+    throw std::invalid_argument("card " + card.name + ": Abaqus has no built-in " + material::yield_function_title(card.params.yield.law) +
+                                " (it needs a user material subroutine); export it to LS-DYNA (*MAT_BARLAT_YLD2000, MAT_133)");
   const ExportedLaw law = exported_law(card, o);
   const auto notes = abaqus_notes(card, law, o);
   append(notes_out, notes);

@@ -2,8 +2,11 @@
 #include "reports/card_export.hpp"
 #include "reports/card_export_text.hpp"
 
+#include "forward/material/yield/yield_functions.hpp"
+
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 namespace spifit::reports {
 
@@ -55,6 +58,9 @@ std::vector<std::string> calculix_notes(const MaterialCard& card, const Exported
 }  // namespace
 
 std::string export_calculix(const MaterialCard& card, std::vector<std::string>* notes_out, const ExportOptions& o) {
+  if (card.params.yield.active())
+    throw std::invalid_argument("card " + card.name + ": CalculiX has no built-in " + material::yield_function_title(card.params.yield.law) +
+                                " (it needs a user material subroutine); export it to LS-DYNA (*MAT_BARLAT_YLD2000, MAT_133)");
   const ExportedLaw law = exported_law(card, o);
   const auto notes = calculix_notes(card, law, o);
   append(notes_out, notes);

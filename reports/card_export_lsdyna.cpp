@@ -1,8 +1,9 @@
-// The LS-DYNA deck (*MAT_HILL_3R + *DEFINE_CURVE, long format): docs/reference/outputs.md "LS-DYNA".
+// The LS-DYNA deck (*MAT_HILL_3R or *MAT_BARLAT_YLD2000 + *DEFINE_CURVE, long format): docs/reference/outputs.md "LS-DYNA".
 #include "reports/card_export.hpp"
 #include "reports/card_export_text.hpp"
 
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -48,6 +49,14 @@ std::vector<std::string> lsdyna_notes(const MaterialCard& card, const ExportedLa
     n.push_back("*MAT_ELASTIC (MAT_001).");
     return n;
   }
+  if (p.yield.active()) {
+    n.push_back("*MAT_BARLAT_YLD2000 (MAT_133) with FIT = 0 (the alphas given), the exponent A = " + num(p.yield[material::Yld2000_2d::a]) +
+                ", HARD = -LCID (the yield stress curve), BETA = 0 (isotropic hardening) and ITER = 0 (plane-stress return); r-values of the card from its flow direction: r00 = " + num(law.lankford.r0) +
+                ", r45 = " + num(law.lankford.r45) + ", r90 = " + num(law.lankford.r90) + ".");
+    n.push_back("material axes: AOPT = 2 with a = global x = RD and d = global y = TD (spifit's convention); change A/D "
+                "(or AOPT) to match the mesh.");
+    return n;
+  }
   n.push_back("*MAT_HILL_3R (MAT_122): Hill 1948 for shell elements (plane stress), given by r-values r00 = H/G, r45 = "
               "(2N - F - G)/(2(F + G)), r90 = H/F (thesis eq. C.2) and the RD hardening curve: exact for the in-plane "
               "Hill coefficients; the card's out-of-plane L, M are not used.");
@@ -74,6 +83,11 @@ std::vector<std::string> lsdyna_notes(const MaterialCard& card, const ExportedLa
 
 }  // namespace
 
+namespace {
+void write_mat_122(std::ostringstream& os, const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o);
+void write_mat_133(std::ostringstream& os, const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o);
+}  // namespace
+
 std::string export_lsdyna(const MaterialCard& card, std::vector<std::string>* notes_out, const ExportOptions& o) {
   const ExportedLaw law = exported_law(card, o);
   const auto notes = lsdyna_notes(card, law, o);
@@ -89,6 +103,25 @@ std::string export_lsdyna(const MaterialCard& card, std::vector<std::string>* no
     os << "*END\n";
     return os.str();
   }
+  if (p.yield.active()) {
+    write_mat_133(os, card, law, o);
+  } else {
+    write_mat_122(os, card, law, o);
+  }
+  os << "*DEFINE_CURVE_TITLE\n" << deck_material_name(card) << " RD yield stress vs effective plastic strain\n";
+  os << labels({"LCID", "SIDR", "SFA", "SFO", "OFFA", "OFFO", "DATTYP"});
+  os << field(o.lsdyna_curve_id) << field(0) << field(1.0) << field(1.0) << field(0.0) << field(0.0) << field(0) << "\n";
+  os << labels({"A1 (ebar)", "O1 (MPa)"});
+  for (std::size_t i = 0; i < law.strain.size(); ++i) os << field(law.strain[i]) << field(law.monotonic[i]) << "\n";
+  os << "*END\n";
+  return os.str();
+}
+
+namespace {
+
+// *MAT_HILL_3R: Hill 1948 by its r-values.
+void write_mat_122(std::ostringstream& os, const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o) {
+  const auto& p = card.params;
   os << "*MAT_HILL_3R_TITLE\n" << deck_material_name(card) << "\n";
   os << labels({"MID", "RO", "E", "PR", "HR", "P1", "P2"});
   os << field(o.lsdyna_material_id) << field(card.density) << field(p.E) << field(p.nu) << field(3.0) << field(0.0)
@@ -102,13 +135,28 @@ std::string export_lsdyna(const MaterialCard& card, std::vector<std::string>* no
   os << blank() << blank() << blank() << field(1.0) << field(0.0) << field(0.0) << "\n";
   os << labels({"V1", "V2", "V3", "D1", "D2", "D3", "BETA"});
   os << field(0.0) << field(0.0) << field(0.0) << field(0.0) << field(1.0) << field(0.0) << field(0.0) << "\n";
-  os << "*DEFINE_CURVE_TITLE\n" << deck_material_name(card) << " RD yield stress vs effective plastic strain\n";
-  os << labels({"LCID", "SIDR", "SFA", "SFO", "OFFA", "OFFO", "DATTYP"});
-  os << field(o.lsdyna_curve_id) << field(0) << field(1.0) << field(1.0) << field(0.0) << field(0.0) << field(0) << "\n";
-  os << labels({"A1 (ebar)", "O1 (MPa)"});
-  for (std::size_t i = 0; i < law.strain.size(); ++i) os << field(law.strain[i]) << field(law.monotonic[i]) << "\n";
-  os << "*END\n";
-  return os.str();
 }
+
+// *MAT_BARLAT_YLD2000 with its alphas divided by h (RD-normalised, card_export_text.cpp).
+void write_mat_133(std::ostringstream& os, const MaterialCard& card, const ExportedLaw& law, const ExportOptions& o) {
+  using Y = material::Yld2000_2d;
+  const auto& p = card.params;
+  os << "*MAT_BARLAT_YLD2000_TITLE\n" << deck_material_name(card) << "\n";
+  os << labels({"MID", "RO", "E", "PR", "FIT", "BETA", "ITER"});
+  os << field(o.lsdyna_material_id) << field(card.density) << field(p.E) << field(p.nu) << field(0.0) << field(0.0) << field(0.0) << "\n";
+  os << labels({"K", "E0", "N", "C", "P", "HARD", "A"});
+  os << blank() << blank() << blank() << field(0.0) << field(0.0) << field(-static_cast<double>(o.lsdyna_curve_id)) << field(p.yield[Y::a]) << "\n";
+  os << labels({"ALPHA1", "ALPHA2", "ALPHA3", "ALPHA4", "ALPHA5", "ALPHA6", "ALPHA7", "ALPHA8"});
+  for (int i = Y::alpha1; i <= Y::alpha8; ++i) os << field(p.yield[i] / law.h);
+  os << "\n";
+  os << labels({"AOPT"});
+  os << field(2.0) << "\n";
+  os << labels({"", "", "", "A1", "A2", "A3"});
+  os << blank() << blank() << blank() << field(1.0) << field(0.0) << field(0.0) << "\n";
+  os << labels({"V1", "V2", "V3", "D1", "D2", "D3"});
+  os << field(0.0) << field(0.0) << field(0.0) << field(0.0) << field(1.0) << field(0.0) << "\n";
+}
+
+}  // namespace
 
 }  // namespace spifit::reports

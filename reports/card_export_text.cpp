@@ -1,6 +1,7 @@
 #include "reports/card_export_text.hpp"
 
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -99,7 +100,11 @@ std::vector<std::string> common_notes(const MaterialCard& card, const ExportedLa
               " (equivalent plastic strain); the FE code interpolates linearly: largest relative deviation from the "
               "analytic curve " + sci(law.interpolation_error, 2) + ". Beyond ebar = " + sci(o.max_plastic_strain, 3) +
               " " + extrapolation + ".");
-  if (std::abs(law.h - 1.0) > 1e-12) {
+  if (p.yield.active()) {
+    n.push_back(material::yield_function_title(p.yield.law) + ": the deck is normalised to the RD tensile yield stress "
+                "(exact, no approximation): every alpha is divided by h = sigma_eq of a unit RD tension = " + num(law.h) +
+                " (sigma_eq is homogeneous of degree one in the alphas), the curve is sigma_F(ebar/h)/h and ebar = h p.");
+  } else if (std::abs(law.h - 1.0) > 1e-12) {
     n.push_back("G + H = " + num(card.params.G + card.params.H) +
                 " != 2: the deck is normalised to the RD tensile yield stress (exact, no approximation): yield-surface "
                 "size sigma_0 = sigma_F(ebar/h)/h and ebar = h p with h = sqrt((G+H)/2) = " + num(law.h) +

@@ -7,7 +7,9 @@
 
 #include "forward/material/hill48.hpp"
 #include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 #include "tests/support/cards.hpp"
+#include "tests/support/scenes.hpp"
 
 #include <gtest/gtest.h>
 
@@ -436,4 +438,49 @@ TEST(CardExportReaders, RejectMalformedDecks) {
   EXPECT_EQ(m.hardening, "COMBINED");
   EXPECT_EQ(m.data_type, "PARAMETERS");
   EXPECT_EQ(m.cyclic_hardening.size(), 2u);
+}
+
+// A Yld2000-2d card goes to LS-DYNA as *MAT_BARLAT_YLD2000: read back, the alphas times h and
+// the exponent are the card's, the RD-normalised alphas give sigma_eq = 1 in RD tension, the
+// curve is sigma_F(ebar / h) / h; Abaqus and CalculiX refuse it, naming LS-DYNA.
+TEST(CardExportYld2000, LsDynaMat133RoundTrip) {
+  using Y = material::Yld2000_2d;
+  MaterialCard card = test::card("aa3003o_c3c4");
+  card.params.yield = material::make_yield_function<Y>({1.01, 0.909, 1.0, 1.0, 1.015, 1.0, 1.09, 1.41, 8.0});
+  std::vector<std::string> notes;
+  const std::string deck = reports::export_lsdyna(card, &notes);
+  const auto m = test::read_lsdyna_material(deck);
+  EXPECT_EQ(m.keyword, "MAT_BARLAT_YLD2000");
+  EXPECT_EQ(m.fit, 0.0);
+  EXPECT_EQ(m.exponent, 8.0);
+  ASSERT_EQ(m.lcid, 1);
+  const double h = material::uniaxial_yield_factor(card.params, 0.0);
+  auto back = card.params;
+  for (int i = 0; i < 8; ++i) {
+    EXPECT_NEAR(m.alpha[static_cast<std::size_t>(i)] * h, card.params.yield[i], 1e-13) << i;
+    back.yield[i] = m.alpha[static_cast<std::size_t>(i)];
+  }
+  EXPECT_NEAR(material::uniaxial_yield_factor(back, 0.0), 1.0, 1e-13);
+  // The exported law's r-values are the card's (normalising does not move the flow direction).
+  for (double deg : {0.0, 45.0, 90.0})
+    EXPECT_NEAR(material::uniaxial_r_value(back, test::deg(deg)), material::uniaxial_r_value(card.params, test::deg(deg)), 1e-12);
+  ASSERT_FALSE(m.curve.empty());
+  for (const auto& [e, s] : m.curve) EXPECT_NEAR(s, material::hardening_stress(card.params, e / h) / h, 1e-9 * s) << e;
+  EXPECT_EQ(m.aopt, 2.0);
+  for (const char* n : {"MAT_133", "alpha is divided by h"}) {
+    bool found = false;
+    for (const auto& line : notes) found = found || line.find(n) != std::string::npos;
+    EXPECT_TRUE(found) << n;
+  }
+  for (auto f : {reports::export_abaqus, reports::export_calculix}) {
+    try {
+      f(card, nullptr, {});
+      ADD_FAILURE() << "exported";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("MAT_133"), std::string::npos) << e.what();
+    }
+  }
+  // With kinematic hardening: refused, naming the law.
+  card.params.kinematic = material::make_kinematic<material::ArmstrongFrederick>({10.0, 20.0});
+  EXPECT_THROW(reports::export_lsdyna(card, nullptr), std::invalid_argument);
 }

@@ -229,7 +229,22 @@ void read_dyna_material_cards(const DynaKeyword& mat, bool title, std::size_t w,
     m.p2 = get(f, 6, ln);
   }
   if (m.keyword == "MAT_ELASTIC") return;
-  {
+  if (m.keyword == "MAT_BARLAT_YLD2000") {  // FIT, BETA, ITER; K, E0, N, C, P, HARD, A; the alphas
+    m.fit = m.hr;
+    m.beta = m.p1;
+    m.iter = m.p2;
+    m.hr = m.p1 = m.p2 = 0.0;
+    {
+      const auto& [ln, text] = card(c++);
+      const auto f = dyna_fields(text, w);
+      m.hard = get(f, 5, ln);
+      m.exponent = get(f, 6, ln);
+      m.lcid = m.hard < 0 ? static_cast<int>(-m.hard) : 0;
+    }
+    const auto& [ln, text] = card(c++);
+    const auto f = dyna_fields(text, w);
+    for (std::size_t i = 0; i < 8; ++i) m.alpha[i] = get(f, i, ln);
+  } else {
     const auto& [ln, text] = card(c++);
     const auto f = dyna_fields(text, w);
     m.r00 = get(f, 0, ln);
@@ -252,7 +267,7 @@ void read_dyna_material_cards(const DynaKeyword& mat, bool title, std::size_t w,
     const auto f = dyna_fields(text, w);
     m.v = {get(f, 0, ln), get(f, 1, ln), get(f, 2, ln)};
     m.d = {get(f, 3, ln), get(f, 4, ln), get(f, 5, ln)};
-    m.beta = get(f, 6, ln);
+    if (m.keyword != "MAT_BARLAT_YLD2000") m.beta = get(f, 6, ln);
   }
 }
 
@@ -291,6 +306,7 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
   const DynaKeyword* mat = nullptr;
   for (const auto& k : kws) {
     if (k.name.rfind("MAT_HILL_3R", 0) == 0 || k.name.rfind("MAT_122", 0) == 0 || k.name.rfind("MAT_ELASTIC", 0) == 0 ||
+        k.name.rfind("MAT_BARLAT_YLD2000", 0) == 0 || k.name.rfind("MAT_133", 0) == 0 ||
         k.name.rfind("MAT_001", 0) == 0) {
       mat = &k;
       break;
@@ -301,6 +317,7 @@ LsDynaMaterial read_lsdyna_material(const std::string& deck) {
   m.keyword = title ? mat->name.substr(0, mat->name.size() - 6) : mat->name;
   if (m.keyword == "MAT_122") m.keyword = "MAT_HILL_3R";
   if (m.keyword == "MAT_001") m.keyword = "MAT_ELASTIC";
+  if (m.keyword == "MAT_133") m.keyword = "MAT_BARLAT_YLD2000";
   read_dyna_material_cards(*mat, title, w, m);
   if (m.keyword == "MAT_ELASTIC" || m.lcid == 0) return m;
   if (read_dyna_curve(kws, w, m)) return m;

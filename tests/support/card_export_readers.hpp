@@ -41,7 +41,7 @@ struct InpMaterial {
 InpMaterial read_inp_material(const std::string& deck);
 
 struct LsDynaMaterial {
-  std::string keyword;  // "MAT_HILL_3R" or "MAT_ELASTIC" (without _TITLE)
+  std::string keyword;  // "MAT_HILL_3R", "MAT_BARLAT_YLD2000" or "MAT_ELASTIC" (without _TITLE)
   std::string title;
   int mid = 0;
   double ro = 0.0, e = 0.0, pr = 0.0;
@@ -50,6 +50,8 @@ struct LsDynaMaterial {
   int lcid = 0;
   std::array<double, 3> a{}, v{}, d{};
   double beta = 0.0;
+  double fit = 0.0, iter = 0.0, hard = 0.0, exponent = 0.0;  // MAT_133 (HARD < 0: -LCID)
+  std::array<double, 8> alpha{};                              // MAT_133 ALPHA1..ALPHA8
   // *DEFINE_CURVE with id lcid: (abscissa, ordinate) scaled by SFA/SFO and offset by OFFA/OFFO.
   std::vector<std::array<double, 2>> curve;
 };
