@@ -3,6 +3,7 @@
 // solution, printed as counters.
 #include "forward/material/hill48.hpp"
 #include "forward/material/material_card.hpp"
+#include "forward/material/yield/yield_functions.hpp"
 #include "forward/scenes/material_point/material_point_run.hpp"
 #include "tests/support/closed_form.hpp"  // closed forms shared with the tests
 
@@ -15,6 +16,11 @@ using namespace spifit;
 namespace {
 
 material::MaterialCard load(const char* name) {
+  if (std::string(name) == "yld2000_fitted") {  // fit_yld2000's card: Yld2000-2d, a = 8, Swift of C.4
+    auto c = load("aa3003o_yld2000_start");
+    c.params.yield = material::make_yield_function<material::Yld2000_2d>({1.0102, 0.90871, 1.0, 1.0, 1.0151, 1.0, 1.0906, 1.4135, 8.0});
+    return c;
+  }
   return material::load_material_card(std::string(SPIFIT_SOURCE_DIR) + "/materials/" + name + ".toml");
 }
 
@@ -32,7 +38,9 @@ void tensile_curve(benchmark::State& state, const char* card_name, double angle)
   }
   double err = 0.0;
   if (!card.params.kinematic.active()) {
-    const test::UniaxialClosedForm cf{card.params, material::uniaxial_stress_factor(card.hill(), angle * std::numbers::pi / 180.0)};
+    const double a = angle * std::numbers::pi / 180.0;
+    const double factor = card.params.yield.active() ? material::uniaxial_yield_factor(card.params, a) : material::uniaxial_stress_factor(card.hill(), a);
+    const test::UniaxialClosedForm cf{card.params, factor};
     for (const auto& p : r.curve) {
       if (p.control_strain > 0) err = std::max(err, std::abs(p.stress_kirchhoff / cf.stress(p.control_strain) - 1.0));
     }
@@ -48,6 +56,8 @@ BENCHMARK_CAPTURE(tensile_curve, c3c4_00deg, "aa3003o_c3c4", 0.0)->Unit(benchmar
 BENCHMARK_CAPTURE(tensile_curve, c3c4_45deg, "aa3003o_c3c4", 45.0)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(tensile_curve, c7_af_45deg, "aa3003o_c7_af_shell", 45.0)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(tensile_curve, c8_ziegler_00deg, "aa3003o_c8_ziegler_shell", 0.0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(tensile_curve, yld2000_a8_00deg, "yld2000_fitted", 0.0)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(tensile_curve, yld2000_a8_45deg, "yld2000_fitted", 45.0)->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();
 

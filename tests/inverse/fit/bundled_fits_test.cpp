@@ -2,7 +2,15 @@
 #include "inverse/fit/run_fit.hpp"
 #include "inverse/fit/fit_file.hpp"
 
+#include "forward/material/hardening/hardening_laws.hpp"
+#include "forward/material/yield/yield_functions.hpp"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 using namespace spifit;
 
@@ -105,4 +113,53 @@ TEST(BundledFits, DeterministicWithTwoThreads) {
   EXPECT_EQ(a.values, b.values);
   EXPECT_EQ(a.cost_final, b.cost_final);
   EXPECT_EQ(a.iterations, b.iterations);
+}
+
+// fit_yld2000: Yld2000-2d matches the measured r0, r45, r90 and the C.3 shear curve at once,
+// the conflict Hill 1948 cannot resolve (NConflictIsReportedPerExperiment).
+TEST(BundledFits, Yld2000MatchesRValuesAndShearTogether) {
+  const auto fp = inverse::read_fit_file(src("experiments/aa3003o/fit_yld2000.toml"));
+  const auto r = inverse::run_fit(fp);
+  ASSERT_TRUE(r.usable) << (r.not_usable.empty() ? r.termination : r.not_usable.front());
+  const auto& p = r.card.params;
+  const double pi = std::acos(-1.0);
+  EXPECT_NEAR(material::uniaxial_r_value(p, 0.0), 0.68, 1e-6);
+  EXPECT_NEAR(material::uniaxial_r_value(p, pi / 4), 0.73, 1e-6);
+  EXPECT_NEAR(material::uniaxial_r_value(p, pi / 2), 0.66, 1e-6);
+  // The shear yield stress of card C.3 + C.4, sigma_F(0) / sqrt(N), and its RD yield stress.
+  const double s0 = material::hardening_stress(p, 0.0);
+  EXPECT_NEAR(s0 / material::shear_yield_factor(p), s0 / std::sqrt(4.06), 0.005 * s0 / std::sqrt(4.06));
+  EXPECT_NEAR(material::uniaxial_yield_factor(p, 0.0), 1.0, 0.005);
+  EXPECT_TRUE(r.card.params.yield.active());
+}
+
+// With every alpha free the same data leave the equibiaxial part of Yld2000-2d open: the fit
+// names the X'' alphas (alpha3 to alpha6) not identifiable and is not usable.
+TEST(BundledFits, Yld2000EveryAlphaFreeNamesTheUnidentified) {
+  std::ifstream in(src("experiments/aa3003o/fit_yld2000.toml"));
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string t = text.str();
+  std::string extra;
+  for (int i : {3, 4, 6}) extra += "[parameters.\"yld2000.alpha" + std::to_string(i) + "\"]\ninitial = 1.0\nlower = 0.3\nupper = 2.5\n";
+  t.insert(t.find("[[experiment]]"), extra + "\n");
+  // Paths relative to the bundled file become absolute.
+  auto replace_all = [&](const std::string& from, const std::string& to) {
+    for (std::size_t at = t.find(from); at != std::string::npos; at = t.find(from, at + to.size())) t.replace(at, from.size(), to);
+  };
+  replace_all("\"scenes/", "\"" + src("experiments/aa3003o/scenes/"));
+  replace_all("\"data/", "\"" + src("experiments/aa3003o/data/"));
+  replace_all("\"../../materials/", "\"" + src("materials/"));
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "spifit_yld_all";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "fit_all.toml") << t;
+  const auto fp = inverse::read_fit_file((dir / "fit_all.toml").string());
+  ASSERT_EQ(fp.parameters->num_free(), 8);
+  const auto r = inverse::run_fit(fp);
+  EXPECT_FALSE(r.usable);
+  std::string all;
+  for (const auto& s : r.not_usable) all += s + "\n";
+  for (int i : {3, 4, 5, 6}) EXPECT_NE(all.find("yld2000.alpha" + std::to_string(i) + " is not identifiable"), std::string::npos) << all;
+  // The data are matched all the same: the r-values to round-off.
+  EXPECT_NEAR(material::uniaxial_r_value(r.card.params, std::acos(-1.0) / 4), 0.73, 1e-6);
 }
