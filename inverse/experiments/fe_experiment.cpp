@@ -115,7 +115,7 @@ class FeExperiment : public Experiment {
     return r && r->ok() ? r : nullptr;
   }
   std::shared_ptr<const scene::Scene> scene_;
-  std::shared_ptr<const SceneRuns> runs_;
+  std::shared_ptr<SceneRuns> runs_;
 };
 
 class FeScalarExperiment final : public FeExperiment {

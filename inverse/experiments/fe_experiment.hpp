@@ -21,7 +21,7 @@ namespace spifit::inverse {
 struct FeExperimentBase {
   std::string name;
   std::shared_ptr<const scene::Scene> scene;
-  std::shared_ptr<const SceneRuns> runs;
+  std::shared_ptr<SceneRuns> runs;
   double noise = 0.0;  // measurement standard deviation; 0: the range of the data (curve) or |value|
   double noise_relative = 0.0;  // curves: > 0, each y's standard deviation is this fraction of |y|
   double weight = 1.0;

@@ -11,7 +11,7 @@ JobHandler fe_evaluation_handler(const FitProblem& problem) {
   return [&problem](const std::string& job) {
     FeEvaluationAnswer a;
     try {
-      const SceneRuns& runs = *problem.scene_runs;
+      SceneRuns& runs = *problem.scene_runs;
       const FeEvaluationJob asked_for = decode_fe_evaluation_job(job, runs.base());
       const std::string& name = asked_for.experiment;
       const ParameterPoint& p = asked_for.point;

@@ -85,11 +85,11 @@ std::string describe_point(const ParameterPoint& p, const material::MaterialPara
   return out.empty() ? "the card's values" : out;
 }
 
-std::shared_ptr<const scene::SceneResult> SceneRuns::result(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const {
+std::shared_ptr<const scene::SceneResult> SceneRuns::result(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) {
   return once_per_key(mutex_, cache_, order_, key_of(scene, p), [&] { return run(scene, p, experiment); });
 }
 
-std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const {
+std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) {
   Failure failure{scene.file(), describe_point(p, base_), {}, false};
   auto fail = [&](const std::string& why) -> std::shared_ptr<const scene::SceneResult> {
     failure.message = why;
@@ -156,7 +156,7 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
   return fail(failure.message);
 }
 
-void SceneRuns::add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures) const {
+void SceneRuns::add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures) {
   {
     std::lock_guard<std::mutex> lock(mutex_);
     runs_ += static_cast<long>(runs.size());
@@ -167,7 +167,7 @@ void SceneRuns::add_remote(const std::vector<Run>& runs, const std::vector<Failu
     for (const auto& r : runs) on_run_(r.seconds);
 }
 
-std::string SceneRuns::shared_answer(const std::string& key, const std::function<std::string()>& ask) const {
+std::string SceneRuns::shared_answer(const std::string& key, const std::function<std::string()>& ask) {
   return once_per_key(mutex_, answers_, answer_order_, key, ask);
 }
 

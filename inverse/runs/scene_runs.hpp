@@ -48,7 +48,7 @@ class SceneRuns {
   // cannot be set on the scene. Thread-safe; a point already run (or running) is not run again.
   // experiment: who asks (its runs are counted for it when it asks first).
   std::shared_ptr<const scene::SceneResult> result(const scene::Scene& scene, const ParameterPoint& p,
-                                                   const std::string& experiment = "") const;
+                                                   const std::string& experiment = "");
 
   // Evaluations kept on disk for a resume (null: none); the FE experiments read and add to it.
   void keep_evaluations(std::shared_ptr<EvaluationCache> cache) { evaluations_ = std::move(cache); }
@@ -58,11 +58,11 @@ class SceneRuns {
   // their runs and failures come back with each answer and are added here (add_remote).
   void use_pool(std::shared_ptr<JobPool> pool) { pool_ = std::move(pool); }
   JobPool* pool() const { return pool_.get(); }
-  void add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures) const;
+  void add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures);
   // The pool's answer for key (a scene file and a point): ask() runs once per key, however many
   // experiments on that scene want it and however many threads ask at once, as result() runs a
   // scene once.
-  std::string shared_answer(const std::string& key, const std::function<std::string()>& ask) const;
+  std::string shared_answer(const std::string& key, const std::function<std::string()>& ask);
   const material::MaterialParams<double>& base() const { return base_; }
 
   // Told of every run that ends, here or (add_remote) on a worker: its wall seconds. Set it
@@ -75,19 +75,19 @@ class SceneRuns {
 
  private:
   using Entry = std::shared_future<std::shared_ptr<const scene::SceneResult>>;
-  std::shared_ptr<const scene::SceneResult> run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment) const;
+  std::shared_ptr<const scene::SceneResult> run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment);
   material::MaterialParams<double> base_;
   double time_limit_ = 0.0;
   std::shared_ptr<EvaluationCache> evaluations_;
   std::shared_ptr<JobPool> pool_;
-  mutable std::mutex mutex_;
-  mutable std::map<std::string, Entry> cache_;
-  mutable std::deque<std::string> order_;  // keys, oldest first (the cache keeps the newest)
-  mutable std::vector<Failure> failures_;
-  mutable std::map<std::string, std::shared_future<std::string>> answers_;
-  mutable std::deque<std::string> answer_order_;
-  mutable std::vector<Run> log_;
-  mutable long runs_ = 0;
+  mutable std::mutex mutex_;  // the readers above are const and lock it too
+  std::map<std::string, Entry> cache_;
+  std::deque<std::string> order_;  // keys, oldest first (the cache keeps the newest)
+  std::vector<Failure> failures_;
+  std::map<std::string, std::shared_future<std::string>> answers_;
+  std::deque<std::string> answer_order_;
+  std::vector<Run> log_;
+  long runs_ = 0;
   std::function<void(double)> on_run_;
 };
 
