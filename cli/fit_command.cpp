@@ -148,7 +148,7 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const std::string suffix = inverse::fitted_file_suffix(result.usable);
     write_card_exports(card, suffix, dir);
     // Report for people: report.md, report.html, plots/*.svg (gnuplot; without it, no plots).
-    const auto report = reports::render_fit_report(dir.path(), {});
+    const auto report = reports::render_fit_report_from_record(dir.path(), inverse::fit_record(problem, result));
     dir.record();  // report.md, report.html, plots/ in the manifest
     for (const auto& w : report.warnings) std::cerr << "spifit: warning: " << w << "\n";
     watch.stop();  // the final summary is this one

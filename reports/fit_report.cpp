@@ -1,4 +1,4 @@
-// Assembles the fit report: reads the record and the data files, judges the fit, renders the
+// Assembles the fit report: reads the record (or takes it) and the data files, judges the fit, renders the
 // plots, builds the document and writes it as Markdown and HTML.
 #include "reports/fit_report.hpp"
 
@@ -8,6 +8,7 @@
 #include "reports/report_files.hpp"
 
 #include <algorithm>
+#include <utility>
 
 namespace spifit::reports {
 
@@ -44,10 +45,12 @@ void render_plots(const fs::path& dir, const ReportOptions& options, FitReportCo
 
 }  // namespace
 
-ReportSummary render_fit_report(const fs::path& dir, const ReportOptions& options) {
+ReportSummary render_fit_report(const fs::path& dir, const ReportOptions& options) { return render_fit_report_from_record(dir, load_record(dir), options); }
+
+ReportSummary render_fit_report_from_record(const fs::path& dir, inverse::FitRecord record, const ReportOptions& options) {
   ReportSummary summary;
   FitReportContent c;
-  c.record = load_record(dir);
+  c.record = std::move(record);
   c.data = read_fit_data(dir, c.record, &summary.warnings);
   c.verdict = judge_fit(c.record, c.data);
   for (const auto& f : c.verdict.findings) (f.level == 2 ? summary.findings : summary.notes).push_back(f.text);

@@ -1,8 +1,10 @@
 #pragma once
-// A human report of a fit: reads what `spifit fit --out DIR` wrote (DIR/fit.json,
-// DIR/experiments/NAME.csv) and writes DIR/report.md, DIR/report.html (self-contained, inline
+// A human report of a fit: reads what `spifit fit --out DIR` wrote (DIR/fit.json, or the record
+// handed over in memory, and DIR/experiments/NAME.csv) and writes DIR/report.md, DIR/report.html (self-contained, inline
 // CSS, images referenced as plots/NAME.svg) and DIR/plots/*.svg made with gnuplot
 // (scripts and data kept under DIR/plots/src/). Contents and rules: docs/guide/reading-reports.md.
+#include "inverse/fit/fit_record.hpp"
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -30,5 +32,8 @@ struct ReportSummary {
 // Throws io::InputError naming DIR/fit.json when it is missing or not a valid fit.json;
 // std::runtime_error when the report files cannot be written. Never fails because of gnuplot.
 ReportSummary render_fit_report(const std::filesystem::path& dir, const ReportOptions& options = {});
+// The same for the fit that has just written DIR, from its record in memory (the same record
+// as DIR/fit.json holds; `spifit fit` does not read back what it wrote).
+ReportSummary render_fit_report_from_record(const std::filesystem::path& dir, inverse::FitRecord record, const ReportOptions& options = {});
 
 }  // namespace spifit::reports
