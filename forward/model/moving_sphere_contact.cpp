@@ -4,7 +4,7 @@
 #include "forward/io/binary_archive.hpp"
 #include "forward/element/quad_shape.hpp"
 #include "forward/model/explicit_mass.hpp"
-#include "forward/model/normal_contact_lcp.hpp"
+#include "forward/contact/normal_contact_lcp.hpp"
 #include "forward/model/rotation_frames.hpp"
 #include "forward/model/shell_model.hpp"
 
@@ -309,7 +309,7 @@ Eigen::VectorXd MovingSphereContact::solve_frictionless(const std::vector<Point>
     scale = std::max(scale, std::abs(q(i)));
     for (int j = 0; j < k; ++j) M(i, j) = W(3 * i, 3 * j);
   }
-  const NormalContactSolution s = solve_normal_contact(M, q, kGapTolerance * scale, kMaxActiveSets);
+  const contact::NormalContactSolution s = contact::solve_normal_contact(M, q, kGapTolerance * scale, kMaxActiveSets);
   ++stats_.solves;
   stats_.sweeps += s.active_sets;
   if (!s.converged) ++stats_.unconverged;

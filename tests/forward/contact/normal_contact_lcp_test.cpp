@@ -1,12 +1,12 @@
 // The frictionless MST contact problem solved by active sets, against every set tried in turn.
-#include "forward/model/normal_contact_lcp.hpp"
+#include "forward/contact/normal_contact_lcp.hpp"
 
 #include <Eigen/Cholesky>
 #include <gtest/gtest.h>
 
 #include <random>
 
-namespace spifit::model {
+namespace spifit::contact {
 namespace {
 
 // The complementarity conditions: P >= 0, w = M P + q >= -tol, P_i w_i ~ 0.
@@ -84,4 +84,4 @@ TEST(NormalContactLcp, PointsOnSupportedNodesGetNoForce) {
 }
 
 }  // namespace
-}  // namespace spifit::model
+}  // namespace spifit::contact

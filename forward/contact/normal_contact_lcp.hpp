@@ -10,7 +10,7 @@
 // frictional problem, crawl where points lie close together and M is nearly singular.
 #include <Eigen/Core>
 
-namespace spifit::model {
+namespace spifit::contact {
 
 struct NormalContactSolution {
   Eigen::VectorXd force;     // P >= 0, one per point
@@ -22,4 +22,4 @@ struct NormalContactSolution {
 // on the gaps [mm]. Deterministic.
 NormalContactSolution solve_normal_contact(const Eigen::MatrixXd& M, const Eigen::VectorXd& q, double tolerance, int max_sets);
 
-}  // namespace spifit::model
+}  // namespace spifit::contact

@@ -1,10 +1,10 @@
-#include "forward/model/normal_contact_lcp.hpp"
+#include "forward/contact/normal_contact_lcp.hpp"
 
 #include <Eigen/Cholesky>
 
 #include <vector>
 
-namespace spifit::model {
+namespace spifit::contact {
 namespace {
 
 // The forces that close the gaps of the active points exactly, the others at zero.
@@ -73,4 +73,4 @@ NormalContactSolution solve_normal_contact(const Eigen::MatrixXd& M, const Eigen
   return s;
 }
 
-}  // namespace spifit::model
+}  // namespace spifit::contact
