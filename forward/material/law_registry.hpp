@@ -4,9 +4,12 @@
 // Coefficient { ..., count }`; a card names a law by its index in the list.
 #include <cstddef>
 #include <initializer_list>
+#include <stdexcept>
+#include <string>
 #include <tuple>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace spifit::material {
 
@@ -45,6 +48,27 @@ Holder make_law(std::initializer_list<T> coefficients) {
   int i = 0;
   for (const T& c : coefficients) h[i++] = c;
   return h;
+}
+
+// What the registries' info lists share (HardeningLawInfo, KinematicLawInfo, YieldFunctionInfo,
+// each with `name`): the entry of an index, throwing std::out_of_range "no <what> with index N";
+// the entry of a card-table name (null if none); "[a], [b] or [c]".
+template <typename Info>
+const Info& law_info_at(const std::vector<Info>& laws, int id, const char* what) {
+  if (id < 0 || id >= static_cast<int>(laws.size())) throw std::out_of_range(std::string("no ") + what + " with index " + std::to_string(id));
+  return laws[static_cast<std::size_t>(id)];
+}
+template <typename Info>
+const Info* find_law_info(const std::vector<Info>& laws, const std::string& name) {
+  for (const auto& l : laws)
+    if (l.name == name) return &l;
+  return nullptr;
+}
+template <typename Info>
+std::string law_table_list(const std::vector<Info>& laws) {
+  std::string s;
+  for (std::size_t i = 0; i < laws.size(); ++i) s += (i == 0 ? "" : i + 1 == laws.size() ? " or " : ", ") + ("[" + laws[i].name + "]");
+  return s;
 }
 
 }  // namespace spifit::material

@@ -1,7 +1,5 @@
 #include "forward/material/hardening/hardening_laws.hpp"
 
-#include <stdexcept>
-
 namespace spifit::material {
 const std::vector<HardeningLawInfo>& hardening_laws() {
   static const std::vector<HardeningLawInfo> laws = [] {
@@ -15,24 +13,11 @@ const std::vector<HardeningLawInfo>& hardening_laws() {
   return laws;
 }
 
-const HardeningLawInfo& hardening_law(int id) {
-  if (id < 0 || id >= kHardeningLawCount) throw std::out_of_range("no hardening law with index " + std::to_string(id));
-  return hardening_laws()[static_cast<std::size_t>(id)];
-}
+const HardeningLawInfo& hardening_law(int id) { return law_info_at(hardening_laws(), id, "hardening law"); }
 
-const HardeningLawInfo* find_hardening_law(const std::string& name) {
-  for (const auto& l : hardening_laws())
-    if (l.name == name) return &l;
-  return nullptr;
-}
+const HardeningLawInfo* find_hardening_law(const std::string& name) { return find_law_info(hardening_laws(), name); }
 
-std::string hardening_table_list() {
-  std::string s;
-  const auto& laws = hardening_laws();
-  for (std::size_t i = 0; i < laws.size(); ++i)
-    s += (i == 0 ? "" : i + 1 == laws.size() ? " or " : ", ") + ("[" + laws[i].name + "]");
-  return s;
-}
+std::string hardening_table_list() { return law_table_list(hardening_laws()); }
 
 void scale_hardening_strain(Hardening<double>& h, double factor) {
   visit_hardening_law(h.law, [&](auto law) { decltype(law)::scale_strain(h.c.data(), factor); return 0; });

@@ -1,7 +1,5 @@
 #include "forward/material/kinematic/kinematic_laws.hpp"
 
-#include <stdexcept>
-
 namespace spifit::material {
 const std::vector<KinematicLawInfo>& kinematic_laws() {
   static const std::vector<KinematicLawInfo> laws = [] {
@@ -15,10 +13,7 @@ const std::vector<KinematicLawInfo>& kinematic_laws() {
   return laws;
 }
 
-const KinematicLawInfo& kinematic_law(int id) {
-  if (id < 0 || id >= kKinematicLawCount) throw std::out_of_range("no kinematic law with index " + std::to_string(id));
-  return kinematic_laws()[static_cast<std::size_t>(id)];
-}
+const KinematicLawInfo& kinematic_law(int id) { return law_info_at(kinematic_laws(), id, "kinematic law"); }
 
 const KinematicLawInfo* find_kinematic_law(const std::string& name) {
   for (const auto& l : kinematic_laws())
@@ -28,11 +23,6 @@ const KinematicLawInfo* find_kinematic_law(const std::string& name) {
 
 std::string kinematic_law_name(int id) { return id < 0 ? "none" : kinematic_law(id).name; }
 
-std::string kinematic_table_list() {
-  std::string s;
-  const auto& laws = kinematic_laws();
-  for (std::size_t i = 0; i < laws.size(); ++i) s += (i == 0 ? "" : i + 1 == laws.size() ? " or " : ", ") + ("[" + laws[i].name + "]");
-  return s;
-}
+std::string kinematic_table_list() { return law_table_list(kinematic_laws()); }
 
 }  // namespace spifit::material

@@ -3,7 +3,6 @@
 #include "forward/material/stress_space.hpp"
 
 #include <cmath>
-#include <stdexcept>
 
 namespace spifit::material {
 
@@ -19,16 +18,9 @@ const std::vector<YieldFunctionInfo>& yield_functions() {
   return laws;
 }
 
-const YieldFunctionInfo& yield_function(int id) {
-  if (id < 0 || id >= kYieldFunctionCount) throw std::out_of_range("no yield function with index " + std::to_string(id));
-  return yield_functions()[static_cast<std::size_t>(id)];
-}
+const YieldFunctionInfo& yield_function(int id) { return law_info_at(yield_functions(), id, "yield function"); }
 
-const YieldFunctionInfo* find_yield_function(const std::string& name) {
-  for (const auto& l : yield_functions())
-    if (l.name == name) return &l;
-  return nullptr;
-}
+const YieldFunctionInfo* find_yield_function(const std::string& name) { return find_law_info(yield_functions(), name); }
 
 std::string yield_function_title(int id) { return id < 0 ? "Hill 1948" : yield_function(id).title; }
 
