@@ -13,7 +13,8 @@
 // and g, even in sqrt(s), is differentiated in s (by its Taylor series in s where sqrt(s) is
 // below 1e-3 |c|, where the closed-form derivatives lose digits). sigma_eq is homogeneous of
 // degree one, so it is evaluated on xi / max|xi| (no overflow of |X|^8) and scaled back.
-// docs/design/numerics-material.md, "Yld2000-2d", gives the derivatives.
+// docs/design/numerics-material.md, "A non-quadratic yield function: Yld2000-2d", gives the
+// derivatives.
 #include "forward/material/law_coefficient.hpp"
 #include "forward/material/scalar.hpp"
 #include "forward/material/yield/yield_function_coefficients.hpp"
