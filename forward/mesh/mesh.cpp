@@ -11,9 +11,25 @@
 
 namespace spifit::mesh {
 
+const std::array<int, 4>& hex_face_corners(int face) {
+  static const std::array<std::array<int, 4>, 6> corners = {{{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}}};
+  return corners.at(static_cast<std::size_t>(face));
+}
+
+std::vector<int> Mesh::cell_nodes(int e) const {
+  if (cell_type(e) == CellType::quad4) return {quads[e].begin(), quads[e].end()};
+  const Hex& h = hex(e);
+  return {h.begin(), h.end()};
+}
+
 Eigen::Vector3d Mesh::centroid(int e) const {
-  const auto& q = quads[e];
-  return 0.25 * (nodes[q[0]] + nodes[q[1]] + nodes[q[2]] + nodes[q[3]]);
+  if (cell_type(e) == CellType::quad4) {
+    const auto& q = quads[e];
+    return 0.25 * (nodes[q[0]] + nodes[q[1]] + nodes[q[2]] + nodes[q[3]]);
+  }
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int v : hex(e)) c += nodes[v];
+  return c / 8.0;
 }
 
 double Mesh::signed_area(int e) const {
@@ -86,6 +102,9 @@ void merge_coincident_nodes(Mesh& m, double tol) {
   for (auto& q : m.quads) {
     for (int& v : q) v = map[v];
   }
+  for (auto& h : m.hexes) {
+    for (int& v : h) v = map[v];
+  }
   for (auto& [name, set] : m.node_sets) {
     for (int& v : set) v = map[v];
     std::sort(set.begin(), set.end());
@@ -131,12 +150,51 @@ std::string check_constrained_nodes(const Mesh& m) {
   }
   return "";
 }
+
+// A hexahedron's corners with the three neighbours whose edges form a right-handed triple in a
+// well-shaped cell (the unit cube in VTK order).
+constexpr int kHexCornerEdges[8][3] = {{1, 3, 4}, {2, 0, 5}, {3, 1, 6}, {0, 2, 7}, {7, 5, 0}, {4, 6, 1}, {5, 7, 2}, {6, 4, 3}};
+
+std::string check_hexes(const Mesh& m, std::vector<char>* used) {
+  std::ostringstream os;
+  for (int e = static_cast<int>(m.quads.size()); e < m.num_elements(); ++e) {
+    const Hex& h = m.hex(e);
+    for (int v : h) {
+      if (v < 0 || v >= m.num_nodes()) {
+        os << "element " << e << ": node index " << v << " out of range";
+        return os.str();
+      }
+      (*used)[static_cast<std::size_t>(v)] = 1;
+    }
+    if (std::set<int>(h.begin(), h.end()).size() != 8) {
+      os << "element " << e << ": repeated node (degenerate hexahedron)";
+      return os.str();
+    }
+    for (int c = 0; c < 8; ++c) {
+      const Eigen::Vector3d& p = m.nodes[h[c]];
+      Eigen::Matrix3d edges;
+      for (int k = 0; k < 3; ++k) edges.col(k) = m.nodes[h[kHexCornerEdges[c][k]]] - p;
+      if (!(edges.determinant() > 0.0)) {
+        os << "element " << e << ": corner Jacobian " << edges.determinant() << " <= 0 at its corner " << c
+           << " (inverted, collapsed or badly ordered hexahedron)";
+        return os.str();
+      }
+    }
+  }
+  for (const auto& [name, faces] : m.face_sets)
+    for (const CellFace& f : faces)
+      if (f.element < static_cast<int>(m.quads.size()) || f.element >= m.num_elements() || f.face < 0 || f.face > 5) {
+        os << "face set " << name << ": element " << f.element << " face " << f.face << " is not a hexahedron's face";
+        return os.str();
+      }
+  return "";
+}
 }  // namespace
 
 std::string check_mesh(const Mesh& m) {
   std::ostringstream os;
   std::vector<char> used(m.nodes.size(), 0);
-  for (int e = 0; e < m.num_elements(); ++e) {
+  for (int e = 0; e < static_cast<int>(m.quads.size()); ++e) {
     const auto& q = m.quads[e];
     for (int v : q) {
       if (v < 0 || v >= m.num_nodes()) {
@@ -162,6 +220,7 @@ std::string check_mesh(const Mesh& m) {
       }
     }
   }
+  if (std::string hexes = check_hexes(m, &used); !hexes.empty()) return hexes;
   for (int i = 0; i < m.num_nodes(); ++i) {
     if (!used[i]) {
       os << "node " << i << " belongs to no element";

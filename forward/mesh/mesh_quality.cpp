@@ -15,7 +15,7 @@ MeshQuality mesh_quality(const Mesh& m, double thickness) {
   q.nodes = m.num_nodes();
   q.min_edge = std::numeric_limits<double>::infinity();
   q.min_angle_deg = 180.0;
-  for (int e = 0; e < m.num_elements(); ++e) {
+  for (int e = 0; e < static_cast<int>(m.quads.size()); ++e) {
     const auto& quad = m.quads[e];
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     for (int c = 0; c < 4; ++c) {
@@ -37,8 +37,8 @@ MeshQuality mesh_quality(const Mesh& m, double thickness) {
 
 double median_edge_length(const Mesh& m) {
   std::vector<double> edges;
-  edges.reserve(4 * static_cast<std::size_t>(m.num_elements()));
-  for (int e = 0; e < m.num_elements(); ++e)
+  edges.reserve(4 * m.quads.size());
+  for (int e = 0; e < static_cast<int>(m.quads.size()); ++e)
     for (int c = 0; c < 4; ++c) edges.push_back((m.nodes[m.quads[e][(c + 1) % 4]] - m.nodes[m.quads[e][c]]).norm());
   if (edges.empty()) return 0.0;
   const auto mid = edges.begin() + static_cast<std::ptrdiff_t>(edges.size() / 2);

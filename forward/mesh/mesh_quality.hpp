@@ -1,5 +1,6 @@
 #pragma once
-// Element quality of a shell mesh: aspect ratio (longest / shortest edge), smallest interior angle,
+// Element quality of a shell mesh (its quadrilaterals; a solid sheet is judged on the mid-surface
+// mesh it was extruded from): aspect ratio (longest / shortest edge), smallest interior angle,
 // and thickness over the smallest in-plane length t/l (docs/design/numerics-shell.md, "Mesh and setting
 // checks": warn above 1 — the thesis's fine cone mesh reaches 1.7 — refuse beyond about 3).
 #include "forward/mesh/mesh.hpp"

@@ -34,23 +34,28 @@ void append_fields(std::ostringstream& os, const std::vector<VtuField>& fields, 
 std::string vtu_text(const Mesh& m, const VtuFrame& frame) {
   const auto& pts = frame.points.empty() ? m.nodes : frame.points;
   if (pts.size() != m.nodes.size()) throw std::invalid_argument("VTU: point count differs from the mesh");
+  const std::size_t cells = m.quads.size() + m.hexes.size();
   std::ostringstream os;
   os << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-     << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << pts.size() << "\" NumberOfCells=\"" << m.quads.size() << "\">\n";
+     << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << pts.size() << "\" NumberOfCells=\"" << cells << "\">\n";
   os << "      <PointData>\n";
   append_fields(os, frame.point_data, pts.size(), "point");
   os << "      </PointData>\n      <CellData>\n";
-  append_fields(os, frame.cell_data, m.quads.size(), "cell");
+  append_fields(os, frame.cell_data, cells, "cell");
   os << "      </CellData>\n      <Points>\n        <DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">";
   std::vector<double> xyz;
   for (const auto& p : pts) xyz.insert(xyz.end(), {p.x(), p.y(), p.z()});
   append_numbers(os, xyz);
   os << "        </DataArray>\n      </Points>\n      <Cells>\n        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n         ";
   for (const auto& q : m.quads) os << " " << q[0] << " " << q[1] << " " << q[2] << " " << q[3];
+  for (const auto& h : m.hexes)
+    for (int v : h) os << " " << v;
   os << "\n        </DataArray>\n        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n         ";
   for (std::size_t e = 0; e < m.quads.size(); ++e) os << " " << 4 * (e + 1);
+  for (std::size_t e = 0; e < m.hexes.size(); ++e) os << " " << 4 * m.quads.size() + 8 * (e + 1);
   os << "\n        </DataArray>\n        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n         ";
-  for (std::size_t e = 0; e < m.quads.size(); ++e) os << " 9";  // VTK_QUAD
+  for (std::size_t e = 0; e < m.quads.size(); ++e) os << " 9";   // VTK_QUAD
+  for (std::size_t e = 0; e < m.hexes.size(); ++e) os << " 12";  // VTK_HEXAHEDRON
   os << "\n        </DataArray>\n      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n</VTKFile>\n";
   return os.str();
 }

@@ -1,5 +1,5 @@
 #pragma once
-// ParaView output: an unstructured grid of quads in VTK XML (.vtu, ASCII, Float64)
+// ParaView output: an unstructured grid of quads and hexahedra in VTK XML (.vtu, ASCII, Float64)
 // with point and cell data arrays, and a .pvd collection listing the steps with their times.
 // Files are written atomically.
 #include "forward/mesh/mesh.hpp"
