@@ -18,7 +18,7 @@ class BinaryReader;
 
 namespace spifit::model {
 
-class ShellModel;
+class FeModel;
 struct ModelEnergies;
 
 // The configuration of one element that a contribution sees: trial corners x, d (positions and
@@ -45,8 +45,8 @@ class ElementContribution {
   virtual bool add(int e, const ElementConfiguration& c, element::Vec24* rp, element::Mat24* kp) = 0;
   // Committing an increment: before_commit sees the model still at its last committed state
   // (positions, element sections), after_commit sees the new one.
-  virtual void before_commit(const ShellModel& model) = 0;
-  virtual void after_commit(const ShellModel& model) = 0;
+  virtual void before_commit(const FeModel& model) = 0;
+  virtual void after_commit(const FeModel& model) = 0;
   virtual void revert() = 0;
   // The contribution's terms of the energy account (model_energies.hpp) at the committed state.
   virtual void add_energies(ModelEnergies* energies) const = 0;

@@ -1,11 +1,11 @@
 #include "forward/model/model_archive.hpp"
 
 #include "forward/io/binary_archive.hpp"
-#include "forward/model/shell_model.hpp"
+#include "forward/model/fe_model.hpp"
 
 namespace spifit::model {
 
-void save_model_state(io::BinaryWriter& w, const ShellModel& model) {
+void save_model_state(io::BinaryWriter& w, const FeModel& model) {
   w.section("shell_model");
   w.i64(model.num_nodes());
   w.i64(model.num_elements());
@@ -14,7 +14,7 @@ void save_model_state(io::BinaryWriter& w, const ShellModel& model) {
   w.vec3s(model.directors());
   w.f64(model.load_work());
   w.section("elements");
-  for (int e = 0; e < model.num_elements(); ++e) model.element(e).save_state(w);
+  model.family().save_state(w);
   w.section("contributions");
   w.i64(static_cast<std::int64_t>(model.contributions().size()));
   for (const auto& c : model.contributions()) {
@@ -23,7 +23,7 @@ void save_model_state(io::BinaryWriter& w, const ShellModel& model) {
   }
 }
 
-void load_model_state(io::BinaryReader& r, ShellModel* model) {
+void load_model_state(io::BinaryReader& r, FeModel* model) {
   r.section("shell_model");
   r.expect_count("nodes", model->num_nodes());
   r.expect_count("elements", model->num_elements());
@@ -33,7 +33,7 @@ void load_model_state(io::BinaryReader& r, ShellModel* model) {
     throw io::ArchiveError("nodal positions or directors of another model size");
   const double load_work = r.f64();
   r.section("elements");
-  for (int e = 0; e < model->num_elements(); ++e) model->element_state(e).load_state(r);
+  model->family_state().load_state(r);
   r.section("contributions");
   r.expect_count("model contributions", static_cast<std::int64_t>(model->contributions().size()));
   for (const auto& c : model->contributions()) {

@@ -11,10 +11,10 @@ class BinaryReader;
 
 namespace spifit::model {
 
-class ShellModel;
+class FeModel;
 
-void save_model_state(io::BinaryWriter& w, const ShellModel& model);
+void save_model_state(io::BinaryWriter& w, const FeModel& model);
 // io::ArchiveError on any size or layout mismatch (another mesh, other contributions).
-void load_model_state(io::BinaryReader& r, ShellModel* model);
+void load_model_state(io::BinaryReader& r, FeModel* model);
 
 }  // namespace spifit::model

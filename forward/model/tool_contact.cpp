@@ -102,7 +102,7 @@ bool ToolContact::add(int e, const ElementConfiguration& c, element::Vec24* rp, 
   return touched;
 }
 
-void ToolContact::before_commit(const ShellModel& model) {
+void ToolContact::before_commit(const FeModel& model) {
   force_before_.clear();
   for (int i = 0; i < contact_->tools(); ++i) force_before_.push_back(contact_->committed_summary(i).force_on_sheet);
   thickness_before_.clear();
@@ -114,7 +114,7 @@ void ToolContact::before_commit(const ShellModel& model) {
 // points, and their penalty energy changes by about -(normal force) x (change of h/2) without
 // any work (a plane-stress shell has no through-thickness stress to do it): the release is
 // booked separately so that the energy balance closes (ModelEnergies).
-void ToolContact::after_commit(const ShellModel& model) {
+void ToolContact::after_commit(const FeModel& model) {
   contact_->commit();
   const std::vector<double> fn = contact_->element_normal_force();
   for (int e = 0; e < model.num_elements(); ++e) {
@@ -168,7 +168,7 @@ void ToolContact::load_state(io::BinaryReader& r) {
   offset_release_ = r.f64();
 }
 
-ToolContact& attach_tool(ShellModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
+ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
                          double spin_per_load_factor) {
   return model.add_contribution(std::make_unique<ToolContact>(model.mesh(), radius, std::move(path), options, spin_per_load_factor));
 }

@@ -16,6 +16,8 @@
 
 namespace spifit::model {
 
+class ShellModel;
+
 class ToolContact final : public ElementContribution {
  public:
   // Centre of the real tool at load factor lambda.
@@ -56,8 +58,8 @@ class ToolContact final : public ElementContribution {
   std::string name() const override { return "tool_contact"; }
   void begin_increment(double lambda0, double lambda1) override;
   bool add(int e, const ElementConfiguration& c, element::Vec24* rp, element::Mat24* kp) override;
-  void before_commit(const ShellModel& model) override;
-  void after_commit(const ShellModel& model) override;
+  void before_commit(const FeModel& model) override;
+  void after_commit(const FeModel& model) override;
   void revert() override;
   void add_energies(ModelEnergies* energies) const override;
   void add_cell_data(std::vector<mesh::VtuField>* cell_data) const override;
@@ -82,8 +84,8 @@ class ToolContact final : public ElementContribution {
   void place(const Eigen::Vector3d& centre_committed, const Eigen::Vector3d& centre, const Eigen::Vector3d& spin);
 };
 
-// Adds a tool to the model (ShellModel::add_contribution) and returns it.
-ToolContact& attach_tool(ShellModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
+// Adds a tool to the model (FeModel::add_contribution) and returns it.
+ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
                          double spin_per_load_factor = 0.0);
 
 }  // namespace spifit::model

@@ -1,0 +1,70 @@
+#pragma once
+// An element family of the FE model (fe_model.hpp): the elements of one kind over the mesh's
+// cells of one type, with their node layout (6 DOFs per node, displacement and rotation with a
+// director, for a shell; 3, displacement, for a solid), their material states and their
+// evaluation. The model owns the nodal configurations and the bookkeeping the solver needs
+// (committed / iterate / trial), the family everything per element: adding an element family
+// means implementing this interface in the element's folder and registering it, nothing above.
+#include "forward/solver/nonlinear_problem.hpp"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spifit::io {
+class BinaryWriter;
+class BinaryReader;
+}  // namespace spifit::io
+
+namespace spifit::model {
+
+class ElementContribution;
+class NodalRotationFrames;
+
+// What an element sees when it is evaluated: the nodal positions and directors of the trial
+// configuration and of the committed one (the start of the increment; element states are
+// integrated from it), and the model's additive contributions (the tool's contact), which the
+// family evaluates in its own kinematic variables. Directors are meaningful at nodes with
+// rotation DOFs only, and so are the nodal rotation frames (rotation_frames.hpp), in which a
+// family with rotations returns the rotation rows and columns of framed nodes.
+struct ElementInputs {
+  const std::vector<Eigen::Vector3d>& x;
+  const std::vector<Eigen::Vector3d>& d;
+  const std::vector<Eigen::Vector3d>& x0;
+  const std::vector<Eigen::Vector3d>& d0;
+  const std::vector<std::unique_ptr<ElementContribution>>& contributions;
+  const NodalRotationFrames& frames;
+};
+
+class ElementFamily {
+ public:
+  virtual ~ElementFamily() = default;
+  // "shell", "brick": for checkpoints and messages.
+  virtual std::string name() const = 0;
+  // DOFs at each node of the family's elements: 6 (ux uy uz, then rotation increments about x
+  // y z, moving the node's director) or 3 (ux uy uz).
+  virtual int dofs_per_node() const = 0;
+  virtual int num_elements() const = 0;
+  // Nodes of element e in the order of its residual (the mesh cell's order).
+  virtual std::vector<int> element_nodes(int e) const = 0;
+  // Reference directors of every node of the mesh (a family with rotation DOFs), else empty.
+  virtual std::vector<Eigen::Vector3d> reference_directors() const { return {}; }
+  // Residual (internal forces minus the contributions' external ones) and tangent of element e
+  // at the trial configuration, dofs_per_node() values per node in element_nodes(e) order
+  // (rotations about x y z, or in the frames of framed nodes); ke may be null. Called concurrently for distinct e; the element's
+  // trial state is what commit() keeps.
+  virtual solver::ElementEvaluation evaluate(int e, const ElementInputs& in, Eigen::VectorXd* re, Eigen::MatrixXd* ke) = 0;
+  virtual void commit() = 0;  // every element's trial state becomes its committed state
+  virtual void revert() = 0;  // every element's trial state is reset to its committed state
+  // Committed thickness of element e [mm] (the sheet's, through this element).
+  virtual double element_thickness(int e) const = 0;
+  // Remarks on the mesh the family accepted (e.g. t/l above what the shell is good for).
+  virtual const std::vector<std::string>& warnings() const = 0;
+  // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
+  virtual void save_state(io::BinaryWriter& w) const = 0;
+  virtual void load_state(io::BinaryReader& r) = 0;
+};
+
+}  // namespace spifit::model

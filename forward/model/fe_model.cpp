@@ -1,0 +1,172 @@
+#include "forward/model/fe_model.hpp"
+
+#include "forward/element/director.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+namespace spifit::model {
+
+FeModel::FeModel(const mesh::Mesh& mesh, std::unique_ptr<ElementFamily> family) : mesh_(&mesh), family_(std::move(family)) {
+  if (!family_) throw std::invalid_argument("FE model without an element family");
+  const int nn = mesh.num_nodes(), ne = family_->num_elements();
+  // Every node takes the layout of the family's elements.
+  node_dofs_.assign(static_cast<std::size_t>(nn), family_->dofs_per_node());
+  dof_offset_.resize(static_cast<std::size_t>(nn));
+  for (int n = 0; n < nn; ++n) {
+    dof_offset_[static_cast<std::size_t>(n)] = num_dofs_;
+    for (int c = 0; c < node_dofs(n); ++c) dof_node_.push_back(n);
+    num_dofs_ += node_dofs(n);
+  }
+  element_nodes_.resize(static_cast<std::size_t>(ne));
+  element_dofs_.resize(static_cast<std::size_t>(ne));
+  for (int e = 0; e < ne; ++e) {
+    auto& nodes = element_nodes_[static_cast<std::size_t>(e)];
+    nodes = family_->element_nodes(e);
+    auto& dofs = element_dofs_[static_cast<std::size_t>(e)];
+    for (int node : nodes)
+      for (int c = 0; c < node_dofs(node); ++c) dofs.push_back(node_dof(node, c));
+  }
+  d0_ = family_->reference_directors();
+  if (d0_.empty()) d0_.assign(static_cast<std::size_t>(nn), Eigen::Vector3d::Zero());
+  x_ = xi_ = xt_ = mesh.nodes;
+  d_ = di_ = dt_ = d0_;
+  increment_ = increment_trial_ = Eigen::VectorXd::Zero(num_dofs());
+}
+
+void FeModel::add_nodal_load(int dof_index, double amplitude) {
+  if (dof_index < 0 || dof_index >= num_dofs()) throw std::invalid_argument("load on DOF " + std::to_string(dof_index) + " out of range");
+  // The shell carries no moment about its director (the drilling rotation has no stiffness).
+  const int node = dof_node_[static_cast<std::size_t>(dof_index)], comp = dof_index - node_dof(node, 0);
+  if (comp >= 3 && amplitude != 0.0 && std::abs(d0_[static_cast<std::size_t>(node)](comp - 3)) > 1e-8)
+    throw std::invalid_argument("moment about axis " + std::to_string(comp - 3) + " at node " + std::to_string(node) +
+                                " has a component about the shell normal (drilling), which the shell cannot carry");
+  loads_.emplace_back(dof_index, amplitude);
+}
+
+Eigen::VectorXd FeModel::internal_forces() {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
+  Eigen::VectorXd re;
+  for (int e = 0; e < num_elements(); ++e) {
+    const solver::ElementEvaluation ev = evaluate_element(e, &re, nullptr);
+    if (!ev.ok) throw std::runtime_error("internal forces: " + ev.where + ": " + ev.reason);
+    const auto& dofs = element_dofs_[static_cast<std::size_t>(e)];
+    for (std::size_t a = 0; a < dofs.size(); ++a) f(dofs[a]) += re(static_cast<Eigen::Index>(a));
+  }
+  frames_.rotate(dt_, false, &f);  // evaluate_element works in the frames of the trial directors
+  return f;
+}
+
+int FeModel::use_nodal_rotation_frames(solver::DofConstraints* c) {
+  if (c->num_dofs() != num_dofs())
+    throw std::invalid_argument("nodal rotation frames: constraints of " + std::to_string(c->num_dofs()) + " DOFs for a model of " +
+                                std::to_string(num_dofs()));
+  for (int n = 0; n < num_nodes(); ++n)
+    if (node_dofs(n) != 6)
+      throw std::invalid_argument("nodal rotation frames: node " + std::to_string(n) + " of the " + family_->name() + " elements has no rotations");
+  frames_ = NodalRotationFrames(d0_, c);
+  return frames_.count();
+}
+
+std::string FeModel::describe_dof(int dof) const {
+  if (dof < 0 || dof >= num_dofs()) return "DOF " + std::to_string(dof);
+  const int node = dof_node_[static_cast<std::size_t>(dof)], k = dof - node_dof(node, 0);
+  const Eigen::Vector3d& p = x_[static_cast<std::size_t>(node)];
+  char buf[160];
+  if (k >= 3 && has_rotation_frame(node)) {
+    static const char* const axis[3] = {"t1", "t2", "normal"};
+    std::snprintf(buf, sizeof buf, "node %d (%.4g, %.4g, %.4g) rotation %s (nodal frame)", node, p.x(), p.y(), p.z(), axis[k - 3]);
+    return buf;
+  }
+  std::snprintf(buf, sizeof buf, "node %d (%.4g, %.4g, %.4g) %s %c", node, p.x(), p.y(), p.z(), k < 3 ? "displacement" : "rotation",
+                "xyz"[k % 3]);
+  return buf;
+}
+
+void FeModel::begin_increment(double lambda0, double lambda1) {
+  for (auto& c : contributions_) c->begin_increment(lambda0, lambda1);
+}
+
+solver::ElementEvaluation FeModel::evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
+  const ElementInputs in{xt_, dt_, x_, d_, contributions_, frames_};
+  return family_->evaluate(e, in, re, ke);
+}
+
+Eigen::VectorXd FeModel::external_forces(double lambda) const {
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(num_dofs());
+  for (const auto& [i, a] : loads_) f(i) += lambda * a;
+  frames_.rotate(dt_, true, &f);  // moments at framed nodes, as the element forces they balance
+  return f;
+}
+
+void FeModel::set_trial(const Eigen::VectorXd& delta, double alpha) {
+  // Rotations of framed nodes come in the frames of the iterate's directors (those of the
+  // tangent they were solved with).
+  Eigen::VectorXd step = alpha * delta;
+  frames_.rotate(di_, false, &step);
+  for (std::size_t n = 0; n < x_.size(); ++n) {
+    const Eigen::Index o = dof_offset_[n];
+    xt_[n] = xi_[n] + step.segment<3>(o);
+    if (node_dofs_[n] == 6) dt_[n] = element::rotate_by_vector(di_[n], step.segment<3>(o + 3));
+  }
+  increment_trial_ = increment_ + step;
+}
+
+void FeModel::accept_trial() {
+  xi_ = xt_;
+  di_ = dt_;
+  increment_ = increment_trial_;
+}
+
+void FeModel::commit(double lambda) {
+  // External work of the nodal loads over the increment of their DOF (trapezoidal rule).
+  for (const auto& [i, a] : loads_) load_work_ += 0.5 * (lambda_ + lambda) * a * increment_(i);
+  for (auto& c : contributions_) c->before_commit(*this);
+  // The last evaluation was at the accepted iterate: its element trial states are the ones to keep.
+  x_ = xi_;
+  d_ = di_;
+  family_->commit();
+  for (auto& c : contributions_) c->after_commit(*this);
+  increment_.setZero();
+  increment_trial_.setZero();
+  lambda_ = lambda;
+}
+
+void FeModel::revert() {
+  xi_ = xt_ = x_;
+  di_ = dt_ = d_;
+  family_->revert();
+  for (auto& c : contributions_) c->revert();
+  increment_.setZero();
+  increment_trial_.setZero();
+}
+
+Eigen::VectorXd FeModel::increment_from_committed() const {
+  Eigen::VectorXd v = increment_;  // x, y, z
+  frames_.rotate(di_, true, &v);
+  return v;
+}
+
+void FeModel::restore_committed(double lambda, std::vector<Eigen::Vector3d> x, std::vector<Eigen::Vector3d> d, double load_work) {
+  lambda_ = lambda;
+  x_ = std::move(x);
+  d_ = std::move(d);
+  load_work_ = load_work;
+  revert();  // iterate and trial = committed
+}
+
+std::vector<double> FeModel::nodal_thickness() const {
+  std::vector<double> h(x_.size(), 0.0), w(x_.size(), 0.0);
+  for (int e = 0; e < num_elements(); ++e) {
+    const double he = element_thickness(e);
+    for (int i : element_nodes_[static_cast<std::size_t>(e)]) {
+      h[static_cast<std::size_t>(i)] += he;
+      w[static_cast<std::size_t>(i)] += 1.0;
+    }
+  }
+  for (std::size_t i = 0; i < h.size(); ++i) h[i] /= w[i];
+  return h;
+}
+
+}  // namespace spifit::model

@@ -1,0 +1,122 @@
+#pragma once
+// The finite-element model of a sheet, over an element family (element_family.hpp): the mesh,
+// the nodes' DOF layout (6 per node with a director, ux uy uz then rotation increments about x y
+// z, or in the node's frame: use_nodal_rotation_frames; 3 per node without), the nodal
+// configurations (committed / iterate / trial) the Newton solver moves, concentrated loads, and
+// additive contributions (the tool's contact, tool_contact.hpp) that the family evaluates with its
+// elements. What is particular to one family stays in the family: ShellModel (shell_model.hpp) is
+// this model over the ShellQ4 family with the shell's accessors. Energy account, lumped mass,
+// VTU frames and checkpoints are free functions of their own files.
+#include "forward/mesh/mesh.hpp"
+#include "forward/model/element_contribution.hpp"
+#include "forward/model/element_family.hpp"
+#include "forward/model/rotation_frames.hpp"
+#include "forward/solver/dof_constraints.hpp"
+#include "forward/solver/nonlinear_problem.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace spifit::model {
+
+class FeModel : public solver::NonlinearProblem {
+ public:
+  // The model of the mesh's cells with the family's elements; the family refers to the mesh,
+  // which must outlive the model.
+  FeModel(const mesh::Mesh& mesh, std::unique_ptr<ElementFamily> family);
+
+  // DOF `component` (0-2 displacement, 3-5 rotation) of a node.
+  int node_dof(int node, int component) const { return dof_offset_[static_cast<std::size_t>(node)] + component; }
+  // DOFs of a node: 6 (with a director) or 3.
+  int node_dofs(int node) const { return node_dofs_[static_cast<std::size_t>(node)]; }
+  // "node N (x, y, z) displacement|rotation x|y|z" at the committed configuration ("rotation
+  // t1|t2|normal (nodal frame)" at a node with a rotation frame).
+  std::string describe_dof(int dof) const override;
+
+  // Five unknowns per node (rotation_frames.hpp): frames at every node whose three rotations
+  // are free in c, whose drilling DOF is prescribed to zero in c. The Newton iterates are those
+  // of the six-DOF model up to round-off. Full DOF vectors the solver exchanges with the model
+  // (residuals, corrections, increment_from_committed, external_forces) carry those nodes'
+  // rotation parts in their frames; internal_forces() and all committed results stay in x, y,
+  // z. Call before c.finalize() and the first solve. Returns the number of nodes with a frame.
+  // std::invalid_argument on a model with nodes without rotations.
+  int use_nodal_rotation_frames(solver::DofConstraints* c);
+  bool has_rotation_frame(int node) const { return frames_.framed(node); }
+  // Columns t1, t2, d of the rotation frame of a framed node with director d (tests).
+  Eigen::Matrix3d rotation_frame(int node, const Eigen::Vector3d& d) const { return frames_.frame(node, d); }
+  const mesh::Mesh& mesh() const { return *mesh_; }
+  int num_nodes() const { return mesh_->num_nodes(); }
+  int num_elements() const { return family_->num_elements(); }
+  const ElementFamily& family() const { return *family_; }
+
+  // f_ext(lambda) += lambda x amplitude on this DOF (forces N, moments N mm).
+  void add_nodal_load(int dof, double amplitude);
+  // Internal forces at the current iterate (full vector): reactions at supported DOFs.
+  Eigen::VectorXd internal_forces();
+
+  // Adds a contribution (summed after the element's own forces, in the order added) and
+  // returns it. Add before the first increment.
+  template <typename C>
+  C& add_contribution(std::unique_ptr<C> c) {
+    C& ref = *c;
+    contributions_.push_back(std::move(c));
+    return ref;
+  }
+  const std::vector<std::unique_ptr<ElementContribution>>& contributions() const { return contributions_; }
+
+  // NonlinearProblem
+  void begin_increment(double lambda0, double lambda1) override;
+  int num_dofs() const override { return num_dofs_; }
+  const std::vector<std::vector<int>>& element_dofs() const override { return element_dofs_; }
+  solver::ElementEvaluation evaluate_element(int e, Eigen::VectorXd* re, Eigen::MatrixXd* ke) override;
+  Eigen::VectorXd external_forces(double lambda) const override;
+  void set_trial(const Eigen::VectorXd& delta, double alpha) override;
+  void accept_trial() override;
+  void commit(double lambda) override;
+  void revert() override;
+  Eigen::VectorXd increment_from_committed() const override;
+
+  // Committed results. Directors are those of nodes with rotations (zero at the others).
+  Eigen::Vector3d displacement(int node) const { return x_[static_cast<std::size_t>(node)] - mesh_->nodes[static_cast<std::size_t>(node)]; }
+  const Eigen::Vector3d& position(int node) const { return x_[static_cast<std::size_t>(node)]; }
+  const Eigen::Vector3d& director(int node) const { return d_[static_cast<std::size_t>(node)]; }
+  const std::vector<Eigen::Vector3d>& positions() const { return x_; }
+  const std::vector<Eigen::Vector3d>& directors() const { return d_; }
+  const Eigen::Vector3d& reference_director(int node) const { return d0_[static_cast<std::size_t>(node)]; }
+  double load_factor() const { return lambda_; }
+  // Committed thickness of element e (the family's) and of each node (mean of its elements).
+  double element_thickness(int e) const { return family_->element_thickness(e); }
+  std::vector<double> nodal_thickness() const;
+  double load_work() const { return load_work_; }  // work of the nodal loads so far [N mm]
+  const std::vector<std::string>& warnings() const { return family_->warnings(); }
+  // Nodes of element e, in the order of its DOFs.
+  const std::vector<int>& element_nodes(int e) const { return element_nodes_[static_cast<std::size_t>(e)]; }
+
+  // Checkpoints (model_archive.hpp): the committed state is replaced and the iterate and trial
+  // configurations reset to it. Sizes are the caller's to check.
+  ElementFamily& family_state() { return *family_; }
+  void restore_committed(double lambda, std::vector<Eigen::Vector3d> x, std::vector<Eigen::Vector3d> d, double load_work);
+
+ protected:
+  std::vector<std::pair<int, double>>& loads() { return loads_; }
+
+ private:
+  const mesh::Mesh* mesh_;
+  std::unique_ptr<ElementFamily> family_;
+  std::vector<int> node_dofs_, dof_offset_, dof_node_;
+  int num_dofs_ = 0;
+  std::vector<std::vector<int>> element_nodes_, element_dofs_;
+  std::vector<Eigen::Vector3d> d0_;
+  std::vector<Eigen::Vector3d> x_, d_;            // committed
+  std::vector<Eigen::Vector3d> xi_, di_;          // iterate
+  std::vector<Eigen::Vector3d> xt_, dt_;          // trial
+  Eigen::VectorXd increment_, increment_trial_;   // sum of accepted corrections in this increment
+  std::vector<std::pair<int, double>> loads_;
+  double lambda_ = 0.0;
+  double load_work_ = 0.0;                        // committed work of the nodal loads [N mm]
+  std::vector<std::unique_ptr<ElementContribution>> contributions_;
+  NodalRotationFrames frames_;
+};
+
+}  // namespace spifit::model

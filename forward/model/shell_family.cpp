@@ -1,0 +1,200 @@
+#include "forward/model/shell_family.hpp"
+
+#include "forward/element/director.hpp"
+#include "forward/element/director_dofs.hpp"
+#include "forward/model/element_contribution.hpp"
+#include "forward/model/rotation_frames.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace spifit::model {
+
+namespace {
+// The axis a = (a_r, a_theta, a_z) read in the polar frame (e_r, e_theta, z) at the centroid of
+// the corners X (ShellModelOptions::material_axes = polar); a itself at a centroid on the z axis.
+Eigen::Vector3d polar_axis(const element::NodeVectors& X, const Eigen::Vector3d& a) {
+  const Eigen::Vector3d c = 0.25 * (X[0] + X[1] + X[2] + X[3]);
+  const double r = std::hypot(c.x(), c.y());
+  if (!(r > 1e-12 * (1.0 + c.norm()))) return a;
+  const Eigen::Vector3d er(c.x() / r, c.y() / r, 0.0), et(-er.y(), er.x(), 0.0);
+  return a.x() * er + a.y() * et + a.z() * Eigen::Vector3d::UnitZ();
+}
+}  // namespace
+
+void corner_vectors(const mesh::Quad& q, const std::vector<Eigen::Vector3d>& xs, const std::vector<Eigen::Vector3d>& ds,
+                    element::NodeVectors* x, element::NodeVectors* d) {
+  for (std::size_t i = 0; i < 4; ++i) {
+    (*x)[i] = xs[static_cast<std::size_t>(q[i])];
+    (*d)[i] = ds[static_cast<std::size_t>(q[i])];
+  }
+}
+
+bool material_axes_from_string(const std::string& s, ShellModelOptions::MaterialAxes* axes) {
+  if (s == "fixed") { *axes = ShellModelOptions::MaterialAxes::fixed; return true; }
+  if (s == "polar") { *axes = ShellModelOptions::MaterialAxes::polar; return true; }
+  return false;
+}
+
+const char* to_string(ShellModelOptions::MaterialAxes axes) { return axes == ShellModelOptions::MaterialAxes::polar ? "polar" : "fixed"; }
+
+ShellFamily::ShellFamily(const mesh::Mesh& mesh, double thickness, const material::MaterialParams<double>& material,
+                         const ShellModelOptions& options)
+    : mesh_(&mesh), options_(options), law_(material), rule_(element::make_thickness_rule(options.shell.thickness_rule, options.shell.thickness_points)),
+      thickness_(thickness) {
+  if (!(thickness > 0.0)) throw std::invalid_argument("thickness must be > 0, got " + std::to_string(thickness));
+  if (!mesh.hexes.empty()) throw std::invalid_argument("the shell needs a mesh of quadrilaterals; this one has " + std::to_string(mesh.hexes.size()) + " hexahedra");
+  check_geometry(mesh, thickness);
+  build_directors_and_elements(mesh, thickness);
+}
+
+// Node references in range, and the thickness over the shortest edge of each element against
+// the limits of the options.
+void ShellFamily::check_geometry(const mesh::Mesh& mesh, double thickness) {
+  const int nn = mesh.num_nodes(), ne = mesh.num_elements();
+  if (ne == 0) throw std::invalid_argument("the mesh has no element");
+  for (int e = 0; e < ne; ++e)
+    for (int i : mesh.quads[static_cast<std::size_t>(e)])
+      if (i < 0 || i >= nn) throw std::invalid_argument("element " + std::to_string(e) + " refers to node " + std::to_string(i) + " out of range");
+  int worst = -1;
+  for (int e = 0; e < ne; ++e) {
+    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    double shortest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < 4; ++i)
+      shortest = std::min(shortest, (mesh.nodes[static_cast<std::size_t>(q[(i + 1) % 4])] - mesh.nodes[static_cast<std::size_t>(q[i])]).norm());
+    if (!(shortest > 0.0)) throw std::invalid_argument("element " + std::to_string(e) + " has a zero-length edge");
+    if (thickness / shortest > max_t_over_l_) {
+      max_t_over_l_ = thickness / shortest;
+      worst = e;
+    }
+  }
+  char buf[200];
+  if (max_t_over_l_ > options_.max_thickness_over_length) {
+    std::snprintf(buf, sizeof buf, "thickness over element length t/l = %.3g at element %d exceeds %.3g: refine less or use a solid-shell",
+                  max_t_over_l_, worst, options_.max_thickness_over_length);
+    throw std::invalid_argument(buf);
+  }
+  if (max_t_over_l_ > options_.warn_thickness_over_length) {
+    std::snprintf(buf, sizeof buf, "t/l = %.3g at element %d is above %.3g: transverse shear and thickness stress matter there (the thesis's fine cone mesh has 1.7)",
+                  max_t_over_l_, worst, options_.warn_thickness_over_length);
+    warnings_.emplace_back(buf);
+  }
+}
+
+// Nodal directors: normalised sum of the normals of the elements around each node (the
+// diagonal cross product, which weights by area); then the elements.
+void ShellFamily::build_directors_and_elements(const mesh::Mesh& mesh, double thickness) {
+  const int nn = mesh.num_nodes(), ne = mesh.num_elements();
+  d0_.assign(static_cast<std::size_t>(nn), Eigen::Vector3d::Zero());
+  for (int e = 0; e < ne; ++e) {
+    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    const auto& p = mesh.nodes;
+    const Eigen::Vector3d n = (p[static_cast<std::size_t>(q[2])] - p[static_cast<std::size_t>(q[0])])
+                                  .cross(p[static_cast<std::size_t>(q[3])] - p[static_cast<std::size_t>(q[1])]);
+    for (int i : q) d0_[static_cast<std::size_t>(i)] += n;
+  }
+  for (int i = 0; i < nn; ++i) {
+    const double len = d0_[static_cast<std::size_t>(i)].norm();
+    if (!(len > 0.0)) throw std::invalid_argument("node " + std::to_string(i) +
+                                  ": the normals of its elements cancel (no element, degenerate elements or inconsistent orientation)");
+    d0_[static_cast<std::size_t>(i)] /= len;
+  }
+  elements_.reserve(static_cast<std::size_t>(ne));
+  for (int e = 0; e < ne; ++e) {
+    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
+    element::NodeVectors X, D;
+    corner_vectors(q, mesh.nodes, d0_, &X, &D);
+    element::ShellOptions shell = options_.shell;
+    if (options_.material_axes == ShellModelOptions::MaterialAxes::polar) shell.material_axis = polar_axis(X, options_.shell.material_axis);
+    try {
+      elements_.emplace_back(X, D, thickness, law_, rule_, shell);
+    } catch (const std::invalid_argument& err) {
+      throw std::invalid_argument("element " + std::to_string(e) + ": " + err.what());
+    }
+  }
+}
+
+std::vector<int> ShellFamily::element_nodes(int e) const {
+  const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+  return {q.begin(), q.end()};
+}
+
+double ShellFamily::element_thickness(int e) const {
+  const element::ShellQ4& el = elements_[static_cast<std::size_t>(e)];
+  double h = 0.0;
+  for (int p = 0; p < el.points(); ++p) h += el.section(p).thickness();
+  return h / el.points();
+}
+
+solver::ElementEvaluation ShellFamily::evaluate(int e, const ElementInputs& in, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
+  const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+  element::NodeVectors x, d;
+  corner_vectors(q, in.x, in.d, &x, &d);
+  element::Vec24 r;
+  element::Mat24 k;
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].compute(x, d, &r, ke ? &k : nullptr);
+  solver::ElementEvaluation out;
+  if (!s.ok) {
+    out.ok = false;
+    out.reason = s.reason;
+    out.suggested_scale = s.suggested_scale;
+    out.where = "element " + std::to_string(e);
+    if (s.point >= 0) out.where += ", in-plane point " + std::to_string(s.point);
+    if (s.layer >= 0) out.where += ", layer " + std::to_string(s.layer);
+    return out;
+  }
+  if (!in.contributions.empty()) {
+    // The contributions add in the p-variables (positions and directors), turned into nodal
+    // forces and moments once.
+    element::Vec24 rc = element::Vec24::Zero();
+    element::Mat24 kc = element::Mat24::Zero();
+    element::NodeVectors x0, d0;
+    corner_vectors(q, in.x0, in.d0, &x0, &d0);
+    const ElementConfiguration config{x, d, x0, d0, 0.5 * element_thickness(e)};
+    bool touched = false;
+    for (auto& c : in.contributions) touched |= c->add(e, config, &rc, ke ? &kc : nullptr);
+    if (touched) {
+      element::Vec24 ru;
+      element::Mat24 ku;
+      element::director_to_dofs(d, rc, ke ? &kc : nullptr, &ru, ke ? &ku : nullptr);
+      r += ru;
+      if (ke) k += ku;
+    }
+  }
+  if (!in.frames.empty()) {
+    // Rotation rows and columns of framed nodes into their frames at the trial directors.
+    for (int I = 0; I < 4; ++I) {
+      if (!in.frames.framed(q[static_cast<std::size_t>(I)])) continue;
+      const Eigen::Matrix3d f = in.frames.frame(q[static_cast<std::size_t>(I)], d[static_cast<std::size_t>(I)]);
+      const int o = 6 * I + 3;
+      r.segment<3>(o) = (f.transpose() * r.segment<3>(o)).eval();
+      if (ke) {
+        k.middleRows<3>(o) = (f.transpose() * k.middleRows<3>(o)).eval();
+        k.middleCols<3>(o) = (k.middleCols<3>(o) * f).eval();
+      }
+    }
+  }
+  *re = r;
+  if (ke) *ke = k;
+  return out;
+}
+
+void ShellFamily::commit() {
+  for (auto& el : elements_) el.commit();
+}
+
+void ShellFamily::revert() {
+  for (auto& el : elements_) el.revert();
+}
+
+void ShellFamily::save_state(io::BinaryWriter& w) const {
+  for (const auto& el : elements_) el.save_state(w);
+}
+
+void ShellFamily::load_state(io::BinaryReader& r) {
+  for (auto& el : elements_) el.load_state(r);
+}
+
+}  // namespace spifit::model
