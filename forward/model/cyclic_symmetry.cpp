@@ -1,6 +1,6 @@
 #include "forward/model/cyclic_symmetry.hpp"
 
-#include "forward/model/shell_model.hpp"
+#include "forward/model/fe_model.hpp"
 
 #include <Eigen/Geometry>
 
@@ -10,8 +10,9 @@
 
 namespace spifit::model {
 
-void tie_cyclic_edges(const mesh::Mesh& m, const std::string& master_set, const std::string& slave_set, double angle_deg,
+void tie_cyclic_edges(const FeModel& model, const std::string& master_set, const std::string& slave_set, double angle_deg,
                       solver::DofConstraints* c, double tol) {
+  const mesh::Mesh& m = model.mesh();
   const auto find = [&](const std::string& name) -> const std::vector<int>& {
     const auto it = m.node_sets.find(name);
     if (it == m.node_sets.end()) throw std::invalid_argument("cyclic symmetry: no node set \"" + name + "\"");
@@ -31,15 +32,16 @@ void tie_cyclic_edges(const mesh::Mesh& m, const std::string& master_set, const 
     if (partner < 0) throw std::invalid_argument("cyclic symmetry: node " + std::to_string(mi) + " of " + master_set + " has no partner in " + slave_set);
     if (partner == mi) {  // on the axis: the DOFs must equal their own rotation
       if (std::abs(std::remainder(angle_deg, 360.0)) > 1e-12)
-        for (int k : {0, 1, 3, 4}) c->prescribe(ShellModel::dof(mi, k));
+        for (int k : {0, 1, 3, 4})
+          if (k < model.node_dofs(mi)) c->prescribe(model.node_dof(mi, k));
       continue;
     }
-    for (int block = 0; block < 2; ++block)
+    for (int block = 0; block < model.node_dofs(mi) / 3; ++block)
       for (int i = 0; i < 3; ++i) {
         std::vector<std::pair<int, double>> terms;
         for (int j = 0; j < 3; ++j)
-          if (R(i, j) != 0.0 && std::abs(R(i, j)) > 1e-15) terms.emplace_back(ShellModel::dof(mi, 3 * block + j), R(i, j));
-        c->tie(ShellModel::dof(partner, 3 * block + i), std::move(terms));
+          if (R(i, j) != 0.0 && std::abs(R(i, j)) > 1e-15) terms.emplace_back(model.node_dof(mi, 3 * block + j), R(i, j));
+        c->tie(model.node_dof(partner, 3 * block + i), std::move(terms));
       }
   }
 }

@@ -18,9 +18,15 @@ class BinaryWriter;
 class BinaryReader;
 }  // namespace spifit::io
 
+namespace spifit::mesh {
+struct VtuFrame;
+}  // namespace spifit::mesh
+
 namespace spifit::model {
 
 class ElementContribution;
+class FeModel;
+struct ModelEnergies;
 class NodalRotationFrames;
 
 // What an element sees when it is evaluated: the nodal positions and directors of the trial
@@ -62,6 +68,12 @@ class ElementFamily {
   virtual double element_thickness(int e) const = 0;
   // Remarks on the mesh the family accepted (e.g. t/l above what the shell is good for).
   virtual const std::vector<std::string>& warnings() const = 0;
+  // Adds the elements' stored and dissipated energies at the model's committed state
+  // (model_energies.hpp).
+  virtual void add_energies(const FeModel& model, ModelEnergies* energies) const = 0;
+  // The family's point and cell data of the model's committed state for the VTU output, appended
+  // after the model's displacement (model_vtu.hpp).
+  virtual void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const = 0;
   // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;

@@ -25,13 +25,13 @@
 
 namespace spifit::model {
 
-class ShellModel;
+class FeModel;
 
-// Before ShellModel::use_nodal_rotation_frames: ties the hanging nodes' translations.
-void tie_hanging_translations(const mesh::Mesh& mesh, solver::DofConstraints* c);
+// Before FeModel::use_nodal_rotation_frames: ties the hanging nodes' translations.
+void tie_hanging_translations(const FeModel& model, solver::DofConstraints* c);
 // After use_nodal_rotation_frames, before c->finalize(): ties their two frame rotations (x and y
 // rotations for a node without a frame), except next to a master described above. Returns the
-// number of hanging nodes whose rotations were tied.
-int tie_hanging_rotations(const ShellModel& model, solver::DofConstraints* c);
+// number of hanging nodes whose rotations were tied (none in a model without rotations).
+int tie_hanging_rotations(const FeModel& model, solver::DofConstraints* c);
 
 }  // namespace spifit::model

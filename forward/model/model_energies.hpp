@@ -1,5 +1,5 @@
 #pragma once
-// Energy account of the committed state of a shell model [N mm], a check of a static implicit
+// Energy account of the committed state of an FE model [N mm], a check of a static implicit
 // run (no kinetic energy). external_work = the work of the tool (and its copies) on the sheet,
 // the trapezoidal sum over the increments of (f_old + f_new) / 2 . (change of the tool centre),
 // plus the work of the nodal loads; a spinning tool's torque is not counted.
@@ -13,7 +13,7 @@
 // holds up to the trapezoidal rule's error (balance_error; docs/design/cone.md, "Energies").
 namespace spifit::model {
 
-class ShellModel;
+class FeModel;
 
 struct ModelEnergies {
   double external_work = 0.0, elastic = 0.0, plastic = 0.0, transverse_shear = 0.0;
@@ -25,8 +25,9 @@ struct ModelEnergies {
   }
 };
 
-// The account of the committed state: the elements' stored and dissipated energies, the nodal
-// loads' work and each contribution's terms (ElementContribution::add_energies).
-ModelEnergies energy_account(const ShellModel& model);
+// The account of the committed state: the elements' stored and dissipated energies
+// (ElementFamily::add_energies), the nodal loads' work and each contribution's terms
+// (ElementContribution::add_energies).
+ModelEnergies energy_account(const FeModel& model);
 
 }  // namespace spifit::model

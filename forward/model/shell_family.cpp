@@ -2,9 +2,13 @@
 
 #include "forward/element/director.hpp"
 #include "forward/element/director_dofs.hpp"
+#include "forward/mesh/vtu_writer.hpp"
 #include "forward/model/element_contribution.hpp"
+#include "forward/model/fe_model.hpp"
+#include "forward/model/model_energies.hpp"
 #include "forward/model/rotation_frames.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -187,6 +191,47 @@ void ShellFamily::commit() {
 
 void ShellFamily::revert() {
   for (auto& el : elements_) el.revert();
+}
+
+void ShellFamily::add_energies(const FeModel& model, ModelEnergies* out) const {
+  for (int e = 0; e < num_elements(); ++e) {
+    element::NodeVectors x, d;
+    corner_vectors(mesh_->quads[static_cast<std::size_t>(e)], model.positions(), model.directors(), &x, &d);
+    const element::ElementEnergy ee = elements_[static_cast<std::size_t>(e)].energy(x, d);
+    out->elastic += ee.elastic;
+    out->plastic += ee.plastic;
+    out->transverse_shear += ee.transverse_shear;
+  }
+}
+
+void ShellFamily::add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const {
+  mesh::VtuField dir{"director", 3, {}}, h{"thickness", 1, model.nodal_thickness()};
+  for (int n = 0; n < model.num_nodes(); ++n) {
+    const Eigen::Vector3d& dn = model.director(n);
+    dir.values.insert(dir.values.end(), {dn.x(), dn.y(), dn.z()});
+  }
+  frame->point_data.push_back(std::move(dir));
+  frame->point_data.push_back(std::move(h));
+  const int layers = rule_.zeta.empty() ? 0 : static_cast<int>(rule_.zeta.size());
+  mesh::VtuField eq_max{"eqps_max", 1, {}}, s_bot{"stress_bottom", 3, {}}, s_mid{"stress_middle", 3, {}}, s_top{"stress_top", 3, {}};
+  for (const element::ShellQ4& el : elements_) {
+    double pmax = 0.0;
+    Eigen::Vector3d sb = Eigen::Vector3d::Zero(), sm = sb, st = sb;
+    const double share = 1.0 / el.points();
+    for (int p = 0; p < el.points(); ++p) {
+      const auto& sec = el.section(p);
+      for (int l = 0; l < layers; ++l) pmax = std::max(pmax, sec.layer_state(l).eqps);
+      sb += share * sec.layer_state(0).stress;
+      sm += share * sec.layer_state(layers / 2).stress;
+      st += share * sec.layer_state(layers - 1).stress;
+    }
+    eq_max.values.push_back(pmax);
+    for (const auto* v : {&sb, &sm, &st}) {
+      auto& field = v == &sb ? s_bot : v == &sm ? s_mid : s_top;
+      field.values.insert(field.values.end(), {(*v)(0), (*v)(1), (*v)(2)});
+    }
+  }
+  for (auto* f : {&eq_max, &s_bot, &s_mid, &s_top}) frame->cell_data.push_back(std::move(*f));
 }
 
 void ShellFamily::save_state(io::BinaryWriter& w) const {

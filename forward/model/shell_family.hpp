@@ -52,6 +52,12 @@ class ShellFamily final : public ElementFamily {
   // Mean of the element's in-plane points' committed thickness.
   double element_thickness(int e) const override;
   const std::vector<std::string>& warnings() const override { return warnings_; }
+  // Elastic, plastic and transverse-shear energies of the elements.
+  void add_energies(const FeModel& model, ModelEnergies* energies) const override;
+  // Point data: director, thickness (mean of the elements at the node); cell data: the largest
+  // equivalent plastic strain through the element, and the in-plane stresses of the bottom,
+  // middle and top layers (means over the in-plane points).
+  void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const override;
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
 

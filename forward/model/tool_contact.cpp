@@ -2,7 +2,8 @@
 
 #include "forward/io/binary_archive.hpp"
 #include "forward/model/model_energies.hpp"
-#include "forward/model/shell_model.hpp"
+#include "forward/model/fe_model.hpp"
+#include "forward/model/shell_family.hpp"
 
 #include <Eigen/Geometry>
 
@@ -78,11 +79,11 @@ contact::ContactSummary ToolContact::summary() const {
   return out;
 }
 
-double ToolContact::surface_penetration(const ShellModel& model) const {
+double ToolContact::surface_penetration(const FeModel& model) const {
   double deepest = summary().max_penetration;
-  for (int e = 0; e < model.num_elements(); ++e) {
+  for (int e = 0; e < static_cast<int>(model.mesh().quads.size()); ++e) {
     element::NodeVectors x, d;
-    model.committed_corners(e, &x, &d);
+    corner_vectors(model.mesh().quads[static_cast<std::size_t>(e)], model.positions(), model.directors(), &x, &d);
     const double offset = 0.5 * model.element_thickness(e);
     for (const contact::SphereTool& tool : tools_)
       deepest = std::max(deepest, contact::ShellContact::surface_penetration(contact_->options(), x, d, offset, tool));

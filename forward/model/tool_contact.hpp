@@ -16,8 +16,6 @@
 
 namespace spifit::model {
 
-class ShellModel;
-
 class ToolContact final : public ElementContribution {
  public:
   // Centre of the real tool at load factor lambda.
@@ -47,8 +45,9 @@ class ToolContact final : public ElementContribution {
   // Force exerted BY the sheet ON the (real) tool, committed state.
   Eigen::Vector3d force() const { return -summary().force_on_sheet; }
   // Largest penetration of any tool into the committed tool-side surface, sampled over every
-  // element (ShellContact::surface_penetration) and never below the contact points' own.
-  double surface_penetration(const ShellModel& model) const;
+  // shell element (ShellContact::surface_penetration: the mid-surface offset by half the
+  // element's thickness along the directors) and never below the contact points' own.
+  double surface_penetration(const FeModel& model) const;
   double work() const { return work_; }  // the tools' work on the sheet so far [N mm]
   // Passive: the tool moves and its geometry is there (surface_penetration) but it adds no
   // force (the MST contact of an explicit run makes the contact instead).

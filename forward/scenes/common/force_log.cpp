@@ -1,6 +1,6 @@
 #include "forward/scenes/common/force_log.hpp"
 
-#include "forward/model/shell_model.hpp"
+#include "forward/model/fe_model.hpp"
 #include "forward/model/tool_contact.hpp"
 
 namespace spifit::scene {

@@ -5,7 +5,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/io/text_file.hpp"
 #include "forward/model/model_archive.hpp"
-#include "forward/model/shell_model.hpp"
+#include "forward/model/fe_model.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -149,7 +149,7 @@ RunInputs read_run_inputs(const std::string& kind, const std::vector<std::pair<s
 
 std::filesystem::path run_checkpoint_path(const io::OutputDirectory& out) { return out.path() / "checkpoint" / "state.bin"; }
 
-std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::ShellModel& model,
+std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::FeModel& model,
                                  const solver::NewtonState* newton, const CheckpointPart* dynamics, const RunLog& log,
                                  const Observers& observers) {
   io::BinaryWriter w(kKind, kLayout);
@@ -178,7 +178,7 @@ std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs
   return bytes.size();
 }
 
-void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::ShellModel* model, solver::NewtonState* newton,
+void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::FeModel* model, solver::NewtonState* newton,
                          CheckpointPart* dynamics, RunLog* log, const Observers& observers) {
   const std::filesystem::path file = run_checkpoint_path(out);
   std::error_code ec;

@@ -25,7 +25,7 @@ class BinaryReader;
 }  // namespace spifit::io
 
 namespace spifit::model {
-class ShellModel;
+class FeModel;
 }
 
 namespace spifit::scene {
@@ -71,7 +71,7 @@ class CheckpointPart {
 // bytes. The model and the solver state must be at the same committed increment. The scheme's
 // state: the Newton solver's (implicit runs; dynamics null) or the dynamics (explicit runs;
 // newton null).
-std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::ShellModel& model,
+std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, const model::FeModel& model,
                                  const solver::NewtonState* newton, const CheckpointPart* dynamics, const RunLog& log,
                                  const Observers& observers);
 
@@ -81,7 +81,7 @@ std::size_t write_run_checkpoint(const io::OutputDirectory& out, const RunInputs
 // corrupted, written for another kind, scene file, material card or G-code (their contents
 // differ), for a model of another size, by a run of the other scheme, or (dynamics) with other
 // explicit options. The scheme's state goes to newton (implicit runs) or dynamics (explicit).
-void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::ShellModel* model,
+void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs, model::FeModel* model,
                          solver::NewtonState* newton, CheckpointPart* dynamics, RunLog* log, const Observers& observers);
 
 }  // namespace spifit::scene

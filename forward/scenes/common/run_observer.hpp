@@ -16,7 +16,7 @@ class BinaryReader;
 }  // namespace spifit::io
 
 namespace spifit::model {
-class ShellModel;
+class FeModel;
 class ToolContact;
 }  // namespace spifit::model
 
@@ -53,7 +53,7 @@ struct IncrementView {
   double travel = 0.0;       // mm along the tool path
   double time = 0.0;         // s
   double wall_seconds = 0.0; // since the run started (a resumed run: its first part included)
-  const model::ShellModel& model;
+  const model::FeModel& model;
   const model::ToolContact& tool;
   const ProgressSink& progress;
   const DynamicsView* dynamics;  // explicit runs; null for implicit ones
@@ -69,7 +69,7 @@ class RunObserver {
   // Identifies the observer's state in a checkpoint.
   virtual std::string name() const = 0;
   // A fresh run (not a resumed one) starts from the model's initial state.
-  virtual void at_start(const model::ShellModel& model) { (void)model; }
+  virtual void at_start(const model::FeModel& model) { (void)model; }
   virtual void after_increment(const IncrementView& v) = 0;
   // A mark reached by this increment (called after after_increment, mark by mark).
   virtual void at_mark(const Mark& m, const IncrementView& v) {
@@ -77,7 +77,7 @@ class RunObserver {
     (void)v;
   }
   // The run has ended (converged or failed, not stopped), at the given time [s].
-  virtual void at_end(const model::ShellModel& model, double time) {
+  virtual void at_end(const model::FeModel& model, double time) {
     (void)model;
     (void)time;
   }

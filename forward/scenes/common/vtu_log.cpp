@@ -2,7 +2,7 @@
 
 #include "forward/io/binary_archive.hpp"
 #include "forward/model/model_vtu.hpp"
-#include "forward/model/shell_model.hpp"
+#include "forward/model/fe_model.hpp"
 
 #include <filesystem>
 
@@ -18,7 +18,7 @@ void VtuLog::open() {
   pvd_ = std::make_unique<mesh::PvdCollection>(dir, stem_);
 }
 
-void VtuLog::at_start(const model::ShellModel& model) {
+void VtuLog::at_start(const model::FeModel& model) {
   open();
   if (pvd_) pvd_->write_step(0.0, model.mesh(), model::vtu_frame(model));
 }
@@ -28,7 +28,7 @@ void VtuLog::after_increment(const IncrementView& v) {
   if (pvd_ && every_ > 0 && increments_ % every_ == 0) pvd_->write_step(v.time, v.model.mesh(), model::vtu_frame(v.model));
 }
 
-void VtuLog::at_end(const model::ShellModel& model, double time) {
+void VtuLog::at_end(const model::FeModel& model, double time) {
   if (pvd_ && increments_ > 0 && (every_ == 0 || increments_ % every_ != 0)) pvd_->write_step(time, model.mesh(), model::vtu_frame(model));
 }
 

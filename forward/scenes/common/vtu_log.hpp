@@ -17,9 +17,9 @@ class VtuLog : public RunObserver {
   int steps() const { return pvd_ ? pvd_->steps() : 0; }
 
   std::string name() const override { return "vtu_log"; }
-  void at_start(const model::ShellModel& model) override;
+  void at_start(const model::FeModel& model) override;
   void after_increment(const IncrementView& v) override;
-  void at_end(const model::ShellModel& model, double time) override;
+  void at_end(const model::FeModel& model, double time) override;
   void save(io::BinaryWriter& w) const override;
   void restore(io::BinaryReader& r) override;
 

@@ -18,6 +18,10 @@
 
 #include <vector>
 
+namespace spifit::model {
+class ShellModel;
+}  // namespace spifit::model
+
 namespace spifit::scene {
 
 struct ConeScene;

@@ -35,7 +35,7 @@ solver::DofConstraints cone_constraints(const ConeScene& s, model::ShellModel* m
   solver::DofConstraints c(model->num_dofs());
   std::vector<char> slave(static_cast<std::size_t>(m.num_nodes()), 0);
   if (is_pie(s)) {
-    model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", s.pie_angle, &c);
+    model::tie_cyclic_edges(*model, "edge_theta0", "edge_theta1", s.pie_angle, &c);
     for (int n : m.node_sets.at("edge_theta1")) slave[static_cast<std::size_t>(n)] = 1;
     for (int n : m.node_sets.at("axis")) slave[static_cast<std::size_t>(n)] = 0;
   }
@@ -44,7 +44,7 @@ solver::DofConstraints cone_constraints(const ConeScene& s, model::ShellModel* m
     if (slave[static_cast<std::size_t>(n)]) continue;
     for (int k = 0; k < clamped; ++k) c.prescribe(model::ShellModel::dof(n, k));
   }
-  model::tie_hanging_translations(m, &c);
+  model::tie_hanging_translations(*model, &c);
   // Five unknowns at every node away from the ties and the clamp: the drilling rotations
   // leave the factorisation (docs/design/numerics-shell.md, "Nodal rotation frames").
   model->use_nodal_rotation_frames(&c);

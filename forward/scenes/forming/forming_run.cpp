@@ -30,7 +30,7 @@ solver::DofConstraints sheet_constraints(const FormingScene& s, model::ShellMode
     for (int n : mesh.node_sets.at("symmetry_y0"))
       for (int k : {1, 3, 5})
         if (!c.prescribed(model::ShellModel::dof(n, k))) c.prescribe(model::ShellModel::dof(n, k));
-  model::tie_hanging_translations(mesh, &c);
+  model::tie_hanging_translations(model, &c);
   model.use_nodal_rotation_frames(&c);
   model::tie_hanging_rotations(model, &c);
   c.finalize();

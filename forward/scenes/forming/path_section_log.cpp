@@ -1,7 +1,7 @@
 #include "forward/scenes/forming/path_section_log.hpp"
 
 #include "forward/io/binary_archive.hpp"
-#include "forward/model/shell_model.hpp"
+#include "forward/model/fe_model.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -185,7 +185,7 @@ Indent indent(double angle_deg, const std::vector<double>& copies) {
   spifit::model::ToolContact& tool = spifit::model::attach_tool(model, R, [=](double lambda) { return Eigen::Vector3d(kToolAt, 0.0, 0.5 * t + R - depth * lambda); }, co);
   tool.set_copies(copies);
   solver::DofConstraints c(model.num_dofs());
-  if (angle_deg < 360.0) tie_cyclic_edges(m, "edge_theta0", "edge_theta1", angle_deg, &c);
+  if (angle_deg < 360.0) tie_cyclic_edges(model, "edge_theta0", "edge_theta1", angle_deg, &c);
   for (int n : m.node_sets.at("rim"))
     for (int k = 0; k < 6; ++k)
       if (!c.tied(ShellModel::dof(n, k))) c.prescribe(ShellModel::dof(n, k));

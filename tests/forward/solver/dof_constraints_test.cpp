@@ -99,8 +99,8 @@ TEST(DofConstraints, ATiedMasterIsReplacedByItsOwnExpansion) {
 std::pair<double, int> pie_expansion_error(const mesh::Mesh& m) {
   ShellModel model(m, 0.5, aluminium(false), {});
   DofConstraints c(model.num_dofs());
-  model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", 90.0, &c);
-  model::tie_hanging_translations(m, &c);
+  model::tie_cyclic_edges(model, "edge_theta0", "edge_theta1", 90.0, &c);
+  model::tie_hanging_translations(model, &c);
   for (int n : m.node_sets.at("rim")) {
     const Eigen::Vector3d& p = m.nodes[static_cast<std::size_t>(n)];
     if (c.tied(ShellModel::dof(n, 0))) continue;  // the rim node on the second edge follows its partner
@@ -158,8 +158,8 @@ TEST(CyclicSymmetry, HangingNodesNextToAPiesEdgesKeepTheirRotationsInNodalFrames
   const mesh::Mesh m = coarsened_small_pie();
   ShellModel model(m, 0.5, aluminium(false), {});
   DofConstraints c(model.num_dofs());
-  model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", 90.0, &c);
-  model::tie_hanging_translations(m, &c);
+  model::tie_cyclic_edges(model, "edge_theta0", "edge_theta1", 90.0, &c);
+  model::tie_hanging_translations(model, &c);
   model.use_nodal_rotation_frames(&c);
   EXPECT_EQ(model::tie_hanging_rotations(model, &c), 2);
   for (const mesh::ConstrainedNode& h : m.constrained_nodes) {
@@ -181,7 +181,7 @@ std::vector<Eigen::Vector3d> expand_orthotropic(double angle_deg, model::ShellMo
   mo.material_axes = axes;
   ShellModel model(m, 0.5, p, mo);
   DofConstraints c(model.num_dofs());
-  if (angle_deg < 360.0) model::tie_cyclic_edges(m, "edge_theta0", "edge_theta1", angle_deg, &c);
+  if (angle_deg < 360.0) model::tie_cyclic_edges(model, "edge_theta0", "edge_theta1", angle_deg, &c);
   for (int n : m.node_sets.at("rim")) {
     const Eigen::Vector3d& x = m.nodes[static_cast<std::size_t>(n)];
     if (c.tied(ShellModel::dof(n, 0))) continue;
