@@ -3,9 +3,11 @@
 // writes (checkpoints and summary.json aside) by its size and FNV-1a 64-bit fingerprint, which
 // a change of one bit changes, and the summary's values. The numbers must stay the same through
 // a restructuring; a change of results must be explained and the goldens renewed with
-//   SPIFIT_UPDATE_GOLDEN=1 build/tests/scene_tests --gtest_filter='GoldenOutputs.*'
-//   SPIFIT_UPDATE_GOLDEN=1 build/tests/long_tests --gtest_filter='GoldenOutputs.*'
-// (each rewrites the entries of its own scenes).
+//   SPIFIT_UPDATE_GOLDEN=1 ctest --test-dir build -R GoldenOutputs
+// which runs both the short scenes (scene_tests) and the long ones (long_tests, label long; each
+// rewrites the entries of its own scenes), under the tests' environment: run directly, the
+// binaries take other OpenBLAS kernels and write other last bits (tests/CMakeLists.txt,
+// OPENBLAS_CORETYPE).
 #include "forward/io/output_directory.hpp"
 #include "forward/io/text_file.hpp"
 #include "forward/scenes/scene_registry.hpp"
