@@ -146,8 +146,8 @@ double solve_against(const Block& B, const Voigt6Matrix& D, ElementStiffness sti
   if (f.size() == 0) f = Eigen::VectorXd::Zero(3 * n);
   const Eigen::VectorXd uf = Kff.ldlt().solve(f(free) - Kfp * up);
   double err = 0.0;
-  for (std::size_t f = 0; f < free.size(); ++f)
-    err = std::max(err, std::abs(uf(static_cast<Eigen::Index>(f)) - exact(B.nodes[static_cast<std::size_t>(free[f] / 3)])(free[f] % 3)));
+  for (std::size_t i = 0; i < free.size(); ++i)
+    err = std::max(err, std::abs(uf(static_cast<Eigen::Index>(i)) - exact(B.nodes[static_cast<std::size_t>(free[i] / 3)])(free[i] % 3)));
   return err;
 }
 

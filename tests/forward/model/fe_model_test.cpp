@@ -187,7 +187,7 @@ TEST(FeModel, HangingNodesOfASolidSheetFollowALinearField) {
   solver::DofConstraints c(model.num_dofs());
   tie_hanging_translations(model, &c);
   EXPECT_EQ(tie_hanging_rotations(model, &c), 0);
-  for (const std::string& side : {"boundary", "bottom", "top"})
+  for (const char* side : {"boundary", "bottom", "top"})
     for (int n : solid.node_sets.at(side)) {
       if (c.tied(model.node_dof(n, 0)) || c.prescribed(model.node_dof(n, 0))) continue;
       const Eigen::Vector3d u = G * solid.nodes[static_cast<std::size_t>(n)];
