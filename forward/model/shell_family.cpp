@@ -2,6 +2,7 @@
 
 #include "forward/element/director.hpp"
 #include "forward/element/director_dofs.hpp"
+#include "forward/mesh/extruded_sheet.hpp"
 #include "forward/mesh/vtu_writer.hpp"
 #include "forward/model/element_contribution.hpp"
 #include "forward/model/fe_model.hpp"
@@ -90,21 +91,8 @@ void ShellFamily::check_geometry(const mesh::Mesh& mesh, double thickness) {
 // Nodal directors: normalised sum of the normals of the elements around each node (the
 // diagonal cross product, which weights by area); then the elements.
 void ShellFamily::build_directors_and_elements(const mesh::Mesh& mesh, double thickness) {
-  const int nn = mesh.num_nodes(), ne = mesh.num_elements();
-  d0_.assign(static_cast<std::size_t>(nn), Eigen::Vector3d::Zero());
-  for (int e = 0; e < ne; ++e) {
-    const auto& q = mesh.quads[static_cast<std::size_t>(e)];
-    const auto& p = mesh.nodes;
-    const Eigen::Vector3d n = (p[static_cast<std::size_t>(q[2])] - p[static_cast<std::size_t>(q[0])])
-                                  .cross(p[static_cast<std::size_t>(q[3])] - p[static_cast<std::size_t>(q[1])]);
-    for (int i : q) d0_[static_cast<std::size_t>(i)] += n;
-  }
-  for (int i = 0; i < nn; ++i) {
-    const double len = d0_[static_cast<std::size_t>(i)].norm();
-    if (!(len > 0.0)) throw std::invalid_argument("node " + std::to_string(i) +
-                                  ": the normals of its elements cancel (no element, degenerate elements or inconsistent orientation)");
-    d0_[static_cast<std::size_t>(i)] /= len;
-  }
+  const int ne = mesh.num_elements();
+  d0_ = mesh::nodal_normals(mesh);
   elements_.reserve(static_cast<std::size_t>(ne));
   for (int e = 0; e < ne; ++e) {
     const auto& q = mesh.quads[static_cast<std::size_t>(e)];

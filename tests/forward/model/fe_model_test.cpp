@@ -1,7 +1,8 @@
 // The FE model over an element family other than the shell: a linear-elastic 8-node hexahedron
-// (2 x 2 x 2 Gauss points, small strain) written here, on solid sheets extruded from the
+// (2 x 2 x 2 Gauss points, small strain: element::hex_full_stiffness) as a family written here, on solid sheets extruded from the
 // quadrilateral generators. Three DOFs per node, Newton, reactions, energies, VTU, cyclic ties
 // and hanging nodes; each against a homogeneous field the element reproduces exactly.
+#include "forward/element/hex8_stiffness.hpp"
 #include "forward/mesh/disc_mesh.hpp"
 #include "forward/mesh/extruded_sheet.hpp"
 #include "forward/mesh/square_sheet.hpp"
@@ -20,49 +21,16 @@
 namespace spifit::model {
 namespace {
 
-using Mat24 = Eigen::Matrix<double, 24, 24>;
-using Vec24 = Eigen::Matrix<double, 24, 1>;
-
-constexpr double kCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
-
-// Stiffness of a linear-elastic isotropic hexahedron with corners X (2 x 2 x 2 Gauss points).
-Mat24 hex_stiffness(const std::array<Eigen::Vector3d, 8>& X, double E, double nu) {
-  Eigen::Matrix<double, 6, 6> D = Eigen::Matrix<double, 6, 6>::Zero();
-  const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
-  D.topLeftCorner<3, 3>().setConstant(lam);
-  D.topLeftCorner<3, 3>().diagonal().array() += 2 * mu;
-  D.bottomRightCorner<3, 3>().diagonal().setConstant(mu);
-  Mat24 K = Mat24::Zero();
-  const double g = 1.0 / std::sqrt(3.0);
-  for (int p = 0; p < 8; ++p) {
-    const double xi = kCorner[p][0] * g, eta = kCorner[p][1] * g, zeta = kCorner[p][2] * g;
-    Eigen::Matrix<double, 3, 8> dN;  // d N_i / d (xi, eta, zeta)
-    for (int i = 0; i < 8; ++i) {
-      const double a = 1 + kCorner[i][0] * xi, b = 1 + kCorner[i][1] * eta, c = 1 + kCorner[i][2] * zeta;
-      dN.col(i) << kCorner[i][0] * b * c / 8, kCorner[i][1] * a * c / 8, kCorner[i][2] * a * b / 8;
-    }
-    Eigen::Matrix3d J = Eigen::Matrix3d::Zero();  // J(r, c) = d x_c / d xi_r
-    for (int i = 0; i < 8; ++i) J += dN.col(i) * X[static_cast<std::size_t>(i)].transpose();
-    const Eigen::Matrix<double, 3, 8> dx = J.inverse() * dN;
-    Eigen::Matrix<double, 6, 24> B = Eigen::Matrix<double, 6, 24>::Zero();
-    for (int i = 0; i < 8; ++i) {
-      B(0, 3 * i) = dx(0, i); B(1, 3 * i + 1) = dx(1, i); B(2, 3 * i + 2) = dx(2, i);
-      B(3, 3 * i) = dx(1, i); B(3, 3 * i + 1) = dx(0, i);
-      B(4, 3 * i + 1) = dx(2, i); B(4, 3 * i + 2) = dx(1, i);
-      B(5, 3 * i) = dx(2, i); B(5, 3 * i + 2) = dx(0, i);
-    }
-    K += B.transpose() * D * B * J.determinant();
-  }
-  return K;
-}
+using Mat24 = element::HexMatrix;
+using Vec24 = element::HexVector;
 
 class LinearHexFamily final : public ElementFamily {
  public:
   LinearHexFamily(const mesh::Mesh& mesh, double E, double nu) : mesh_(&mesh) {
     for (const mesh::Hex& h : mesh.hexes) {
-      std::array<Eigen::Vector3d, 8> X;
+      element::HexCorners X;
       for (std::size_t i = 0; i < 8; ++i) X[i] = mesh.nodes[static_cast<std::size_t>(h[i])];
-      k_.push_back(hex_stiffness(X, E, nu));
+      k_.push_back(element::hex_full_stiffness(X, element::isotropic_elasticity(E, nu)));
     }
   }
   std::string name() const override { return "linear_hex"; }
