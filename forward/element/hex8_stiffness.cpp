@@ -171,10 +171,14 @@ HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matr
   return Kuu - Kua * Kaa.ldlt().solve(Kua.transpose());
 }
 
+Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
+  const Eigen::Matrix<double, 24, 12> H = hex_hourglass_shapes();
+  return H.transpose() * hex_incompatible_modes_stiffness(X, D) * H;
+}
+
 HexMatrix hex_stabilisation_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
   const Eigen::Matrix<double, 12, 24> G = hex_hourglass_operator(X, hex_uniform_gradient(X));
-  const Eigen::Matrix<double, 24, 12> H = hex_hourglass_shapes();
-  const Eigen::Matrix<double, 12, 12> Kq = H.transpose() * hex_incompatible_modes_stiffness(X, D) * H;
+  const Eigen::Matrix<double, 12, 12> Kq = hex_hourglass_stiffness(X, D);
   return G.transpose() * Kq * G;
 }
 

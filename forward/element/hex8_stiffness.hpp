@@ -55,6 +55,9 @@ HexMatrix hex_full_stiffness(const HexCorners& X, const Voigt6Matrix& D);
 // The incompatible-modes hexahedron: nine modes (1 - xi_k^2) per direction, condensed out, with
 // their gradients taken at the centre and scaled by det J0 / det J (Taylor's correction).
 HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matrix& D);
+// H^T K_im H (12 x 12): the incompatible-modes element's stiffness of unit hourglass amplitudes,
+// in the amplitudes' order of hex_hourglass_operator.
+Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness(const HexCorners& X, const Voigt6Matrix& D);
 // G^T (H^T K_im H) G: the hourglass stabilisation (K_im the incompatible-modes stiffness).
 HexMatrix hex_stabilisation_stiffness(const HexCorners& X, const Voigt6Matrix& D);
 

@@ -1,0 +1,134 @@
+#include "forward/element/brick8.hpp"
+
+#include "forward/io/binary_archive.hpp"
+
+#include <Eigen/LU>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace spifit::element {
+
+using Mat3 = Eigen::Matrix3d;
+using Vec3 = Eigen::Vector3d;
+
+Brick8::Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, double hourglass_scale)
+    : axes_(axes), point_(law) {
+  if (!(std::isfinite(hourglass_scale) && hourglass_scale >= 0.0))
+    throw std::invalid_argument("hourglass scale must be finite and >= 0, got " + std::to_string(hourglass_scale));
+  if (!((axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-10 && axes.determinant() > 0.0))
+    throw std::invalid_argument("material axes of a brick must be orthonormal and right-handed");
+  HexCorners Xm;  // reference corners in the material frame
+  for (std::size_t I = 0; I < 8; ++I) Xm[I] = axes.transpose() * X[I];
+  const HexUniformGradient g = hex_uniform_gradient(Xm);  // throws for a non-positive Jacobian
+  b_ = g.b;
+  volume0_ = g.volume;
+  const Eigen::Matrix<double, 12, 24> G = hex_hourglass_operator(Xm, g);
+  for (int a = 0; a < 4; ++a)
+    for (int I = 0; I < 8; ++I) gamma_(a, I) = G(3 * a, 3 * I);
+  kq_ = hourglass_scale * hex_hourglass_stiffness(Xm, law.elastic_matrix());
+}
+
+Mat3 Brick8::deformation_gradient(const HexCorners& x) const {
+  Mat3 F = Mat3::Zero();
+  for (std::size_t I = 0; I < 8; ++I) F += x[I] * b_.col(static_cast<int>(I)).transpose();
+  return F;
+}
+
+BrickStatus Brick8::evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) {
+  BrickStatus status;
+  const Mat3 F = deformation_gradient(x);
+  const double detF = F.determinant();
+  if (!(detF > 0.0)) {
+    status.ok = false;
+    status.reason = std::isfinite(detF) ? "element turned inside out (det F = " + std::to_string(detF) + ")" : "non-finite positions";
+    status.suggested_scale = 0.25;
+    return status;
+  }
+  const Mat3 C = F.transpose() * F;
+  Voigt6 green;
+  green << 0.5 * (C(0, 0) - 1.0), 0.5 * (C(1, 1) - 1.0), 0.5 * (C(2, 2) - 1.0), C(0, 1), C(0, 2), C(1, 2);
+  Voigt6 S;
+  Voigt6x6 D;
+  const PointStatus ps = point_.update(green, &S, K ? &D : nullptr);
+  if (!ps.ok) {
+    status.ok = false;
+    status.reason = ps.reason;
+    status.suggested_scale = ps.suggested_scale;
+    return status;
+  }
+  thickness_ratio_trial_ = 1.0 / F.inverse().transpose().col(2).norm();
+
+  // Hourglass amplitudes and their pull-back.
+  Eigen::Matrix<double, 3, 8> xs;
+  for (std::size_t I = 0; I < 8; ++I) xs.col(static_cast<int>(I)) = x[I];
+  const Eigen::Matrix<double, 3, 4> q = xs * gamma_.transpose();
+  Eigen::Matrix<double, 12, 1> Q;
+  for (int a = 0; a < 4; ++a) Q.segment<3>(3 * a) = F.transpose() * q.col(a);
+  const Eigen::Matrix<double, 12, 1> gq = kq_ * Q;
+  hourglass_energy_trial_ = 0.5 * Q.dot(gq);
+
+  Mat3 St;
+  St << S(0), S(3), S(4), S(3), S(1), S(5), S(4), S(5), S(2);
+  // B_J (6 x 3): d E (Voigt, engineering shears) / d x_J.
+  Eigen::Matrix<double, 6, 24> B;
+  for (int J = 0; J < 8; ++J) {
+    const Vec3 bj = b_.col(J);
+    auto blk = B.block<6, 3>(0, 3 * J);
+    blk.row(0) = bj(0) * F.col(0).transpose();
+    blk.row(1) = bj(1) * F.col(1).transpose();
+    blk.row(2) = bj(2) * F.col(2).transpose();
+    blk.row(3) = bj(0) * F.col(1).transpose() + bj(1) * F.col(0).transpose();
+    blk.row(4) = bj(0) * F.col(2).transpose() + bj(2) * F.col(0).transpose();
+    blk.row(5) = bj(1) * F.col(2).transpose() + bj(2) * F.col(1).transpose();
+  }
+  // M (12 x 24): d Q / d x, block (a, J) = b_J q_a^T + gamma_aJ F^T.
+  Eigen::Matrix<double, 12, 24> M;
+  for (int a = 0; a < 4; ++a)
+    for (int J = 0; J < 8; ++J)
+      M.block<3, 3>(3 * a, 3 * J) = b_.col(J) * q.col(a).transpose() + gamma_(a, J) * F.transpose();
+
+  if (f) *f = volume0_ * B.transpose() * S + M.transpose() * gq;
+  if (K) {
+    *K = volume0_ * B.transpose() * D * B + M.transpose() * kq_ * M;
+    // Geometric parts: V0 (b_J . S b_K) I from the centre, and
+    // sum_a [gamma_aK (b_J . g_a) + gamma_aJ (b_K . g_a)] I from the pull-back of the amplitudes.
+    const Eigen::Matrix<double, 8, 8> centre = volume0_ * b_.transpose() * St * b_;
+    Eigen::Matrix<double, 8, 4> bg;  // b_J . g_a
+    for (int a = 0; a < 4; ++a) bg.col(a) = b_.transpose() * gq.segment<3>(3 * a);
+    const Eigen::Matrix<double, 8, 8> hg = bg * gamma_;  // (J, K): sum_a (b_J . g_a) gamma_aK
+    for (int J = 0; J < 8; ++J)
+      for (int Kn = 0; Kn < 8; ++Kn) {
+        const double s = centre(J, Kn) + hg(J, Kn) + hg(Kn, J);
+        for (int i = 0; i < 3; ++i) (*K)(3 * J + i, 3 * Kn + i) += s;
+      }
+  }
+  return status;
+}
+
+void Brick8::commit() {
+  point_.commit();
+  hourglass_energy_ = hourglass_energy_trial_;
+  thickness_ratio_ = thickness_ratio_trial_;
+}
+
+void Brick8::revert() {
+  point_.revert();
+  hourglass_energy_trial_ = hourglass_energy_;
+  thickness_ratio_trial_ = thickness_ratio_;
+}
+
+void Brick8::save_state(io::BinaryWriter& w) const {
+  point_.save_state(w);
+  w.f64(hourglass_energy_);
+  w.f64(thickness_ratio_);
+}
+
+void Brick8::load_state(io::BinaryReader& r) {
+  point_.load_state(r);
+  hourglass_energy_ = hourglass_energy_trial_ = r.f64();
+  thickness_ratio_ = thickness_ratio_trial_ = r.f64();
+}
+
+}  // namespace spifit::element

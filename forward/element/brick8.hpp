@@ -1,0 +1,71 @@
+#pragma once
+// The one-point brick at large strain (docs/design/numerics-solid.md, "Large strain"): the
+// thesis's BWD3D kind of element (§3.1.2), 8 nodes, one integration point, physical hourglass
+// stabilisation, any 3D law.
+//
+// Kinematics (Total Lagrangian, reference coordinates in the element's material frame):
+//   F = sum_I x_I b_I^T with b the uniform gradient of the reference shape (hex8_stiffness.hpp),
+//   E = (F^T F - I) / 2 in the material frame, so that the law's axes turn with the material;
+//   the centre's stress comes from a SolidPoint (log strain, 3D return mapping):
+//   f_I = V0 F S b_I.
+// Hourglass: the amplitudes q_a = sum_I gamma_aI x_I of the current positions vanish for every
+// linear field, rigid motions included, and turn with the element; pulled back,
+// Q_a = F^T q_a, they are objective and equal the small-strain amplitudes at F = I. The
+// stabilisation energy W = Q^T K_q Q / 2, with K_q the incompatible-modes stiffness of unit
+// hourglass amplitudes (hex_hourglass_stiffness) for the card's elastic constants times
+// hourglass_scale, is elastic like BWD3D's anti-hourglass terms: Q is bilinear in the positions,
+// so forces and tangent are exact in closed form.
+#include "forward/element/hex8_stiffness.hpp"
+#include "forward/element/solid_point.hpp"
+
+#include <Eigen/Core>
+
+namespace spifit::element {
+
+struct BrickStatus {
+  bool ok = true;
+  std::string reason;
+  double suggested_scale = 1.0;
+};
+
+class Brick8 {
+ public:
+  using Law = SolidPoint::Law;
+
+  // X: reference corners (VTK order); axes: orthonormal material axes as columns (rolling,
+  // transverse, normal) in global coordinates. Throws std::invalid_argument for an element whose
+  // Jacobian is not positive, or a hourglass_scale that is not finite and >= 0.
+  Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, double hourglass_scale);
+
+  // Internal forces (24: ux uy uz per corner) and their tangent at the current corners x; f, K
+  // may be null. The centre's trial state is what commit() keeps.
+  BrickStatus evaluate(const HexCorners& x, HexVector* f, HexMatrix* K);
+  void commit();
+  void revert();
+
+  // F (global current <- material-frame reference) at the corners x.
+  Eigen::Matrix3d deformation_gradient(const HexCorners& x) const;
+  const SolidPoint& point() const { return point_; }
+  const Eigen::Matrix3d& axes() const { return axes_; }
+  double reference_volume() const { return volume0_; }
+  // The element's committed stabilisation energy [N mm].
+  double hourglass_energy() const { return hourglass_energy_; }
+  // Extent along the material normal of the committed state relative to the reference one,
+  // h / h0 = 1 / |F^-T N| (Nanson), N the third material axis.
+  double thickness_ratio() const { return thickness_ratio_; }
+
+  void save_state(io::BinaryWriter& w) const;
+  void load_state(io::BinaryReader& r);
+
+ private:
+  Eigen::Matrix3d axes_;
+  Eigen::Matrix<double, 3, 8> b_;      // uniform gradient over material-frame reference coordinates
+  Eigen::Matrix<double, 4, 8> gamma_;  // hourglass vectors
+  Eigen::Matrix<double, 12, 12> kq_;   // stabilisation stiffness of the amplitudes Q
+  double volume0_ = 0.0;
+  SolidPoint point_;
+  double hourglass_energy_ = 0.0, hourglass_energy_trial_ = 0.0;
+  double thickness_ratio_ = 1.0, thickness_ratio_trial_ = 1.0;
+};
+
+}  // namespace spifit::element

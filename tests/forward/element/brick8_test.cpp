@@ -1,0 +1,180 @@
+#include "forward/element/brick8.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <cmath>
+
+namespace spifit::element {
+namespace {
+
+using Mat3 = Eigen::Matrix3d;
+using Vec3 = Eigen::Vector3d;
+
+material::MaterialParams<double> aa3003() {  // card C.3 + C.4 (Hill 1948 + Swift)
+  material::MaterialParams<double> p;
+  p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;
+  return p;
+}
+
+HexCorners box(double a, double b, double c) {
+  HexCorners X;
+  const double s[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  for (int I = 0; I < 8; ++I) X[static_cast<std::size_t>(I)] = Vec3(a * s[I][0], b * s[I][1], c * s[I][2]);
+  return X;
+}
+
+HexCorners distorted() {
+  HexCorners X = box(2.0, 1.5, 0.6);
+  X[1] += Vec3(0.2, -0.1, 0.05);
+  X[2] += Vec3(-0.15, 0.2, 0.0);
+  X[6] += Vec3(0.1, 0.05, -0.08);
+  X[7] += Vec3(-0.1, 0.1, 0.07);
+  return X;
+}
+
+HexCorners map(const HexCorners& X, const Mat3& F, const Vec3& c = Vec3::Zero()) {
+  HexCorners x;
+  for (std::size_t I = 0; I < 8; ++I) x[I] = F * X[I] + c;
+  return x;
+}
+
+Mat3 rotation() { return Eigen::AngleAxisd(0.9, Vec3(0.3, -1.0, 0.6).normalized()).toRotationMatrix(); }
+
+// The uniaxial force on the x = a face of a box stretched homogeneously, against the 3D return
+// mapping fed the same log strain: exact conversion from T to the first Piola-Kirchhoff stress.
+TEST(Brick8, HomogeneousStretchGivesTheMaterialPointsStress) {
+  const SolidPoint::Law law(aa3003());
+  for (int turned = 0; turned < 2; ++turned) {
+    SCOPED_TRACE(turned ? "material axes turned 90 degrees about z" : "material axes global");
+    const Mat3 axes = turned ? Mat3(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())) : Mat3::Identity();
+    const HexCorners X = box(2.0, 1.5, 0.6);
+    Brick8 brick(X, axes, law, 1.0);
+    const double lx = 1.25, ly = 0.93, lz = 0.87;
+    HexVector f;
+    ASSERT_TRUE(brick.evaluate(map(X, Vec3(lx, ly, lz).asDiagonal().toDenseMatrix()), &f, nullptr).ok);
+    // The same strain in the law's axes.
+    material::MaterialState<double, 6> s0, s1;
+    Voigt6 eps = Voigt6::Zero();
+    eps(turned ? 1 : 0) = std::log(lx);
+    eps(turned ? 0 : 1) = std::log(ly);
+    eps(2) = std::log(lz);
+    ASSERT_TRUE(law.integrate(s0, eps, s1, nullptr).ok());
+    ASSERT_GT(s1.eqps, 0.0);
+    const double Txx = s1.stress(turned ? 1 : 0);
+    double fx = 0.0;  // nodes 1, 2, 5, 6 lie on x = 2
+    for (int I : {1, 2, 5, 6}) fx += f(3 * I);
+    EXPECT_NEAR(fx, Txx / lx * 1.5 * 0.6, 1e-11 * std::abs(Txx));
+    double fy = 0.0;  // nodes 2, 3, 6, 7 lie on y = 1.5
+    for (int I : {2, 3, 6, 7}) fy += f(3 * I + 1);
+    EXPECT_NEAR(fy, s1.stress(turned ? 0 : 1) / ly * 2.0 * 0.6, 1e-11 * std::abs(Txx));
+    EXPECT_NEAR(brick.hourglass_energy(), 0.0, 0.0);  // linear field: no hourglass amplitude
+  }
+}
+
+// A rigid motion of a deformed, plastically loaded element leaves its forces turned with it and
+// its stress and hourglass energy unchanged (objectivity).
+TEST(Brick8, RigidRotationTurnsTheForcesAndKeepsTheEnergy) {
+  const SolidPoint::Law law(aa3003());
+  const HexCorners X = distorted();
+  Brick8 brick(X, Mat3::Identity(), law, 1.0);
+  Mat3 F;
+  F << 1.15, 0.08, -0.03, 0.02, 0.95, 0.04, 0.01, -0.05, 0.9;
+  HexCorners x = map(X, F);
+  x[6] += Vec3(0.03, -0.02, 0.04);  // an hourglass component
+  HexVector f1, f2;
+  ASSERT_TRUE(brick.evaluate(x, &f1, nullptr).ok);
+  const double w1 = brick.point().trial().stress.norm();
+  brick.commit();
+  const double e1 = brick.hourglass_energy();
+  ASSERT_GT(e1, 0.0);
+  const Mat3 R = rotation();
+  ASSERT_TRUE(brick.evaluate(map(x, R, Vec3(3.0, -1.0, 2.0)), &f2, nullptr).ok);
+  brick.commit();
+  EXPECT_NEAR(brick.hourglass_energy(), e1, 1e-12 * e1);
+  EXPECT_NEAR(brick.point().committed().stress.norm(), w1, 1e-11 * w1);
+  for (int I = 0; I < 8; ++I)
+    EXPECT_LT((f2.segment<3>(3 * I) - R * f1.segment<3>(3 * I)).norm(), 1e-10 * f1.norm()) << I;
+}
+
+// The exact tangent against central differences of the forces, at a rotated, distorted,
+// plastically loaded state with hourglass amplitudes, for global and turned material axes.
+TEST(Brick8, TangentMatchesCentralDifferences) {
+  const SolidPoint::Law law(aa3003());
+  const HexCorners X = distorted();
+  for (const Mat3& axes : {Mat3(Mat3::Identity()), rotation()}) {
+    Brick8 brick(X, axes, law, 1.0);
+    Mat3 F;
+    F << 1.2, 0.1, -0.05, 0.03, 0.9, 0.06, -0.02, 0.04, 0.85;
+    HexCorners x = map(X, rotation() * F);
+    x[2] += Vec3(0.05, 0.02, -0.03);
+    x[4] += Vec3(-0.02, 0.04, 0.03);
+    HexVector f;
+    HexMatrix K;
+    ASSERT_TRUE(brick.evaluate(x, &f, &K).ok);
+    ASSERT_GT(brick.point().trial().eqps, 0.01);
+    const double h = 1e-7;
+    double worst = 0.0;
+    for (int j = 0; j < 24; ++j) {
+      HexCorners xp = x, xm = x;
+      xp[static_cast<std::size_t>(j / 3)](j % 3) += h;
+      xm[static_cast<std::size_t>(j / 3)](j % 3) -= h;
+      HexVector fp, fm;
+      ASSERT_TRUE(brick.evaluate(xp, &fp, nullptr).ok);
+      ASSERT_TRUE(brick.evaluate(xm, &fm, nullptr).ok);
+      worst = std::max(worst, ((fp - fm) / (2.0 * h) - K.col(j)).cwiseAbs().maxCoeff());
+    }
+    EXPECT_LT(worst, 1e-6 * K.cwiseAbs().maxCoeff());
+    EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-9 * K.cwiseAbs().maxCoeff());  // associated flow: symmetric
+  }
+}
+
+// Patch test at large strain: a distorted 2 x 2 x 2 patch whose nodes all follow one
+// homogeneous deformation is in equilibrium at its interior node, and the elements' stresses agree.
+TEST(Brick8, LargeStrainPatchInEquilibriumAtTheInteriorNode) {
+  const SolidPoint::Law law(aa3003());
+  Vec3 nodes[27];
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) nodes[9 * k + 3 * j + i] = Vec3(i * 1.0, j * 0.8, k * 0.5);
+  nodes[13] += Vec3(0.17, -0.11, 0.09);  // the interior node, moved
+  Mat3 F;
+  F << 1.3, 0.2, 0.05, -0.1, 0.85, 0.0, 0.04, 0.1, 0.92;
+  F = rotation() * F;
+  Vec3 force = Vec3::Zero();
+  double scale = 0.0;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const int base = 9 * k + 3 * j + i;
+        const int ids[8] = {base, base + 1, base + 4, base + 3, base + 9, base + 10, base + 13, base + 12};
+        HexCorners X;
+        int local = -1;
+        for (int I = 0; I < 8; ++I) {
+          X[static_cast<std::size_t>(I)] = nodes[ids[I]];
+          if (ids[I] == 13) local = I;
+        }
+        Brick8 brick(X, Mat3::Identity(), law, 1.0);
+        HexVector f;
+        ASSERT_TRUE(brick.evaluate(map(X, F), &f, nullptr).ok);
+        force += f.segment<3>(3 * local);
+        scale = std::max(scale, f.cwiseAbs().maxCoeff());
+      }
+  EXPECT_LT(force.norm(), 1e-12 * scale);
+}
+
+TEST(Brick8, RejectsAnInvertedElementAndBadOptions) {
+  const SolidPoint::Law law(aa3003());
+  const HexCorners X = box(1.0, 1.0, 1.0);
+  Brick8 brick(X, Mat3::Identity(), law, 1.0);
+  const BrickStatus s = brick.evaluate(map(X, Vec3(1.0, 1.0, -0.5).asDiagonal().toDenseMatrix()), nullptr, nullptr);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.reason.find("inside out"), std::string::npos) << s.reason;
+  EXPECT_LT(s.suggested_scale, 1.0);
+  EXPECT_THROW(Brick8(X, Mat3::Identity(), law, -1.0), std::invalid_argument);
+  EXPECT_THROW(Brick8(X, 2.0 * Mat3::Identity(), law, 1.0), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace spifit::element
