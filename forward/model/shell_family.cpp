@@ -4,6 +4,7 @@
 #include "forward/element/director_dofs.hpp"
 #include "forward/mesh/extruded_sheet.hpp"
 #include "forward/mesh/vtu_writer.hpp"
+#include "forward/model/material_axes.hpp"
 #include "forward/model/element_contribution.hpp"
 #include "forward/model/fe_model.hpp"
 #include "forward/model/model_energies.hpp"
@@ -16,18 +17,6 @@
 #include <stdexcept>
 
 namespace spifit::model {
-
-namespace {
-// The axis a = (a_r, a_theta, a_z) read in the polar frame (e_r, e_theta, z) at the centroid of
-// the corners X (ShellModelOptions::material_axes = polar); a itself at a centroid on the z axis.
-Eigen::Vector3d polar_axis(const element::NodeVectors& X, const Eigen::Vector3d& a) {
-  const Eigen::Vector3d c = 0.25 * (X[0] + X[1] + X[2] + X[3]);
-  const double r = std::hypot(c.x(), c.y());
-  if (!(r > 1e-12 * (1.0 + c.norm()))) return a;
-  const Eigen::Vector3d er(c.x() / r, c.y() / r, 0.0), et(-er.y(), er.x(), 0.0);
-  return a.x() * er + a.y() * et + a.z() * Eigen::Vector3d::UnitZ();
-}
-}  // namespace
 
 void corner_vectors(const mesh::Quad& q, const std::vector<Eigen::Vector3d>& xs, const std::vector<Eigen::Vector3d>& ds,
                     element::NodeVectors* x, element::NodeVectors* d) {
@@ -99,7 +88,7 @@ void ShellFamily::build_directors_and_elements(const mesh::Mesh& mesh, double th
     element::NodeVectors X, D;
     corner_vectors(q, mesh.nodes, d0_, &X, &D);
     element::ShellOptions shell = options_.shell;
-    if (options_.material_axes == ShellModelOptions::MaterialAxes::polar) shell.material_axis = polar_axis(X, options_.shell.material_axis);
+    if (options_.material_axes == ShellModelOptions::MaterialAxes::polar) shell.material_axis = polar_material_axis(0.25 * (X[0] + X[1] + X[2] + X[3]), options_.shell.material_axis);
     try {
       elements_.emplace_back(X, D, thickness, law_, rule_, shell);
     } catch (const std::invalid_argument& err) {
