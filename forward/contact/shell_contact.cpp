@@ -197,6 +197,7 @@ std::string ShellContact::penetration_warning(double depth, double thickness, do
 ShellContact::ShellContact(const mesh::Mesh& mesh, const ContactOptions& options, int tools)
     : options_(options), mesh_(&mesh), tools_(tools) {
   if (tools < 1) throw std::invalid_argument("contact: the number of tools must be >= 1");
+  if (!mesh.hexes.empty()) throw std::invalid_argument("contact: the shell contact needs a mesh of quadrilaterals; this one has hexahedra");
   std::vector<double> g, w;
   gauss(options.points, &g, &w);
   const int n = options.points;

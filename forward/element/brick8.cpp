@@ -19,15 +19,24 @@ Brick8::Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law,
     throw std::invalid_argument("hourglass scale must be finite and >= 0, got " + std::to_string(hourglass_scale));
   if (!((axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-10 && axes.determinant() > 0.0))
     throw std::invalid_argument("material axes of a brick must be orthonormal and right-handed");
-  HexCorners Xm;  // reference corners in the material frame
+  HexCorners& Xm = reference_;
   for (std::size_t I = 0; I < 8; ++I) Xm[I] = axes.transpose() * X[I];
+  scale_ = hourglass_scale;
   const HexUniformGradient g = hex_uniform_gradient(Xm);  // throws for a non-positive Jacobian
   b_ = g.b;
   volume0_ = g.volume;
   const Eigen::Matrix<double, 12, 24> G = hex_hourglass_operator(Xm, g);
   for (int a = 0; a < 4; ++a)
     for (int I = 0; I < 8; ++I) gamma_(a, I) = G(3 * a, 3 * I);
-  kq_ = hourglass_scale * hex_hourglass_stiffness(Xm, law.elastic_matrix());
+  kq_elastic_ = kq_ = hourglass_scale * hex_hourglass_stiffness(Xm, law.elastic_matrix());
+}
+
+// K_q for the committed consistent tangent: rebuilt only where that tangent is not the elastic
+// matrix (the elements that flowed in the last increment).
+void Brick8::update_hourglass_stiffness() {
+  const Voigt6x6& D = point_.consistent_tangent();
+  if (D == point_.committed_law_elastic_matrix()) kq_ = kq_elastic_;
+  else kq_ = scale_ * hex_hourglass_stiffness(reference_, D);
 }
 
 Mat3 Brick8::deformation_gradient(const HexCorners& x) const {
@@ -66,8 +75,10 @@ BrickStatus Brick8::evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) {
   const Eigen::Matrix<double, 3, 4> q = xs * gamma_.transpose();
   Eigen::Matrix<double, 12, 1> Q;
   for (int a = 0; a < 4; ++a) Q.segment<3>(3 * a) = F.transpose() * q.col(a);
-  const Eigen::Matrix<double, 12, 1> gq = kq_ * Q;
-  hourglass_energy_trial_ = 0.5 * Q.dot(gq);
+  const Eigen::Matrix<double, 12, 1> gq = g_ + kq_ * (Q - q_);
+  q_trial_ = Q;
+  g_trial_ = gq;
+  hourglass_energy_trial_ = hourglass_energy_ + 0.5 * (g_ + gq).dot(Q - q_);
 
   Mat3 St;
   St << S(0), S(3), S(4), S(3), S(1), S(5), S(4), S(5), S(2);
@@ -111,24 +122,36 @@ void Brick8::commit() {
   point_.commit();
   hourglass_energy_ = hourglass_energy_trial_;
   thickness_ratio_ = thickness_ratio_trial_;
+  q_ = q_trial_;
+  g_ = g_trial_;
+  update_hourglass_stiffness();
 }
 
 void Brick8::revert() {
   point_.revert();
   hourglass_energy_trial_ = hourglass_energy_;
   thickness_ratio_trial_ = thickness_ratio_;
+  q_trial_ = q_;
+  g_trial_ = g_;
 }
 
 void Brick8::save_state(io::BinaryWriter& w) const {
   point_.save_state(w);
   w.f64(hourglass_energy_);
   w.f64(thickness_ratio_);
+  w.vector(q_);
+  w.vector(g_);
 }
 
 void Brick8::load_state(io::BinaryReader& r) {
   point_.load_state(r);
   hourglass_energy_ = hourglass_energy_trial_ = r.f64();
   thickness_ratio_ = thickness_ratio_trial_ = r.f64();
+  const Eigen::VectorXd q = r.vector(), g = r.vector();
+  if (q.size() != 12 || g.size() != 12) throw io::ArchiveError("brick: hourglass amplitudes and forces need 12 components each");
+  q_ = q_trial_ = q;
+  g_ = g_trial_ = g;
+  update_hourglass_stiffness();
 }
 
 }  // namespace spifit::element

@@ -10,11 +10,15 @@
 //   f_I = V0 F S b_I.
 // Hourglass: the amplitudes q_a = sum_I gamma_aI x_I of the current positions vanish for every
 // linear field, rigid motions included, and turn with the element; pulled back,
-// Q_a = F^T q_a, they are objective and equal the small-strain amplitudes at F = I. The
-// stabilisation energy W = Q^T K_q Q / 2, with K_q the incompatible-modes stiffness of unit
-// hourglass amplitudes (hex_hourglass_stiffness) for the card's elastic constants times
-// hourglass_scale, is elastic like BWD3D's anti-hourglass terms: Q is bilinear in the positions,
-// so forces and tangent are exact in closed form.
+// Q_a = F^T q_a, they are objective and equal the small-strain amplitudes at F = I. Q is
+// bilinear in the positions, so forces and tangent are exact in closed form. The hourglass
+// forces g conjugate to Q grow by K_q(D) (Q - Q_n) over an increment, with K_q the
+// incompatible-modes stiffness of unit hourglass amplitudes (hex_hourglass_stiffness) for the
+// centre's consistent tangent D at the start of the increment, times hourglass_scale: elastic
+// while the element is, and as soft as the material once it flows. An elastic stabilisation
+// (D the elastic matrix throughout) resists plastic bending of a layer elastically: a strip
+// bent to 35 times its yield curvature carried 24 (one layer) to 1.7 (eight layers) times its
+// plastic limit moment with it (docs/design/numerics-solid.md).
 #include "forward/element/hex8_stiffness.hpp"
 #include "forward/element/solid_point.hpp"
 
@@ -48,7 +52,7 @@ class Brick8 {
   const SolidPoint& point() const { return point_; }
   const Eigen::Matrix3d& axes() const { return axes_; }
   double reference_volume() const { return volume0_; }
-  // The element's committed stabilisation energy [N mm].
+  // The work of the hourglass forces up to the committed state [N mm] (trapezoidal sum).
   double hourglass_energy() const { return hourglass_energy_; }
   // Extent along the material normal of the committed state relative to the reference one,
   // h / h0 = 1 / |F^-T N| (Nanson), N the third material axis.
@@ -61,8 +65,13 @@ class Brick8 {
   Eigen::Matrix3d axes_;
   Eigen::Matrix<double, 3, 8> b_;      // uniform gradient over material-frame reference coordinates
   Eigen::Matrix<double, 4, 8> gamma_;  // hourglass vectors
-  Eigen::Matrix<double, 12, 12> kq_;   // stabilisation stiffness of the amplitudes Q
+  HexCorners reference_;                // corners in the material frame
+  double scale_ = 1.0;
+  Eigen::Matrix<double, 12, 12> kq_elastic_, kq_;  // K_q of the elastic matrix, of the committed tangent
+  Eigen::Matrix<double, 12, 1> q_ = Eigen::Matrix<double, 12, 1>::Zero(), q_trial_ = Eigen::Matrix<double, 12, 1>::Zero();  // Q
+  Eigen::Matrix<double, 12, 1> g_ = Eigen::Matrix<double, 12, 1>::Zero(), g_trial_ = Eigen::Matrix<double, 12, 1>::Zero();  // hourglass forces
   double volume0_ = 0.0;
+  void update_hourglass_stiffness();
   SolidPoint point_;
   double hourglass_energy_ = 0.0, hourglass_energy_trial_ = 0.0;
   double thickness_ratio_ = 1.0, thickness_ratio_trial_ = 1.0;

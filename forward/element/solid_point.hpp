@@ -40,6 +40,10 @@ class SolidPoint {
   const State& committed() const { return point_.committed(); }
   const State& trial() const { return point_.trial(); }
   const Voigt6& log_strain() const { return eps_; }
+  // The consistent tangent d T / d eps of the committed state (the elastic matrix until the
+  // first plastic increment).
+  const Voigt6x6& consistent_tangent() const { return tangent_; }
+  const Voigt6x6& committed_law_elastic_matrix() const { return point_.law().elastic_matrix(); }
   // Stored elastic energy density T . D_e^-1 T / 2 and plastic work density of the committed
   // state [N mm / mm^3].
   double elastic_energy_density() const;

@@ -55,6 +55,9 @@ class ElementFamily {
   virtual int num_elements() const = 0;
   // Nodes of element e in the order of its residual (the mesh cell's order).
   virtual std::vector<int> element_nodes(int e) const = 0;
+  // Whether the family evaluates the model's contributions (FeModel::add_contribution refuses
+  // them otherwise).
+  virtual bool takes_contributions() const { return true; }
   // Reference directors of every node of the mesh (a family with rotation DOFs), else empty.
   virtual std::vector<Eigen::Vector3d> reference_directors() const { return {}; }
   // Residual (internal forces minus the contributions' external ones) and tangent of element e

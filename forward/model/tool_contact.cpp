@@ -171,6 +171,8 @@ void ToolContact::load_state(io::BinaryReader& r) {
 
 ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
                          double spin_per_load_factor) {
+  if (!model.family().takes_contributions())
+    throw std::invalid_argument("the " + model.family().name() + " elements take no tool_contact yet");
   return model.add_contribution(std::make_unique<ToolContact>(model.mesh(), radius, std::move(path), options, spin_per_load_factor));
 }
 

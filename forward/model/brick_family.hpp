@@ -1,0 +1,72 @@
+#pragma once
+// The one-point brick family (forward/element/brick8.hpp) over a mesh's hexahedra: three DOFs
+// per node, one Brick8 per hexahedron with its material axes (the rolling direction fixed, or
+// read in the polar frame, turned into the plane of the sheet at the element), and the sheet
+// thickness through each element's column of layers. The elements of a solid sheet are those
+// of mesh::extrude_sheet: layer l of mid-surface element q is element l m + q (m elements per
+// layer).
+#include "forward/element/brick8.hpp"
+#include "forward/mesh/mesh.hpp"
+#include "forward/model/element_family.hpp"
+#include "forward/model/shell_family.hpp"
+
+#include <string>
+#include <vector>
+
+namespace spifit::model {
+
+struct BrickOptions {
+  // The rolling direction (material axis 1), projected into each element's sheet plane; the
+  // sheet normal of an element runs from its bottom face (corners 0-3) to its top face (4-7).
+  Eigen::Vector3d material_axis = Eigen::Vector3d::UnitX();
+  ShellModelOptions::MaterialAxes material_axes = ShellModelOptions::MaterialAxes::fixed;
+  // Factor on the incompatible-modes hourglass stiffness (element::Brick8); 1 by default.
+  double hourglass_scale = 1.0;
+  // Elements through the thickness (mesh::extrude_sheet's layers).
+  int layers = 1;
+};
+
+class BrickFamily final : public ElementFamily {
+ public:
+  // Throws std::invalid_argument for a mesh with quadrilaterals or without hexahedra, an
+  // element count that is not a multiple of the layers, an inverted element or a rolling
+  // direction along an element's normal (naming the element). The family must not move: its
+  // elements refer to its law.
+  BrickFamily(const mesh::Mesh& mesh, const material::MaterialParams<double>& material, const BrickOptions& options);
+  BrickFamily(const BrickFamily&) = delete;
+  BrickFamily& operator=(const BrickFamily&) = delete;
+
+  std::string name() const override { return "brick"; }
+  int dofs_per_node() const override { return 3; }
+  int num_elements() const override { return static_cast<int>(elements_.size()); }
+  std::vector<int> element_nodes(int e) const override;
+  // Tool contact on the faces of solid elements is not built yet.
+  bool takes_contributions() const override { return false; }
+  solver::ElementEvaluation evaluate(int e, const ElementInputs& in, Eigen::VectorXd* re, Eigen::MatrixXd* ke) override;
+  void commit() override;
+  void revert() override;
+  // The committed thickness of the sheet through element e: the sum over its column of each
+  // layer's reference height times its thickness ratio (Brick8::thickness_ratio).
+  double element_thickness(int e) const override;
+  const std::vector<std::string>& warnings() const override { return warnings_; }
+  // Elastic (the centre's stored energy and the hourglass stabilisation's) and plastic work.
+  void add_energies(const FeModel& model, ModelEnergies* energies) const override;
+  // Cell data: equivalent plastic strain, sheet thickness, and the Kirchhoff stress along the
+  // three material axes.
+  void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const override;
+  void save_state(io::BinaryWriter& w) const override;
+  void load_state(io::BinaryReader& r) override;
+
+  const element::Brick8& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
+  int layers() const { return layers_; }
+
+ private:
+  const mesh::Mesh* mesh_;
+  element::Brick8::Law law_;
+  int layers_;
+  std::vector<element::Brick8> elements_;
+  std::vector<double> height0_;  // reference distance between the bottom and top face centroids
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace spifit::model

@@ -1,0 +1,177 @@
+// The brick family on the FE model: a solid sheet pulled far into the plastic range along its
+// rolling direction, checked against what uniaxial stress under Hill 1948 must give; its
+// checkpoint state, and its refusals.
+#include "forward/io/binary_archive.hpp"
+#include "forward/mesh/extruded_sheet.hpp"
+#include "forward/mesh/square_sheet.hpp"
+#include "forward/model/brick_family.hpp"
+#include "forward/model/fe_model.hpp"
+#include "forward/model/model_energies.hpp"
+#include "forward/model/tool_contact.hpp"
+#include "forward/solver/newton_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace spifit::model {
+namespace {
+
+material::MaterialParams<double> aa3003() {  // card C.3 + C.4 (Hill 1948, G + H = 2, + Swift)
+  material::MaterialParams<double> p;
+  p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;
+  return p;
+}
+
+// A 4 x 2 x 1 mm block in 2 x 2 x 3 bricks, stretched by 25 % along x (the rolling direction)
+// and free to contract: uniaxial stress. Every brick then holds the same state, with
+//  * T_yy = T_zz = 0 (free lateral faces),
+//  * T_xx = the Swift stress at the equivalent plastic strain (sigma_eq = sigma_xx when G + H = 2),
+//  * the plastic width-to-thickness strain ratio r0 = H / G,
+//  * the pull force T_xx / lambda_x over the reference section.
+TEST(BrickFamily, SolidBarPulledAlongTheRollingDirectionIsUniaxialHill) {
+  const mesh::Mesh mid = mesh::square_sheet({4.0, 2.0, 2, 2, false, 1.0, 1.0, 0, {}});
+  const mesh::Mesh solid = mesh::extrude_sheet(mid, 1.0, 3);
+  BrickOptions options;
+  options.layers = 3;
+  auto family = std::make_unique<BrickFamily>(solid, aa3003(), options);
+  const BrickFamily& bricks = *family;
+  FeModel model(solid, std::move(family));
+  solver::DofConstraints c(model.num_dofs());
+  const double stretch = 1.0;  // 25 % of 4 mm
+  for (int n : solid.node_sets.at("edge_xmin")) c.prescribe(model.node_dof(n, 0));
+  for (int n : solid.node_sets.at("edge_xmax")) c.prescribe(model.node_dof(n, 0), stretch);
+  for (int n : solid.node_sets.at("edge_ymin")) c.prescribe(model.node_dof(n, 1));
+  for (int n : solid.node_sets.at("bottom")) c.prescribe(model.node_dof(n, 2));
+  c.finalize();
+  solver::NewtonOptions o;
+  o.initial_increment = o.max_increment = 0.05;
+  solver::NewtonSolver s(model, c, o);
+  const auto result = s.solve();
+  ASSERT_TRUE(result.converged) << result.message;
+  const material::ReturnMapping<double, 6> law(aa3003());
+  const double lx = 1.25;
+  const auto& st = bricks.element(0).point().committed();
+  ASSERT_GT(st.eqps, 0.2);
+  for (int e = 0; e < bricks.num_elements(); ++e) {
+    const auto& se = bricks.element(e).point().committed();
+    EXPECT_LT((se.stress - st.stress).cwiseAbs().maxCoeff(), 1e-8 * st.stress(0)) << e;
+  }
+  EXPECT_LT(std::abs(st.stress(1)) + std::abs(st.stress(2)) + st.stress.tail<3>().cwiseAbs().sum(), 1e-8 * st.stress(0));
+  EXPECT_NEAR(st.stress(0), law.yield_stress(st.eqps), 1e-9 * st.stress(0));
+  EXPECT_NEAR(st.plastic_strain(1) / st.plastic_strain(2), 0.807 / 1.193, 1e-9);
+  EXPECT_NEAR(bricks.element_thickness(0), 1.0 * std::exp(st.plastic_strain(2) + st.stress(0) * 0.0 + (st.stress.dot(Eigen::Matrix<double, 6, 1>::Zero()))) *
+                                               std::exp(bricks.element(0).point().log_strain()(2) - st.plastic_strain(2)),
+              1e-12);
+  const Eigen::VectorXd f = model.internal_forces();
+  double pull = 0.0;
+  for (int n : solid.node_sets.at("edge_xmax")) pull += f(model.node_dof(n, 0));
+  EXPECT_NEAR(pull, st.stress(0) / lx * 2.0 * 1.0, 1e-9 * pull);
+  const ModelEnergies en = energy_account(model);
+  EXPECT_NEAR(en.plastic, st.plastic_work * 8.0, 1e-9 * en.plastic);
+  EXPECT_GT(en.elastic, 0.0);
+  std::printf("uniaxial Hill bar: %d increments, eqps %.4f, T_xx %.3f MPa, r0 %.6f\n", static_cast<int>(result.history.size()), st.eqps, st.stress(0),
+              st.plastic_strain(1) / st.plastic_strain(2));
+}
+
+TEST(BrickFamily, CheckpointStateRoundTripsBitForBit) {
+  const mesh::Mesh mid = mesh::square_sheet({2.0, 2.0, 2, 1, false, 1.0, 1.0, 0, {}});
+  const mesh::Mesh solid = mesh::extrude_sheet(mid, 0.5, 2);
+  BrickOptions options;
+  options.layers = 2;
+  BrickFamily a(solid, aa3003(), options), b(solid, aa3003(), options);
+  std::vector<Eigen::Vector3d> x = solid.nodes;
+  for (auto& p : x) p += Eigen::Vector3d(0.2 * p.x() + 0.05 * p.y() * p.y(), -0.06 * p.y(), 0.03 * p.x() * p.z());
+  const std::vector<Eigen::Vector3d> d;
+  const std::vector<std::unique_ptr<ElementContribution>> none;
+  const NodalRotationFrames frames;
+  const ElementInputs in{x, d, solid.nodes, d, none, frames};
+  Eigen::VectorXd r;
+  for (int e = 0; e < a.num_elements(); ++e) ASSERT_TRUE(a.evaluate(e, in, &r, nullptr).ok);
+  a.commit();
+  io::BinaryWriter w("test", 1);
+  a.save_state(w);
+  const std::string bytes = w.finish();
+  io::BinaryReader rd(bytes, "test", 1);
+  b.load_state(rd);
+  for (int e = 0; e < a.num_elements(); ++e) {
+    EXPECT_EQ(a.element(e).point().committed().stress, b.element(e).point().committed().stress);
+    EXPECT_EQ(a.element(e).hourglass_energy(), b.element(e).hourglass_energy());
+    EXPECT_EQ(a.element_thickness(e), b.element_thickness(e));
+  }
+}
+
+TEST(BrickFamily, RefusesWhatItCannotModel) {
+  const mesh::Mesh mid = mesh::square_sheet({2.0, 2.0, 2, 2, false, 1.0, 1.0, 0, {}});
+  const mesh::Mesh solid = mesh::extrude_sheet(mid, 0.5, 2);
+  auto message = [](auto&& f) {
+    try {
+      f();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([&] { BrickFamily(mid, aa3003(), {}); }).find("needs a mesh of hexahedra"), std::string::npos);
+  BrickOptions zero;
+  zero.layers = 0;
+  EXPECT_NE(message([&] { BrickFamily(solid, aa3003(), zero); }).find("at least one layer, got 0"), std::string::npos);
+  BrickOptions three;
+  three.layers = 3;
+  EXPECT_NE(message([&] { BrickFamily(solid, aa3003(), three); }).find("are not 3 equal layers"), std::string::npos);
+  BrickOptions normal;
+  normal.material_axis = Eigen::Vector3d::UnitZ();
+  EXPECT_NE(message([&] { BrickFamily(solid, aa3003(), normal); }).find("rolling direction lies along the sheet normal"), std::string::npos);
+  BrickOptions two;
+  two.layers = 2;
+  FeModel model(solid, std::make_unique<BrickFamily>(solid, aa3003(), two));
+  EXPECT_NE(message([&] { attach_tool(model, 5.0, [](double) { return Eigen::Vector3d(0.0, 0.0, 6.0); }, {}); })
+                .find("the brick elements take no tool_contact yet"),
+            std::string::npos);
+}
+
+
+// A plane-strain strip (10 x 1 x 1 mm, ten elements along, y held) of an elastic-perfectly
+// plastic von Mises material bent to 35 times its yield curvature by turning one end face
+// (u_x = -theta z): the centre points of an even number of layers alone carry exactly the
+// plastic limit moment M_p = (2 / sqrt 3) sigma_y b h^2 / 4, and the hourglass forces can only
+// add to it; more layers leave less to the stabilisation. Printed: M / M_p per layer count
+// (docs/design/numerics-solid.md, "Plastic bending").
+TEST(BrickFamily, PlasticBendingMomentApproachesTheLimitMomentWithLayers) {
+  material::MaterialParams<double> p;
+  p.E = 70000.0; p.nu = 0.3; p.hardening[material::SwiftHardening::K] = 10.0; p.hardening[material::SwiftHardening::n] = 0.0;
+  p.F = p.G = p.H = 1.0; p.L = p.M = p.N = 3.0;
+  const double Mp = 2.0 / std::sqrt(3.0) * 10.0 / 4.0;
+  double previous = 0.0;
+  for (int layers : {1, 2, 4, 8}) {
+    const mesh::Mesh mid = mesh::square_sheet({10.0, 1.0, 10, 1, false, 1.0, 1.0, 0, {}});
+    const mesh::Mesh solid = mesh::extrude_sheet(mid, 1.0, layers);
+    BrickOptions options;
+    options.layers = layers;
+    FeModel model(solid, std::make_unique<BrickFamily>(solid, p, options));
+    solver::DofConstraints c(model.num_dofs());
+    const double theta = 0.1;
+    for (int n = 0; n < solid.num_nodes(); ++n) c.prescribe(model.node_dof(n, 1));
+    for (int n : solid.node_sets.at("edge_xmin")) {
+      c.prescribe(model.node_dof(n, 0));
+      c.prescribe(model.node_dof(n, 2));
+    }
+    for (int n : solid.node_sets.at("edge_xmax")) c.prescribe(model.node_dof(n, 0), -theta * solid.nodes[static_cast<std::size_t>(n)].z());
+    c.finalize();
+    solver::NewtonOptions o;
+    o.initial_increment = o.max_increment = 0.05;
+    solver::NewtonSolver s(model, c, o);
+    const auto result = s.solve();
+    ASSERT_TRUE(result.converged) << layers << " layers: " << result.message;
+    const Eigen::VectorXd f = model.internal_forces();
+    double M = 0.0;
+    for (int n : solid.node_sets.at("edge_xmax")) M -= f(model.node_dof(n, 0)) * solid.nodes[static_cast<std::size_t>(n)].z();
+    std::printf("plastic bending, %d layer(s): M / M_p = %.4f\n", layers, M / Mp);
+    if (layers % 2 == 0) EXPECT_GT(M / Mp, 1.0 - 1e-3) << layers;
+    if (previous > 0.0) EXPECT_LT(M, previous) << layers;
+    previous = M;
+  }
+}
+
+}  // namespace
+}  // namespace spifit::model
