@@ -13,30 +13,29 @@ namespace spifit::element {
 using Mat3 = Eigen::Matrix3d;
 using Vec3 = Eigen::Vector3d;
 
-Brick8::Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, double hourglass_scale)
-    : axes_(axes), point_(law) {
-  if (!(std::isfinite(hourglass_scale) && hourglass_scale >= 0.0))
-    throw std::invalid_argument("hourglass scale must be finite and >= 0, got " + std::to_string(hourglass_scale));
+Brick8::Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const HourglassOptions& hourglass)
+    : axes_(axes), hourglass_(hourglass), point_(law) {
+  if (!(std::isfinite(hourglass.scale) && hourglass.scale >= 0.0))
+    throw std::invalid_argument("hourglass scale must be finite and >= 0, got " + std::to_string(hourglass.scale));
   if (!((axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-10 && axes.determinant() > 0.0))
     throw std::invalid_argument("material axes of a brick must be orthonormal and right-handed");
   HexCorners& Xm = reference_;
   for (std::size_t I = 0; I < 8; ++I) Xm[I] = axes.transpose() * X[I];
-  scale_ = hourglass_scale;
   const HexUniformGradient g = hex_uniform_gradient(Xm);  // throws for a non-positive Jacobian
   b_ = g.b;
   volume0_ = g.volume;
   const Eigen::Matrix<double, 12, 24> G = hex_hourglass_operator(Xm, g);
   for (int a = 0; a < 4; ++a)
     for (int I = 0; I < 8; ++I) gamma_(a, I) = G(3 * a, 3 * I);
-  kq_elastic_ = kq_ = hourglass_scale * hex_hourglass_stiffness(Xm, law.elastic_matrix());
+  kq_elastic_ = kq_ = hourglass.scale * hex_hourglass_stiffness(Xm, law.elastic_matrix());
 }
 
 // K_q for the committed consistent tangent: rebuilt only where that tangent is not the elastic
 // matrix (the elements that flowed in the last increment).
 void Brick8::update_hourglass_stiffness() {
   const Voigt6x6& D = point_.consistent_tangent();
-  if (D == point_.committed_law_elastic_matrix()) kq_ = kq_elastic_;
-  else kq_ = scale_ * hex_hourglass_stiffness(reference_, D);
+  if (hourglass_.elastic || D == point_.committed_law_elastic_matrix()) kq_ = kq_elastic_;
+  else kq_ = hourglass_.scale * hex_hourglass_stiffness(reference_, D);
 }
 
 Mat3 Brick8::deformation_gradient(const HexCorners& x) const {

@@ -14,17 +14,25 @@
 // bilinear in the positions, so forces and tangent are exact in closed form. The hourglass
 // forces g conjugate to Q grow by K_q(D) (Q - Q_n) over an increment, with K_q the
 // incompatible-modes stiffness of unit hourglass amplitudes (hex_hourglass_stiffness) for the
-// centre's consistent tangent D at the start of the increment, times hourglass_scale: elastic
+// centre's consistent tangent D at the start of the increment, times a scale: elastic
 // while the element is, and as soft as the material once it flows. An elastic stabilisation
-// (D the elastic matrix throughout) resists plastic bending of a layer elastically: a strip
-// bent to 35 times its yield curvature carried 24 (one layer) to 1.7 (eight layers) times its
-// plastic limit moment with it (docs/design/numerics-solid.md).
+// (HourglassOptions::elastic) resists plastic bending of a layer elastically: a strip bent to 17
+// times its yield curvature carried 4.1 (two layers) to 1.4 (eight layers) times its plastic
+// limit moment with it, against 1.45 to 1.04 on the tangent (docs/design/numerics-solid.md).
 #include "forward/element/hex8_stiffness.hpp"
 #include "forward/element/solid_point.hpp"
 
 #include <Eigen/Core>
 
 namespace spifit::element {
+
+// The hourglass stabilisation: the factor on the incompatible-modes stiffness, and the modulus it
+// is built on (the centre's consistent tangent, or the elastic matrix throughout, as an
+// elastic anti-hourglass treatment has it).
+struct HourglassOptions {
+  double scale = 1.0;
+  bool elastic = false;
+};
 
 struct BrickStatus {
   bool ok = true;
@@ -38,8 +46,8 @@ class Brick8 {
 
   // X: reference corners (VTK order); axes: orthonormal material axes as columns (rolling,
   // transverse, normal) in global coordinates. Throws std::invalid_argument for an element whose
-  // Jacobian is not positive, or a hourglass_scale that is not finite and >= 0.
-  Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, double hourglass_scale);
+  // Jacobian is not positive, or a hourglass scale that is not finite and >= 0.
+  Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const HourglassOptions& hourglass = {});
 
   // Internal forces (24: ux uy uz per corner) and their tangent at the current corners x; f, K
   // may be null. The centre's trial state is what commit() keeps.
@@ -54,6 +62,10 @@ class Brick8 {
   double reference_volume() const { return volume0_; }
   // The work of the hourglass forces up to the committed state [N mm] (trapezoidal sum).
   double hourglass_energy() const { return hourglass_energy_; }
+  // Committed hourglass amplitudes Q (pulled back, material frame) and the forces g conjugate
+  // to them, in hex_hourglass_operator's order (3 a + i: mode a, component i).
+  const Eigen::Matrix<double, 12, 1>& hourglass_amplitudes() const { return q_; }
+  const Eigen::Matrix<double, 12, 1>& hourglass_forces() const { return g_; }
   // Extent along the material normal of the committed state relative to the reference one,
   // h / h0 = 1 / |F^-T N| (Nanson), N the third material axis.
   double thickness_ratio() const { return thickness_ratio_; }
@@ -66,7 +78,7 @@ class Brick8 {
   Eigen::Matrix<double, 3, 8> b_;      // uniform gradient over material-frame reference coordinates
   Eigen::Matrix<double, 4, 8> gamma_;  // hourglass vectors
   HexCorners reference_;                // corners in the material frame
-  double scale_ = 1.0;
+  HourglassOptions hourglass_;
   Eigen::Matrix<double, 12, 12> kq_elastic_, kq_;  // K_q of the elastic matrix, of the committed tangent
   Eigen::Matrix<double, 12, 1> q_ = Eigen::Matrix<double, 12, 1>::Zero(), q_trial_ = Eigen::Matrix<double, 12, 1>::Zero();  // Q
   Eigen::Matrix<double, 12, 1> g_ = Eigen::Matrix<double, 12, 1>::Zero(), g_trial_ = Eigen::Matrix<double, 12, 1>::Zero();  // hourglass forces

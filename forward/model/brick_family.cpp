@@ -54,7 +54,7 @@ BrickFamily::BrickFamily(const mesh::Mesh& mesh, const material::MaterialParams<
     axes.col(1) = n.cross(axes.col(0));
     axes.col(2) = n;
     try {
-      elements_.emplace_back(X, axes, law_, options.hourglass_scale);
+      elements_.emplace_back(X, axes, law_, options.hourglass);
     } catch (const std::invalid_argument& err) {
       throw std::invalid_argument("element " + std::to_string(e) + ": " + err.what());
     }

@@ -20,8 +20,8 @@ struct BrickOptions {
   // sheet normal of an element runs from its bottom face (corners 0-3) to its top face (4-7).
   Eigen::Vector3d material_axis = Eigen::Vector3d::UnitX();
   ShellModelOptions::MaterialAxes material_axes = ShellModelOptions::MaterialAxes::fixed;
-  // Factor on the incompatible-modes hourglass stiffness (element::Brick8); 1 by default.
-  double hourglass_scale = 1.0;
+  // The hourglass stabilisation (element::Brick8): factor 1 on the centre's tangent by default.
+  element::HourglassOptions hourglass;
   // Elements through the thickness (mesh::extrude_sheet's layers).
   int layers = 1;
 };

@@ -50,7 +50,7 @@ TEST(Brick8, HomogeneousStretchGivesTheMaterialPointsStress) {
     SCOPED_TRACE(turned ? "material axes turned 90 degrees about z" : "material axes global");
     const Mat3 axes = turned ? Mat3(Eigen::AngleAxisd(M_PI / 2, Vec3::UnitZ())) : Mat3::Identity();
     const HexCorners X = box(2.0, 1.5, 0.6);
-    Brick8 brick(X, axes, law, 1.0);
+    Brick8 brick(X, axes, law);
     const double lx = 1.25, ly = 0.93, lz = 0.87;
     HexVector f;
     ASSERT_TRUE(brick.evaluate(map(X, Vec3(lx, ly, lz).asDiagonal().toDenseMatrix()), &f, nullptr).ok);
@@ -78,7 +78,7 @@ TEST(Brick8, HomogeneousStretchGivesTheMaterialPointsStress) {
 TEST(Brick8, RigidRotationTurnsTheForcesAndKeepsTheEnergy) {
   const SolidPoint::Law law(aa3003());
   const HexCorners X = distorted();
-  Brick8 brick(X, Mat3::Identity(), law, 1.0);
+  Brick8 brick(X, Mat3::Identity(), law);
   Mat3 F;
   F << 1.15, 0.08, -0.03, 0.02, 0.95, 0.04, 0.01, -0.05, 0.9;
   HexCorners x = map(X, F);
@@ -105,7 +105,7 @@ TEST(Brick8, TangentMatchesCentralDifferences) {
   const SolidPoint::Law law(aa3003());
   const HexCorners X = distorted();
   for (const Mat3& axes : {Mat3(Mat3::Identity()), rotation()}) {
-    Brick8 brick(X, axes, law, 1.0);
+    Brick8 brick(X, axes, law);
     Mat3 F;
     F << 1.2, 0.1, -0.05, 0.03, 0.9, 0.06, -0.02, 0.04, 0.85;
     HexCorners x = map(X, rotation() * F);
@@ -164,7 +164,7 @@ TEST(Brick8, LargeStrainPatchInEquilibriumAtTheInteriorNode) {
           X[static_cast<std::size_t>(I)] = nodes[ids[I]];
           if (ids[I] == 13) local = I;
         }
-        Brick8 brick(X, Mat3::Identity(), law, 1.0);
+        Brick8 brick(X, Mat3::Identity(), law);
         HexVector f;
         ASSERT_TRUE(brick.evaluate(map(X, F), &f, nullptr).ok);
         force += f.segment<3>(3 * local);
@@ -176,13 +176,13 @@ TEST(Brick8, LargeStrainPatchInEquilibriumAtTheInteriorNode) {
 TEST(Brick8, RejectsAnInvertedElementAndBadOptions) {
   const SolidPoint::Law law(aa3003());
   const HexCorners X = box(1.0, 1.0, 1.0);
-  Brick8 brick(X, Mat3::Identity(), law, 1.0);
+  Brick8 brick(X, Mat3::Identity(), law);
   const BrickStatus s = brick.evaluate(map(X, Vec3(1.0, 1.0, -0.5).asDiagonal().toDenseMatrix()), nullptr, nullptr);
   EXPECT_FALSE(s.ok);
   EXPECT_NE(s.reason.find("inside out"), std::string::npos) << s.reason;
   EXPECT_LT(s.suggested_scale, 1.0);
-  EXPECT_THROW(Brick8(X, Mat3::Identity(), law, -1.0), std::invalid_argument);
-  EXPECT_THROW(Brick8(X, 2.0 * Mat3::Identity(), law, 1.0), std::invalid_argument);
+  EXPECT_THROW(Brick8(X, Mat3::Identity(), law, HourglassOptions{-1.0, false}), std::invalid_argument);
+  EXPECT_THROW(Brick8(X, 2.0 * Mat3::Identity(), law), std::invalid_argument);
 }
 
 }  // namespace
