@@ -1,6 +1,7 @@
 #include "forward/model/brick_family.hpp"
 
 #include "forward/io/binary_archive.hpp"
+#include "forward/model/element_contribution.hpp"
 #include "forward/mesh/vtu_writer.hpp"
 #include "forward/model/fe_model.hpp"
 #include "forward/model/material_axes.hpp"
@@ -60,6 +61,21 @@ BrickFamily::BrickFamily(const mesh::Mesh& mesh, const material::MaterialParams<
     }
     height0_.push_back(height);
   }
+  face_of_element_.assign(static_cast<std::size_t>(ne), -1);
+  if (mesh.face_sets.count("top")) {
+    top_ = mesh::face_surface(mesh, "top");
+    for (std::size_t f = 0; f < top_.element.size(); ++f) {
+      if (top_.face[f] != 1)
+        throw std::invalid_argument("face set 'top': element " + std::to_string(top_.element[f]) + " has face " + std::to_string(top_.face[f]) +
+                                    " in it; the brick's tool side is its face 1 (corners 4-7)");
+      face_of_element_[static_cast<std::size_t>(top_.element[f])] = static_cast<int>(f);
+    }
+  }
+}
+
+ContactSurface BrickFamily::contact_surface() const {
+  if (top_.element.empty()) throw std::invalid_argument("the solid mesh has no face set 'top' for the tool to touch");
+  return ContactSurface{&top_.mesh, top_.element};
 }
 
 std::vector<int> BrickFamily::element_nodes(int e) const {
@@ -78,6 +94,30 @@ solver::ElementEvaluation BrickFamily::evaluate(int e, const ElementInputs& in, 
     out.suggested_scale = s.suggested_scale;
     out.where = "brick element " + std::to_string(e);
     return out;
+  }
+  const int face = face_of_element_[static_cast<std::size_t>(e)];
+  if (face >= 0 && !in.contributions.empty()) {
+    // The top face's corners are the element's nodes 4-7 in order (mesh::hex_face_corners(1)).
+    const mesh::Hex& h = mesh_->hexes[static_cast<std::size_t>(e)];
+    element::NodeVectors x, x0;
+    const element::NodeVectors none{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    for (std::size_t I = 0; I < 4; ++I) {
+      x[I] = in.x[static_cast<std::size_t>(h[I + 4])];
+      x0[I] = in.x0[static_cast<std::size_t>(h[I + 4])];
+    }
+    const ElementConfiguration config{x, none, x0, none, 0.0};
+    element::Vec24 rp = element::Vec24::Zero();
+    element::Mat24 kp = element::Mat24::Zero();
+    bool touched = false;
+    for (auto& c : in.contributions) touched |= c->add(face, config, &rp, ke ? &kp : nullptr);
+    if (touched) {
+      // p = (x_I, d_I) per corner; with no offset only the positions' parts are non-zero.
+      for (int I = 0; I < 4; ++I) {
+        f.segment<3>(3 * (I + 4)) += rp.segment<3>(6 * I);
+        if (ke)
+          for (int J = 0; J < 4; ++J) k.block<3, 3>(3 * (I + 4), 3 * (J + 4)) += kp.block<3, 3>(6 * I, 6 * J);
+      }
+    }
   }
   *re = f;
   if (ke) *ke = k;

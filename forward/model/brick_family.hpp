@@ -6,6 +6,7 @@
 // of mesh::extrude_sheet: layer l of mid-surface element q is element l m + q (m elements per
 // layer).
 #include "forward/element/brick8.hpp"
+#include "forward/mesh/face_surface.hpp"
 #include "forward/mesh/mesh.hpp"
 #include "forward/model/element_family.hpp"
 #include "forward/model/shell_family.hpp"
@@ -40,8 +41,11 @@ class BrickFamily final : public ElementFamily {
   int dofs_per_node() const override { return 3; }
   int num_elements() const override { return static_cast<int>(elements_.size()); }
   std::vector<int> element_nodes(int e) const override;
-  // Tool contact on the faces of solid elements is not built yet.
-  bool takes_contributions() const override { return false; }
+  // The sheet's top faces (the mesh's face set "top", mesh::extrude_sheet's tool side):
+  // std::invalid_argument when the mesh has none.
+  ContactSurface contact_surface() const override;
+  // The contributions act on the top face of an element that has one (no offset: the face is
+  // the sheet's surface), their forces on its four top corners.
   solver::ElementEvaluation evaluate(int e, const ElementInputs& in, Eigen::VectorXd* re, Eigen::MatrixXd* ke) override;
   void commit() override;
   void revert() override;
@@ -66,6 +70,8 @@ class BrickFamily final : public ElementFamily {
   int layers_;
   std::vector<element::Brick8> elements_;
   std::vector<double> height0_;  // reference distance between the bottom and top face centroids
+  mesh::FaceSurface top_;        // the top faces (empty without a face set "top")
+  std::vector<int> face_of_element_;  // index into top_ (-1: no top face)
   std::vector<std::string> warnings_;
 };
 

@@ -19,6 +19,7 @@ class BinaryReader;
 }  // namespace spifit::io
 
 namespace spifit::mesh {
+struct Mesh;
 struct VtuFrame;
 }  // namespace spifit::mesh
 
@@ -44,6 +45,15 @@ struct ElementInputs {
   const NodalRotationFrames& frames;
 };
 
+// The surface the model's contributions act on (the tool's contact).
+struct ContactSurface {
+  // Quadrilateral faces over the model's nodes, taken as they are (a solid's top faces); null:
+  // the model mesh's own quadrilaterals, offset by half the element's thickness along the
+  // directors (the shell's tool-side surface).
+  const mesh::Mesh* faces = nullptr;
+  std::vector<int> element;  // the model element of each face (with faces)
+};
+
 class ElementFamily {
  public:
   virtual ~ElementFamily() = default;
@@ -55,9 +65,10 @@ class ElementFamily {
   virtual int num_elements() const = 0;
   // Nodes of element e in the order of its residual (the mesh cell's order).
   virtual std::vector<int> element_nodes(int e) const = 0;
-  // Whether the family evaluates the model's contributions (FeModel::add_contribution refuses
-  // them otherwise).
-  virtual bool takes_contributions() const { return true; }
+  // Where the contributions act; a family with faces passes each contribution, for an element
+  // that has one, the face's index and corners (ElementContribution::add) with no offset.
+  // std::invalid_argument when the family has no surface a tool could touch.
+  virtual ContactSurface contact_surface() const { return {}; }
   // Reference directors of every node of the mesh (a family with rotation DOFs), else empty.
   virtual std::vector<Eigen::Vector3d> reference_directors() const { return {}; }
   // Residual (internal forces minus the contributions' external ones) and tangent of element e

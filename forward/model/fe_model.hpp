@@ -15,7 +15,6 @@
 #include "forward/solver/nonlinear_problem.hpp"
 
 #include <memory>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -58,11 +57,8 @@ class FeModel : public solver::NonlinearProblem {
 
   // Adds a contribution (summed after the element's own forces, in the order added) and
   // returns it. Add before the first increment.
-  // std::invalid_argument when the family does not take contributions.
   template <typename C>
   C& add_contribution(std::unique_ptr<C> c) {
-    if (!family_->takes_contributions())
-      throw std::invalid_argument("the " + family_->name() + " elements take no " + c->name() + " yet");
     C& ref = *c;
     contributions_.push_back(std::move(c));
     return ref;

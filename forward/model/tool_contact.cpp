@@ -15,11 +15,19 @@ namespace spifit::model {
 
 ToolContact::ToolContact(const mesh::Mesh& mesh, double radius, PathFunction path, const contact::ContactOptions& options,
                          double spin_per_load_factor)
-    : mesh_(&mesh), path_(std::move(path)), spin_per_load_factor_(spin_per_load_factor) {
+    : ToolContact(mesh, ContactSurface{}, radius, std::move(path), options, spin_per_load_factor) {}
+
+ToolContact::ToolContact(const mesh::Mesh& mesh, const ContactSurface& surface, double radius, PathFunction path,
+                         const contact::ContactOptions& options, double spin_per_load_factor)
+    : mesh_(&mesh), surface_(surface), path_(std::move(path)), spin_per_load_factor_(spin_per_load_factor) {
   if (!(radius > 0.0)) throw std::invalid_argument("tool radius must be > 0");
   if (!std::isfinite(spin_per_load_factor)) throw std::invalid_argument("tool spin must be finite");
   if (const std::string err = options.validate(); !err.empty()) throw std::invalid_argument("contact: " + err);
-  contact_ = std::make_unique<contact::ShellContact>(mesh, options, 1);
+  if (surface.faces && options.surface == contact::ContactOptions::Surface::phong)
+    throw std::invalid_argument("contact: surface = \"phong\" curves the facets with the shell's directors; solid elements take \"flat\"");
+  if (surface.faces && surface.element.size() != surface.faces->quads.size())
+    throw std::invalid_argument("contact: the surface's faces and their elements differ in number");
+  contact_ = std::make_unique<contact::ShellContact>(contact_mesh(), options, 1);
   tools_.assign(1, contact::SphereTool{});
   tools_.front().radius = radius;
   const Eigen::Vector3d c = path_(0.0);
@@ -34,7 +42,7 @@ void ToolContact::set_copies(const std::vector<double>& angles_deg) {
   rotations_.assign(1, Eigen::Matrix3d::Identity());
   for (double a : angles_deg)
     rotations_.push_back(Eigen::AngleAxisd(a * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix());
-  contact_ = std::make_unique<contact::ShellContact>(*mesh_, contact_->options(), 1 + static_cast<int>(angles_deg.size()));
+  contact_ = std::make_unique<contact::ShellContact>(contact_mesh(), contact_->options(), 1 + static_cast<int>(angles_deg.size()));
   const contact::SphereTool real = tools_.front();
   tools_.assign(1 + angles_deg.size(), real);
   place(real.centre_committed, real.centre, real.spin);
@@ -81,6 +89,16 @@ contact::ContactSummary ToolContact::summary() const {
 
 double ToolContact::surface_penetration(const FeModel& model) const {
   double deepest = summary().max_penetration;
+  if (surface_.faces) {
+    const element::NodeVectors none{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    for (const mesh::Quad& q : surface_.faces->quads) {
+      element::NodeVectors x;
+      for (std::size_t i = 0; i < 4; ++i) x[i] = model.positions()[static_cast<std::size_t>(q[i])];
+      for (const contact::SphereTool& tool : tools_)
+        deepest = std::max(deepest, contact::ShellContact::surface_penetration(contact_->options(), x, none, 0.0, tool));
+    }
+    return deepest;
+  }
   for (int e = 0; e < static_cast<int>(model.mesh().quads.size()); ++e) {
     element::NodeVectors x, d;
     corner_vectors(model.mesh().quads[static_cast<std::size_t>(e)], model.positions(), model.directors(), &x, &d);
@@ -107,6 +125,7 @@ void ToolContact::before_commit(const FeModel& model) {
   force_before_.clear();
   for (int i = 0; i < contact_->tools(); ++i) force_before_.push_back(contact_->committed_summary(i).force_on_sheet);
   thickness_before_.clear();
+  if (surface_.faces) return;  // faces taken as they are: no offset to move
   for (int e = 0; e < model.num_elements(); ++e) thickness_before_.push_back(model.element_thickness(e));
 }
 
@@ -117,8 +136,8 @@ void ToolContact::before_commit(const FeModel& model) {
 // booked separately so that the energy balance closes (ModelEnergies).
 void ToolContact::after_commit(const FeModel& model) {
   contact_->commit();
-  const std::vector<double> fn = contact_->element_normal_force();
-  for (int e = 0; e < model.num_elements(); ++e) {
+  const std::vector<double> fn = surface_.faces ? std::vector<double>{} : contact_->element_normal_force();
+  for (int e = 0; e < static_cast<int>(fn.size()) && e < model.num_elements(); ++e) {
     const auto ue = static_cast<std::size_t>(e);
     if (fn[ue] != 0.0) offset_release_ -= fn[ue] * 0.5 * (model.element_thickness(e) - thickness_before_[ue]);
   }
@@ -140,7 +159,18 @@ void ToolContact::add_energies(ModelEnergies* en) const {
 }
 
 void ToolContact::add_cell_data(std::vector<mesh::VtuField>* cell_data) const {
-  cell_data->push_back({"contact_pressure", 1, contact_->element_pressure()});
+  if (!surface_.faces) {
+    cell_data->push_back({"contact_pressure", 1, contact_->element_pressure()});
+    return;
+  }
+  // One value per model element: each face's pressure on its element, zero elsewhere.
+  std::vector<double> pressure(static_cast<std::size_t>(mesh_->num_elements()), 0.0);
+  const std::vector<double> faces = contact_->element_pressure();
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    double& p = pressure[static_cast<std::size_t>(surface_.element[f])];
+    p = std::max(p, faces[f]);
+  }
+  cell_data->push_back({"contact_pressure", 1, pressure});
 }
 
 void ToolContact::save_state(io::BinaryWriter& w) const {
@@ -171,9 +201,8 @@ void ToolContact::load_state(io::BinaryReader& r) {
 
 ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
                          double spin_per_load_factor) {
-  if (!model.family().takes_contributions())
-    throw std::invalid_argument("the " + model.family().name() + " elements take no tool_contact yet");
-  return model.add_contribution(std::make_unique<ToolContact>(model.mesh(), radius, std::move(path), options, spin_per_load_factor));
+  return model.add_contribution(
+      std::make_unique<ToolContact>(model.mesh(), model.family().contact_surface(), radius, std::move(path), options, spin_per_load_factor));
 }
 
 }  // namespace spifit::model

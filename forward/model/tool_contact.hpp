@@ -7,6 +7,7 @@
 // sheet and the energy released by the moving contact surface (ModelEnergies).
 #include "forward/contact/shell_contact.hpp"
 #include "forward/model/element_contribution.hpp"
+#include "forward/model/element_family.hpp"
 
 #include <Eigen/Core>
 
@@ -24,6 +25,11 @@ class ToolContact final : public ElementContribution {
   // x seconds per unit load factor); positive = counter-clockwise seen from above. Throws
   // std::invalid_argument for a radius <= 0, a non-finite spin or invalid contact options.
   ToolContact(const mesh::Mesh& mesh, double radius, PathFunction path, const contact::ContactOptions& options,
+              double spin_per_load_factor = 0.0);
+  // The same against a family's contact surface (ElementFamily::contact_surface) over the model
+  // mesh `mesh`: with faces, the contact acts on them as they are, and the phong surface (which
+  // curves facets with the shell's directors) is refused.
+  ToolContact(const mesh::Mesh& mesh, const ContactSurface& surface, double radius, PathFunction path, const contact::ContactOptions& options,
               double spin_per_load_factor = 0.0);
 
   // Virtual tools of a pie model with cyclic ties: copies of the tool rotated about z by these
@@ -45,8 +51,9 @@ class ToolContact final : public ElementContribution {
   // Force exerted BY the sheet ON the (real) tool, committed state.
   Eigen::Vector3d force() const { return -summary().force_on_sheet; }
   // Largest penetration of any tool into the committed tool-side surface, sampled over every
-  // shell element (ShellContact::surface_penetration: the mid-surface offset by half the
-  // element's thickness along the directors) and never below the contact points' own.
+  // contact face (ShellContact::surface_penetration: a shell's mid-surface offset by half the
+  // element's thickness along the directors, or the family's faces) and never below the
+  // contact points' own.
   double surface_penetration(const FeModel& model) const;
   double work() const { return work_; }  // the tools' work on the sheet so far [N mm]
   // Passive: the tool moves and its geometry is there (surface_penetration) but it adds no
@@ -66,7 +73,9 @@ class ToolContact final : public ElementContribution {
   void load_state(io::BinaryReader& r) override;
 
  private:
-  const mesh::Mesh* mesh_;
+  const mesh::Mesh* mesh_;          // the model's
+  ContactSurface surface_;          // faces null: the shell's offset mid-surface, mesh_'s quadrilaterals
+  const mesh::Mesh& contact_mesh() const { return surface_.faces ? *surface_.faces : *mesh_; }
   std::unique_ptr<contact::ShellContact> contact_;
   PathFunction path_;
   double spin_per_load_factor_ = 0.0;

@@ -7,6 +7,7 @@
 #include "forward/model/brick_family.hpp"
 #include "forward/model/fe_model.hpp"
 #include "forward/model/model_energies.hpp"
+#include "forward/mesh/vtu_writer.hpp"
 #include "forward/model/tool_contact.hpp"
 #include "forward/solver/newton_solver.hpp"
 
@@ -125,11 +126,59 @@ TEST(BrickFamily, RefusesWhatItCannotModel) {
   BrickOptions two;
   two.layers = 2;
   FeModel model(solid, std::make_unique<BrickFamily>(solid, aa3003(), two));
-  EXPECT_NE(message([&] { attach_tool(model, 5.0, [](double) { return Eigen::Vector3d(0.0, 0.0, 6.0); }, {}); })
-                .find("the brick elements take no tool_contact yet"),
+  contact::ContactOptions phong;
+  phong.surface = contact::ContactOptions::Surface::phong;
+  EXPECT_NE(message([&] { attach_tool(model, 5.0, [](double) { return Eigen::Vector3d(0.0, 0.0, 6.0); }, phong); }).find("solid elements take \"flat\""),
+            std::string::npos);
+  mesh::Mesh bare = solid;
+  bare.face_sets.clear();
+  FeModel no_top(bare, std::make_unique<BrickFamily>(bare, aa3003(), two));
+  EXPECT_NE(message([&] { attach_tool(no_top, 5.0, [](double) { return Eigen::Vector3d(0.0, 0.0, 6.0); }, {}); }).find("no face set 'top'"),
             std::string::npos);
 }
 
+// A 10 x 10 x 1 mm sheet of two brick layers, clamped on its four edges, pressed 0.4 mm by a
+// 5 mm tool at its centre: the tool acts on the top faces only, and the clamps carry its force.
+TEST(BrickFamily, ToolPressesTheTopFacesAndTheClampsCarryItsForce) {
+  const mesh::Mesh mid = mesh::square_sheet({10.0, 10.0, 6, 6, false, 1.0, 1.0, 0, {}});
+  const mesh::Mesh solid = mesh::extrude_sheet(mid, 1.0, 2);
+  BrickOptions options;
+  options.layers = 2;
+  FeModel model(solid, std::make_unique<BrickFamily>(solid, aa3003(), options));
+  const double R = 5.0, depth = 0.4;
+  const ToolContact& tool = attach_tool(model, R, [=](double lambda) { return Eigen::Vector3d(0.0, 0.0, 0.5 + R - depth * lambda); }, {});
+  solver::DofConstraints c(model.num_dofs());
+  for (const char* edge : {"edge_xmin", "edge_xmax", "edge_ymin", "edge_ymax"})
+    for (int n : solid.node_sets.at(edge))
+      for (int k = 0; k < 3; ++k)
+        if (!c.prescribed(model.node_dof(n, k))) c.prescribe(model.node_dof(n, k));
+  c.finalize();
+  solver::NewtonOptions o;
+  o.initial_increment = o.max_increment = 0.1;
+  solver::NewtonSolver s(model, c, o);
+  const auto result = s.solve();
+  ASSERT_TRUE(result.converged) << result.message;
+  const Eigen::Vector3d f = tool.summary().force_on_sheet;
+  ASSERT_LT(f.z(), 0.0);
+  const Eigen::VectorXd fi = model.internal_forces();
+  Eigen::Vector3d reaction = Eigen::Vector3d::Zero();
+  for (int n = 0; n < solid.num_nodes(); ++n)
+    if (c.prescribed(model.node_dof(n, 0)))
+      for (int k = 0; k < 3; ++k) reaction(k) += fi(model.node_dof(n, k));
+  // The clamps' reactions (the residual at the supported DOFs) balance the tool's force.
+  EXPECT_LT((reaction + f).norm(), 1e-8 * std::abs(f.z())) << reaction.transpose() << " | " << f.transpose();
+  EXPECT_LT(std::abs(f.x()) + std::abs(f.y()), 1e-9 * std::abs(f.z()));  // symmetric
+  // Pressure on the top layer only.
+  std::vector<mesh::VtuField> cells;
+  model.contributions().front()->add_cell_data(&cells);
+  ASSERT_EQ(cells.size(), 1u);
+  double top = 0.0, bottom = 0.0;
+  for (int e = 0; e < model.num_elements(); ++e) (e < 36 ? bottom : top) += cells[0].values[static_cast<std::size_t>(e)];
+  EXPECT_GT(top, 0.0);
+  EXPECT_EQ(bottom, 0.0);
+  EXPECT_GE(tool.surface_penetration(model), tool.summary().max_penetration);
+  std::printf("brick sheet pressed %.1f mm: tool force %.2f N, %d increments\n", depth, -f.z(), static_cast<int>(result.history.size()));
+}
 
 // A plane-strain strip (1 x 1 x 1 mm, four elements along, y held) of an elastic-perfectly
 // plastic von Mises material bent to 17 times its yield curvature by turning one end face by
