@@ -164,6 +164,21 @@ void BrickFamily::add_vtu_data(const FeModel&, mesh::VtuFrame* frame) const {
   for (auto* f : {&eqps, &thickness, &s11, &s22, &s33}) frame->cell_data.push_back(std::move(*f));
 }
 
+MidSurface BrickFamily::mid_surface(const FeModel& model) const {
+  const std::size_t levels = static_cast<std::size_t>(layers_) + 1, nn = model.mesh().nodes.size(), n = nn / levels;
+  if (n * levels != nn) throw std::logic_error("brick family: the mesh's nodes are not " + std::to_string(levels) + " levels of a sheet");
+  MidSurface m;
+  const std::vector<Eigen::Vector3d>& X = model.mesh().nodes;
+  const std::vector<Eigen::Vector3d>& x = model.positions();
+  const std::size_t top = static_cast<std::size_t>(layers_) * n;
+  for (std::size_t i = 0; i < n; ++i) {
+    m.reference.push_back(0.5 * (X[i] + X[top + i]));
+    m.current.push_back(0.5 * (x[i] + x[top + i]));
+    m.thickness.push_back((x[top + i] - x[i]).norm());
+  }
+  return m;
+}
+
 void BrickFamily::save_state(io::BinaryWriter& w) const {
   w.i64(static_cast<std::int64_t>(elements_.size()));
   for (const auto& el : elements_) el.save_state(w);

@@ -58,6 +58,9 @@ class BrickFamily final : public ElementFamily {
   // Cell data: equivalent plastic strain, sheet thickness, and the Kirchhoff stress along the
   // three material axes.
   void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const override;
+  // Each node column's midpoint (reference and current) and the distance between its bottom and
+  // top nodes (mesh::extrude_sheet's columns: node k n + i at level k).
+  MidSurface mid_surface(const FeModel& model) const override;
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
 

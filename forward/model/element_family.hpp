@@ -54,6 +54,12 @@ struct ContactSurface {
   std::vector<int> element;  // the model element of each face (with faces)
 };
 
+// The sheet's mid-surface at the model's committed state, one entry per mid-surface node.
+struct MidSurface {
+  std::vector<Eigen::Vector3d> reference, current;
+  std::vector<double> thickness;  // the sheet's thickness there [mm]
+};
+
 class ElementFamily {
  public:
   virtual ~ElementFamily() = default;
@@ -89,6 +95,9 @@ class ElementFamily {
   // after the model's displacement (model_vtu.hpp).
   virtual void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const = 0;
   // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
+  // The sections' view of the sheet. By default the model's nodes with FeModel::nodal_thickness
+  // (a shell's nodes lie on its mid-surface).
+  virtual MidSurface mid_surface(const FeModel& model) const;
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;
 };

@@ -169,4 +169,12 @@ std::vector<double> FeModel::nodal_thickness() const {
   return h;
 }
 
+MidSurface ElementFamily::mid_surface(const FeModel& model) const {
+  MidSurface m;
+  m.reference = model.mesh().nodes;
+  m.current = model.positions();
+  m.thickness = model.nodal_thickness();
+  return m;
+}
+
 }  // namespace spifit::model

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <csignal>
+#include <stdexcept>
 #include <cstdio>
 
 namespace spifit::scene {
@@ -13,13 +14,22 @@ using Clock = FeRunClock;
 
 FeRun::FeRun(FeRunSetup setup, RunFiles files, RunControl control)
     : setup_(std::move(setup)), files_(files), control_(std::move(control)) {
-  if (setup_.explicit_scheme) setup_.model.shell.layer_tangents = false;  // no tangent is assembled
-  model_ = std::make_unique<model::ShellModel>(setup_.mesh, setup_.thickness, setup_.material, setup_.model);
+  if (setup_.explicit_scheme) {
+    if (setup_.element != "shell")
+      throw std::invalid_argument("the explicit scheme has shell elements only, not " + setup_.element + " elements");
+    setup_.model.shell.layer_tangents = false;  // no tangent is assembled
+  }
+  model::SheetModelSpec spec;
+  spec.element = setup_.element;
+  spec.layers = setup_.layers;
+  spec.shell = setup_.model;
+  spec.hourglass = setup_.hourglass;
+  model_ = model::make_sheet_model(setup_.mesh, setup_.thickness, setup_.material, spec, &solid_);
   const toolpath::ToolPath& path = setup_.tool_path;
   const LoadMap& map = setup_.load_map;
   tool_ = &model_->add_contribution(std::make_unique<model::ToolContact>(
-      setup_.mesh, setup_.tool_radius, [&path, &map](double lambda) { return path.at_distance(map.travel(lambda)); }, setup_.contact,
-      setup_.spin_per_load_factor));
+      model_->mesh(), model_->family().contact_surface(), setup_.tool_radius,
+      [&path, &map](double lambda) { return path.at_distance(map.travel(lambda)); }, setup_.contact, setup_.spin_per_load_factor));
   if (!setup_.tool_copies_deg.empty()) tool_->set_copies(setup_.tool_copies_deg);
   constraints_ = std::make_unique<solver::DofConstraints>(setup_.constraints(*model_));
   solver_ = std::make_unique<solver::NewtonSolver>(*model_, *constraints_, setup_.newton);

@@ -9,6 +9,7 @@
 #include "forward/contact/shell_contact.hpp"
 #include "forward/material/material_params.hpp"
 #include "forward/mesh/mesh.hpp"
+#include "forward/model/sheet_model.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/model/tool_contact.hpp"
 #include "forward/scenes/common/load_map.hpp"
@@ -44,10 +45,15 @@ struct FeRunSetup {
   // Files whose contents identify the run, (role, path): ("scene", ...), ("material card", ...),
   // ("G-code", ...). A checkpoint keeps their contents, and a resume with others is refused.
   std::vector<std::pair<std::string, std::string>> input_files;
-  mesh::Mesh mesh;
+  mesh::Mesh mesh;  // the sheet's mid-surface
   double thickness = 0.0;
   material::MaterialParams<double> material;
-  model::ShellModelOptions model;
+  model::ShellModelOptions model;  // the shell's options; its material axes serve every family
+  // The sheet's elements (model::sheet_element_names()), layers of solids through the thickness
+  // on the sheet extruded from `mesh`, and the brick's stabilisation.
+  std::string element = "shell";
+  int layers = 1;
+  element::HourglassOptions hourglass;
   // The tool: a sphere whose centre follows tool_path at load_map.travel(lambda) mm.
   toolpath::ToolPath tool_path;
   double tool_radius = 5.0;
@@ -57,7 +63,7 @@ struct FeRunSetup {
   LoadMap load_map;
   std::function<double(double travel)> time_of_travel;  // s
   // Supports and ties on the model's DOFs, finalised (the model's rotation frames set in it).
-  std::function<solver::DofConstraints(model::ShellModel&)> constraints;
+  std::function<solver::DofConstraints(model::FeModel&)> constraints;
   solver::NewtonOptions newton;
   // The explicit scheme instead of the Newton solver (fe_run_explicit.cpp): its options, and the
   // sheet's density [t/mm^3]. Output points every newton.initial_increment of the load factor
@@ -115,8 +121,9 @@ struct FeRunOutcome {
 
 class FeRun {
  public:
-  // Builds the model (std::invalid_argument for a mesh the shell rejects), the tool and the
-  // constraints. files: where outputs go (none: a run in memory).
+  // Builds the model (std::invalid_argument for a mesh the family rejects, or the explicit scheme
+  // with another family than the shell), the tool and the constraints. files: where outputs go
+  // (none: a run in memory).
   FeRun(FeRunSetup setup, RunFiles files, RunControl control);
   FeRun(const FeRun&) = delete;
   FeRun& operator=(const FeRun&) = delete;
@@ -124,7 +131,9 @@ class FeRun {
 
   const FeRunSetup& setup() const { return setup_; }
   const RunFiles& files() const { return files_; }
-  model::ShellModel& model() { return *model_; }
+  model::FeModel& model() { return *model_; }
+  // The model as a shell model; null for other families.
+  model::ShellModel* shell_model() { return dynamic_cast<model::ShellModel*>(model_.get()); }
   const model::ToolContact& tool() const { return *tool_; }
 
   // Observers are called in the order added; add them all before run().
@@ -145,7 +154,8 @@ class FeRun {
   FeRunSetup setup_;
   RunFiles files_;
   RunControl control_;
-  std::unique_ptr<model::ShellModel> model_;
+  mesh::Mesh solid_;  // the solid sheet of a solid family (model_ refers to it)
+  std::unique_ptr<model::FeModel> model_;
   model::ToolContact* tool_ = nullptr;
   std::unique_ptr<solver::DofConstraints> constraints_;
   std::unique_ptr<solver::NewtonSolver> solver_;

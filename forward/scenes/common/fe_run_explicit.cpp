@@ -123,7 +123,8 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
   const RunInputs inputs = files_.enabled() ? read_run_inputs(setup_.kind, setup_.input_files) : RunInputs{};
   // The Moving Spherical Tool instead of the penalty: the tool stays for its geometry, without force.
   if (setup_.contact.method == contact::ContactOptions::Method::mst) tool_->set_passive(true);
-  ExplicitDynamics dyn(setup_, *model_, *constraints_);
+  model::ShellModel& shell = *shell_model();  // the constructor refused other families
+  ExplicitDynamics dyn(setup_, shell, *constraints_);
   RunLog restored;
   if (control_.resume) {
     // The checkpoint is read (and refused with an InputError) before any output is touched.
@@ -134,7 +135,7 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
     dyn.start();
   }
   const double duration = setup_.time_of_travel(setup_.load_map.length()) / o.time_scaling;
-  check_step_count(setup_, *model_, dyn.mass(), duration);
+  check_step_count(setup_, shell, dyn.mass(), duration);
   model::MovingSphereContact* mst = dyn.mst();
 
   RunHeartbeat heartbeat(files_, head, control_.heartbeat_seconds);
@@ -171,12 +172,12 @@ FeRunOutcome FeRun::run_explicit(const nlohmann::json& head) {
     return step(ir);
   };
   const model::ExplicitMass& mass = dyn.mass();
-  const auto bound = [&] { return model::current_time_step(*model_, mass, o.safety, dyn.viscosity()); };
+  const auto bound = [&] { return model::current_time_step(shell, mass, o.safety, dyn.viscosity()); };
   const solver::ExplicitSummary r = dyn.solver().run(explicit_schedule(setup_, duration), bound, after_step, at_output);
 
   FeRunOutcome out = step.finish(r.completed, r.lambda, r.message, control_.resume ? restored.marks_reached : -1);
   out.counters.increments = step.log.increments;
-  out.dynamics = dynamics_json(r, o, mass, duration, dyn.max_kinetic_over_internal(), view, mst, model::describe_element(*model_, mass.smallest_element));
+  out.dynamics = dynamics_json(r, o, mass, duration, dyn.max_kinetic_over_internal(), view, mst, model::describe_element(shell, mass.smallest_element));
   return out;
 }
 

@@ -132,7 +132,8 @@ FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
   f.spin_per_load_factor = scene.spin * 2.0 * std::numbers::pi / 60.0 * duration * map.map.effective_length() / length;
   f.load_map = map.map;
   f.time_of_travel = [length, duration](double travel) { return travel / length * duration; };
-  f.constraints = [&scene](model::ShellModel& m) { return cone_constraints(scene, &m); };
+  // The cone runs with shells (cone_setup leaves FeRunSetup::element at "shell").
+  f.constraints = [&scene](model::FeModel& m) { return cone_constraints(scene, &static_cast<model::ShellModel&>(m)); };
   f.newton = tool_newton_options(scene, map.map.effective_length());
   f.newton.breakpoints = map.breakpoints;
   for (std::size_t k = 0; k < track.contours().size(); ++k) {
@@ -178,12 +179,13 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
       std::string(scene.explicit_scheme ? "explicit: kinetic energy and damping work in their columns; "
                                         : "kinetic energy 0 (static implicit); ") +
       "balance_error = external_work - the other columns", run.files(), scene.explicit_scheme));
-  auto& observables = run.add_observer(std::make_unique<ConeObservableLog>(scene, run.model(), track, run.files()));
+  const model::ShellModel& shell = *run.shell_model();
+  auto& observables = run.add_observer(std::make_unique<ConeObservableLog>(scene, shell, track, run.files()));
   run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
 
   ConeResult r;
-  r.warnings = scene_warnings(scene, track, run.model());
-  r.inputs = summary_head(scene, run.model(), run.tool(), track, r.warnings);
+  r.warnings = scene_warnings(scene, track, shell);
+  r.inputs = summary_head(scene, shell, run.tool(), track, r.warnings);
   r.name = scene.name;
   r.elements = run.model().num_elements();
   r.contours_total = static_cast<int>(track.contours().size());

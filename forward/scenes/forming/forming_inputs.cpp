@@ -29,6 +29,16 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
          [](FormingScene& s) -> double& { return s.fine_band; });
   t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
             [](FormingScene& s) -> int& { return s.thickness_points; });
+  t.text({"sheet.element", {}, "", {}, {"shell", "brick"},
+          "the sheet's elements: shells on its mid-surface, or one-point bricks in sheet.layers layers through the thickness", false},
+         {[](const FormingScene& s) -> std::string { return s.element; },
+          [](FormingScene& s, const std::string& v) {
+            s.element = v;
+            return v == "shell" || v == "brick";
+          }});
+  t.integer({"sheet.layers", {}, "", Range::closed(1, 16), {},
+             "bricks through the thickness (sheet.element = \"brick\"; default 3, as the thesis's brick simulations)", false},
+            [](FormingScene& s) -> int& { return s.layers; });
   t.real({"sheet.hourglass_stiffness", {}, "", Range::closed(0.0, 1.0), {},
           "> 0: one in-plane point per element (about a quarter of the material updates), with this fraction of the elastic "
           "section stiffness on the strains' variation over the element (hourglass control); 0: 2 x 2 points", true},

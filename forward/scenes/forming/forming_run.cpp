@@ -18,20 +18,21 @@
 namespace spifit::scene {
 namespace {
 
-// Edges clamped (translations and rotations); a half model's symmetry plane y = 0 holds u_y and
-// the rotations about x and z. A coarsened sheet's hanging nodes follow their edges' ends
-// (model/hanging_nodes.hpp). Drilling rotations out of the system (nodal rotation frames).
-solver::DofConstraints sheet_constraints(const FormingScene& s, model::ShellModel& model) {
+// Edges clamped (translations, and rotations where the nodes have them); a half model's
+// symmetry plane y = 0 holds u_y and the rotations about x and z. A coarsened sheet's hanging
+// nodes follow their edges' ends (model/hanging_nodes.hpp). Drilling rotations out of the system
+// (nodal rotation frames). A solid sheet's sets hold whole node columns (mesh::extrude_sheet).
+solver::DofConstraints sheet_constraints(const FormingScene& s, model::FeModel& model) {
   solver::DofConstraints c(model.num_dofs());
   const mesh::Mesh& mesh = model.mesh();
   for (int n : mesh.node_sets.at("boundary"))
-    for (int k = 0; k < 6; ++k) c.prescribe(model::ShellModel::dof(n, k));
+    for (int k = 0; k < model.node_dofs(n); ++k) c.prescribe(model.node_dof(n, k));
   if (s.half)
     for (int n : mesh.node_sets.at("symmetry_y0"))
       for (int k : {1, 3, 5})
-        if (!c.prescribed(model::ShellModel::dof(n, k))) c.prescribe(model::ShellModel::dof(n, k));
+        if (k < model.node_dofs(n) && !c.prescribed(model.node_dof(n, k))) c.prescribe(model.node_dof(n, k));
   model::tie_hanging_translations(model, &c);
-  model.use_nodal_rotation_frames(&c);
+  if (model.family().dofs_per_node() == 6) model.use_nodal_rotation_frames(&c);
   model::tie_hanging_rotations(model, &c);
   c.finalize();
   return c;
@@ -55,7 +56,9 @@ FeRunSetup forming_setup(const FormingScene& s) {
   f.load_map = LoadMap::linear(length);
   const double feed = s.feed;
   f.time_of_travel = [feed](double travel) { return travel / feed; };
-  f.constraints = [&s](model::ShellModel& m) { return sheet_constraints(s, m); };
+  f.element = s.element;
+  f.layers = s.layers;
+  f.constraints = [&s](model::FeModel& m) { return sheet_constraints(s, m); };
   f.marks = forming_marks(s, f.tool_path);
   f.newton = tool_newton_options(s, length);
   // The increment size starts afresh at every mark, as after a change of direction.
@@ -105,7 +108,7 @@ ForceLogFormat force_format(const FormingScene& s) {
   return f;
 }
 
-nlohmann::json forming_inputs(const FormingScene& s, const model::ShellModel& model, double length) {
+nlohmann::json forming_inputs(const FormingScene& s, const model::FeModel& model, double length) {
   nlohmann::json j;
   j["scene"] = s.name;
   j["scene_file"] = s.file;
@@ -115,6 +118,10 @@ nlohmann::json forming_inputs(const FormingScene& s, const model::ShellModel& mo
   j["model"] = {{"elements", model.num_elements()}, {"nodes", model.num_nodes()}, {"half", s.half},
                 {"thickness", s.thickness}, {"length", s.length}, {"thickness_points", s.thickness_points}};
   if (s.hourglass_stiffness > 0.0) j["model"]["hourglass_stiffness"] = s.hourglass_stiffness;
+  if (s.element != "shell") {
+    j["model"].erase("thickness_points");
+    j["model"].update({{"element", s.element}, {"layers", s.layers}});
+  }
   if (s.coarse_levels > 0)
     j["model"].update({{"coarse_levels", s.coarse_levels}, {"fine_band", s.fine_band}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});
   j["tool"] = {{"radius", s.radius}, {"travel", length}, {"feed", s.feed}, {"spin_rpm", s.spin}, {"gcode", s.gcode}};
@@ -148,7 +155,7 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   r.half = scene.half;
   r.warnings = run.model().warnings();
   if (const std::string w = path_edge_warning(run.setup().tool_path, scene); !w.empty()) r.warnings.push_back(w);
-  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.model().mesh()));
+  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.setup().mesh));
   r.sections = sections.sections();
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;

@@ -152,11 +152,33 @@ SheetAndTool forming_sheet_and_tool(const FormingScene& s) {
   return st;
 }
 
+// The checks of a solid sheet (sheet.element other than the shell): keys and options the shell
+// alone has, and a law the solid cannot take.
+InputViolation solid_sheet_violation(const FormingScene& s) {
+  if (s.element == "shell") {
+    if (s.layers != 0) return {"sheet.layers", std::to_string(s.layers), "layers are for solid sheets: set sheet.element = \"brick\" or remove it"};
+    return {};
+  }
+  const std::string quoted = "\"" + s.element + "\"";
+  if (s.hourglass_stiffness > 0.0)
+    return {"sheet.hourglass_stiffness", io::format_number(s.hourglass_stiffness),
+            "the shell's one-point option; the " + s.element + " has its own stabilisation: remove it with sheet.element = " + quoted};
+  if (s.explicit_scheme) return {"solver.scheme", "\"explicit\"", "the explicit scheme has shell elements only, not " + s.element + " elements"};
+  if (s.contact.surface == contact::ContactOptions::Surface::phong)
+    return {"contact.surface", "\"phong\"", "phong curves the facets with the shell's directors; solid elements take \"flat\""};
+  if (s.card.params.yield.active())
+    return {"sheet.element", quoted, "the material card " + s.card.file + " has a plane-stress yield function (" +
+                                         material::yield_function_title(s.card.params.yield.law) + "); solid elements need a 3D law (Hill 1948)"};
+  return {};
+}
+
 InputViolation forming_scene_error(const FormingScene& s) {
   if (const InputViolation v = sheet_and_tool_error(forming_sheet_and_tool(s))) return v;
   if (s.half && s.elements % 2 != 0)
     return {"sheet.elements", std::to_string(s.elements), "a half model needs an even number of elements across"};
-  if (const InputViolation v = thickness_violation(s)) return v;
+  if (const InputViolation v = solid_sheet_violation(s)) return v;
+  if (s.element == "shell")
+    if (const InputViolation v = thickness_violation(s)) return v;
   if (const InputViolation v = scheme_violation(s)) return v;
   if (s.coarse_levels > 0 && s.explicit_scheme)
     return {"sheet.coarse_levels", std::to_string(s.coarse_levels),
@@ -194,6 +216,12 @@ FormingScene read_forming_scene(const std::string& path) {
   const auto points = root.table_array("path");
   read_path_points(root, points, s);
   if (const auto o = root.table("output")) read_sections(*o, s);
+  if (s.element != "shell") {
+    if (root.table("sheet")->has("thickness_points"))
+      throw io::InputError(path, "sheet.thickness_points", std::to_string(s.thickness_points),
+                           "the shell's integration points through the thickness; a solid sheet has sheet.layers instead");
+    if (s.layers == 0) s.layers = FormingScene::kBrickLayers;
+  }
   const InputViolation v = forming_scene_error(s);
   if (!v) return s;
   if (v.key == "tool.gcode") root.table("tool")->fail("gcode", v.message);

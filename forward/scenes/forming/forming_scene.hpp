@@ -39,6 +39,11 @@ struct FormingScene {
   int coarse_levels = 0;
   double fine_band = 20.0;
   int thickness_points = 5;
+  // The sheet's elements (model::sheet_element_names()): "shell" on the mid-surface, or "brick"
+  // on the solid sheet in `layers` layers (0 until read: the brick's default, kBrickLayers).
+  std::string element = "shell";
+  int layers = 0;
+  static constexpr int kBrickLayers = 3;
   // > 0: each element carries its layers at its centre only, with this fraction of the elastic
   // section stiffness on the strains' variation over it (element::ShellOptions). 0: 2 x 2 points.
   double hourglass_stiffness = 0.0;

@@ -17,16 +17,15 @@ io::Series PathSectionLog::empty_section() {
 
 void PathSectionLog::at_mark(const Mark& m, const IncrementView& v) {
   if (std::find(points_.begin(), points_.end(), m.name) == points_.end()) return;
-  const mesh::Mesh& mesh = v.model.mesh();
+  const model::MidSurface mid = v.model.family().mid_surface(v.model);
   std::vector<std::pair<double, int>> line;
-  for (int n = 0; n < v.model.num_nodes(); ++n)
-    if (std::abs(mesh.nodes[static_cast<std::size_t>(n)].y()) < 1e-9) line.emplace_back(mesh.nodes[static_cast<std::size_t>(n)].x(), n);
+  for (int n = 0; n < static_cast<int>(mid.reference.size()); ++n)
+    if (std::abs(mid.reference[static_cast<std::size_t>(n)].y()) < 1e-9) line.emplace_back(mid.reference[static_cast<std::size_t>(n)].x(), n);
   std::sort(line.begin(), line.end());
-  const std::vector<double> h = v.model.nodal_thickness();
   PathSection s{m.name, empty_section()};
   for (const auto& [x0, n] : line) {
-    const Eigen::Vector3d& p = v.model.position(n);
-    s.nodes.add_row({x0, p.x(), p.y(), p.z(), h[static_cast<std::size_t>(n)]});
+    const Eigen::Vector3d& p = mid.current[static_cast<std::size_t>(n)];
+    s.nodes.add_row({x0, p.x(), p.y(), p.z(), mid.thickness[static_cast<std::size_t>(n)]});
   }
   write_file(s);
   sections_.push_back(std::move(s));

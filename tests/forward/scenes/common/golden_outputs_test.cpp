@@ -22,6 +22,7 @@ TEST(GoldenOutputs, ShellBenchmarks) {
 
 TEST(GoldenOutputs, FormingScenes) {
   spifit::test::check_golden_outputs({"experiments/aa3003o/scenes/indent.toml", "experiments/aa3003o/scenes/indent_explicit.toml",
+                                      "experiments/aa3003o/scenes/indent_brick.toml",
                                       "experiments/aa3003o/scenes/indent_line.toml",
                                       "experiments/aa3003o/scenes/indent_line_c7_af.toml",
                                       "experiments/aa3003o/scenes/indent_line_c8_ziegler.toml"});

@@ -90,11 +90,11 @@ StripPressResult run(const StripPress& s, const scene::RunFiles& files, const sc
   f.contact = s.contact;
   f.load_map = scene::LoadMap::linear(f.tool_path.length());
   f.time_of_travel = [feed = s.feed](double travel) { return travel / feed; };
-  f.constraints = [](model::ShellModel& m) {  // both ends clamped
+  f.constraints = [](model::FeModel& m) {  // both ends clamped
     solver::DofConstraints c(m.num_dofs());
     for (const char* set : {"clamped", "tip"})
       for (int n : m.mesh().node_sets.at(set))
-        for (int k = 0; k < 6; ++k) c.prescribe(model::ShellModel::dof(n, k));
+        for (int k = 0; k < m.node_dofs(n); ++k) c.prescribe(m.node_dof(n, k));
     m.use_nodal_rotation_frames(&c);
     c.finalize();
     return c;

@@ -4,6 +4,7 @@
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
+#include "tests/support/temp_files.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -124,6 +125,71 @@ TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
   const std::string spin = error_of(head + "[tool]\nspin = 1e9\n");
   EXPECT_NE(spin.find("spin"), std::string::npos) << spin;
   EXPECT_NE(spin.find("rev/min"), std::string::npos) << spin;
+}
+
+// The sheet's element family: keys that belong to one family only, a law the solid cannot take,
+// the scheme that has shells only; each refused with the file, key and value.
+TEST(FormingScene, ReaderRefusesWhatTheSheetsElementsCannotTake) {
+  auto error_of = [](const std::string& text) {
+    const fs::path f = fs::temp_directory_path() / ("spifit_forming_element_" + std::to_string(::getpid()) + ".toml");
+    std::ofstream(f) << text;
+    std::string err;
+    try {
+      read_forming_scene(f.string());
+    } catch (const io::InputError& e) {
+      err = e.what();
+    }
+    fs::remove(f);
+    return err;
+  };
+  const std::string head = "[scene]\nkind = \"indent\"\nmaterial = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n";
+  const std::string brick = "[sheet]\nelement = \"brick\"\n";
+  EXPECT_NE(error_of(head + "[sheet]\nelement = \"tetra\"\n").find("sheet.element"), std::string::npos);
+  EXPECT_NE(error_of(head + "[sheet]\nlayers = 2\n").find("layers are for solid sheets"), std::string::npos);
+  const std::string zero = error_of(head + brick + "layers = 0\n");
+  EXPECT_NE(zero.find("sheet.layers"), std::string::npos) << zero;
+  EXPECT_NE(zero.find("0"), std::string::npos) << zero;
+  EXPECT_NE(error_of(head + brick + "thickness_points = 7\n").find("a solid sheet has sheet.layers instead"), std::string::npos);
+  EXPECT_NE(error_of(head + brick + "hourglass_stiffness = 0.1\n").find("the shell's one-point option"), std::string::npos);
+  EXPECT_NE(error_of(head + brick + "[solver]\nscheme = \"explicit\"\n").find("the explicit scheme has shell elements only"),
+            std::string::npos);
+  EXPECT_NE(error_of(head + brick + "[contact]\nsurface = \"phong\"\n").find("solid elements take"), std::string::npos);
+  const std::string yld = "[scene]\nkind = \"indent\"\nmaterial = \"" + src("materials/aa3003o_yld2000_start.toml") + "\"\n";
+  const std::string plane = error_of(yld + brick);
+  EXPECT_NE(plane.find("plane-stress yield function"), std::string::npos) << plane;
+  EXPECT_NE(plane.find("aa3003o_yld2000_start.toml"), std::string::npos) << plane;
+  const FormingScene defaulted = read_forming_scene(test::write_temp_file("brick_default.toml", head + brick).string());
+  EXPECT_EQ(defaulted.layers, FormingScene::kBrickLayers);
+}
+
+// The §7.1 indent with bricks: the peak force falls as layers are added (the hourglass
+// stabilisation's share of the bending goes down, docs/design/numerics-solid.md) and stays above
+// the shell's on this coarse in-plane mesh (one in-plane point per brick against the shell's 2 x 2);
+// the mid-surface section has one row per node column, with the sheet thinned under the tool.
+TEST(FormingScene, BrickIndentFallsWithLayersTowardsTheShell) {
+  FormingScene s = read_forming_scene(src("experiments/aa3003o/scenes/indent_brick.toml"));
+  double previous = 0.0;
+  for (int layers : {1, 2, 3}) {
+    s.layers = layers;
+    const FormingResult r = run_forming_scene(s, RunFiles(), RunControl{});
+    ASSERT_TRUE(r.ok()) << r.message;
+    const double peak = r.force.peak().z();
+    std::printf("indent with %d brick layer(s): peak force %.2f N\n", layers, peak);
+    if (previous > 0.0) EXPECT_LT(peak, previous) << layers;
+    previous = peak;
+    if (layers == 3) {
+      ASSERT_EQ(r.sections.size(), 1u);
+      const io::Series& sec = r.sections.front().nodes;
+      EXPECT_EQ(sec.size(), 11u);  // the 11 node columns on y = 0
+      double thinnest = 1.0;
+      for (const auto& row : sec.rows()) thinnest = std::min(thinnest, row[4]);
+      EXPECT_LT(thinnest, 0.3);
+      EXPECT_GT(thinnest, 0.2);
+    }
+  }
+  const FormingResult shell = run_forming_scene(read_forming_scene(src("experiments/aa3003o/scenes/indent.toml")), RunFiles(), RunControl{});
+  ASSERT_TRUE(shell.ok());
+  EXPECT_GT(previous, shell.force.peak().z());
 }
 
 // Plausibility warnings: a penalty so soft that the tool sinks into the sheet (K_p = 10 on the

@@ -1,0 +1,37 @@
+#include "forward/model/sheet_model.hpp"
+
+#include "forward/mesh/extruded_sheet.hpp"
+#include "forward/model/brick_family.hpp"
+#include "forward/model/shell_model.hpp"
+
+#include <stdexcept>
+
+namespace spifit::model {
+
+const std::vector<std::string>& sheet_element_names() {
+  static const std::vector<std::string> names = {"shell", "brick"};
+  return names;
+}
+
+bool sheet_element_has_rotations(const std::string& element) { return element == "shell"; }
+
+std::unique_ptr<FeModel> make_sheet_model(const mesh::Mesh& mid, double thickness, const material::MaterialParams<double>& material,
+                                          const SheetModelSpec& spec, mesh::Mesh* solid) {
+  if (spec.element == "shell") return std::make_unique<ShellModel>(mid, thickness, material, spec.shell);
+  if (spec.element == "brick") {
+    if (spec.layers < 1) throw std::invalid_argument("a brick sheet needs at least one layer, got " + std::to_string(spec.layers));
+    if (!(thickness > 0.0)) throw std::invalid_argument("thickness must be > 0, got " + std::to_string(thickness));
+    *solid = mesh::extrude_sheet(mid, thickness, spec.layers);
+    BrickOptions options;
+    options.material_axis = spec.shell.shell.material_axis;
+    options.material_axes = spec.shell.material_axes;
+    options.hourglass = spec.hourglass;
+    options.layers = spec.layers;
+    return std::make_unique<FeModel>(*solid, std::make_unique<BrickFamily>(*solid, material, options));
+  }
+  std::string known;
+  for (const std::string& n : sheet_element_names()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown sheet element '" + spec.element + "' (known: " + known + ")");
+}
+
+}  // namespace spifit::model
