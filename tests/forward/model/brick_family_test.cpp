@@ -180,6 +180,53 @@ TEST(BrickFamily, ToolPressesTheTopFacesAndTheClampsCarryItsForce) {
   std::printf("brick sheet pressed %.1f mm: tool force %.2f N, %d increments\n", depth, -f.z(), static_cast<int>(result.history.size()));
 }
 
+// The tangent of a top-layer brick with the tool's contact on its face (penalty, friction while
+// the tool slides) against central differences of its forces, at a rotated, stretched state.
+TEST(BrickFamily, TangentWithTheToolOnTheTopFaceMatchesCentralDifferences) {
+  const mesh::Mesh mid = mesh::square_sheet({4.0, 4.0, 2, 2, false, 1.0, 1.0, 0, {}});
+  const mesh::Mesh solid = mesh::extrude_sheet(mid, 1.0, 2);
+  BrickOptions options;
+  options.layers = 2;
+  FeModel model(solid, std::make_unique<BrickFamily>(solid, aa3003(), options));
+  contact::ContactOptions co;
+  co.friction = 0.1;
+  const double R = 5.0;
+  attach_tool(model, R, [=](double lambda) { return Eigen::Vector3d(0.4 + 0.3 * lambda, 0.2, 0.5 + R - 0.05 - 0.05 * lambda); }, co);
+  model.begin_increment(0.0, 1.0);
+  BrickFamily bricks(solid, aa3003(), options);  // evaluated here, with the model's tool
+  std::vector<Eigen::Vector3d> x = solid.nodes;
+  for (auto& p : x) p += Eigen::Vector3d(0.03 * p.x() - 0.01 * p.y() * p.z(), 0.02 * p.y(), -0.04 * (4.0 - p.x() * p.x() - p.y() * p.y()) * 0.1);
+  const std::vector<Eigen::Vector3d> none;
+  const NodalRotationFrames frames;
+  const int e = 7;  // top layer, the element under the tool (corner at the origin)
+  auto forces = [&](const std::vector<Eigen::Vector3d>& xs, Eigen::MatrixXd* k) {
+    const ElementInputs in{xs, none, solid.nodes, none, model.contributions(), frames};
+    Eigen::VectorXd r;
+    EXPECT_TRUE(bricks.evaluate(e, in, &r, k).ok);
+    return r;
+  };
+  Eigen::MatrixXd K;
+  const Eigen::VectorXd f = forces(x, &K);
+  Eigen::VectorXd bare;
+  {
+    const std::vector<std::unique_ptr<ElementContribution>> no_tool;
+    const ElementInputs in{x, none, solid.nodes, none, no_tool, frames};
+    ASSERT_TRUE(bricks.evaluate(e, in, &bare, nullptr).ok);
+  }
+  ASSERT_GT((f - bare).norm(), 1.0) << "the tool must touch the element's top face";
+  const std::vector<int> nodes = bricks.element_nodes(e);
+  const double h = 1e-7;
+  double worst = 0.0;
+  for (int j = 0; j < 24; ++j) {
+    std::vector<Eigen::Vector3d> xp = x, xm = x;
+    xp[static_cast<std::size_t>(nodes[static_cast<std::size_t>(j / 3)])](j % 3) += h;
+    xm[static_cast<std::size_t>(nodes[static_cast<std::size_t>(j / 3)])](j % 3) -= h;
+    worst = std::max(worst, ((forces(xp, nullptr) - forces(xm, nullptr)) / (2.0 * h) - K.col(j)).cwiseAbs().maxCoeff());
+  }
+  EXPECT_LT(worst, 1e-6 * K.cwiseAbs().maxCoeff());
+  std::printf("brick with the tool on its face: tangent error %.2e of its largest entry\n", worst / K.cwiseAbs().maxCoeff());
+}
+
 // A plane-strain strip (1 x 1 x 1 mm, four elements along, y held) of an elastic-perfectly
 // plastic von Mises material bent to 17 times its yield curvature by turning one end face by
 // 0.005 rad (u_x = -theta z; the chord's shortening, theta^2 / 6 = 4e-6, is 3 % of the yield

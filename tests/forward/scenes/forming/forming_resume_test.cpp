@@ -67,6 +67,16 @@ TEST(FormingResume, IndentLineStoppedMidwayResumesBitForBit) {
   stop_and_resume(s, "indent_line", stop);
 }
 
+// The brick family's checkpoint state (centre points, hourglass amplitudes and forces) and the
+// tool's contact on the top faces.
+TEST(FormingResume, BrickIndentStoppedMidwayResumesBitForBit) {
+  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_brick.toml");
+  s.checkpoint_increments = 8;
+  RunControl stop;
+  stop.stop_after_increments = 21;  // checkpoint after 16, deep in the plastic range
+  stop_and_resume(s, "indent_brick", stop);
+}
+
 TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
   const fs::path file = test::write_tiny_line(temp_path("line.toml"), "checkpoint_increments = 10\n");
   const FormingScene s = read_forming_scene(file.string());
