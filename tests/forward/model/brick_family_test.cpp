@@ -24,6 +24,14 @@ material::MaterialParams<double> aa3003() {  // card C.3 + C.4 (Hill 1948, G + H
   return p;
 }
 
+// Newton over the load factor in equal steps.
+solver::NewtonSummary solve_in_steps(FeModel& model, const solver::DofConstraints& c, double step) {
+  solver::NewtonOptions o;
+  o.initial_increment = o.max_increment = step;
+  solver::NewtonSolver s(model, c, o);
+  return s.solve();
+}
+
 // A 4 x 2 x 1 mm block in 2 x 2 x 3 bricks, stretched by 25 % along x (the rolling direction)
 // and free to contract: uniaxial stress. Every brick then holds the same state, with
 //  * T_yy = T_zz = 0 (free lateral faces),
@@ -45,10 +53,7 @@ TEST(BrickFamily, SolidBarPulledAlongTheRollingDirectionIsUniaxialHill) {
   for (int n : solid.node_sets.at("edge_ymin")) c.prescribe(model.node_dof(n, 1));
   for (int n : solid.node_sets.at("bottom")) c.prescribe(model.node_dof(n, 2));
   c.finalize();
-  solver::NewtonOptions o;
-  o.initial_increment = o.max_increment = 0.05;
-  solver::NewtonSolver s(model, c, o);
-  const auto result = s.solve();
+  const auto result = solve_in_steps(model, c, 0.05);
   ASSERT_TRUE(result.converged) << result.message;
   const material::ReturnMapping<double, 6> law(aa3003());
   const double lx = 1.25;
@@ -153,10 +158,7 @@ TEST(BrickFamily, ToolPressesTheTopFacesAndTheClampsCarryItsForce) {
       for (int k = 0; k < 3; ++k)
         if (!c.prescribed(model.node_dof(n, k))) c.prescribe(model.node_dof(n, k));
   c.finalize();
-  solver::NewtonOptions o;
-  o.initial_increment = o.max_increment = 0.1;
-  solver::NewtonSolver s(model, c, o);
-  const auto result = s.solve();
+  const auto result = solve_in_steps(model, c, 0.1);
   ASSERT_TRUE(result.converged) << result.message;
   const Eigen::Vector3d f = tool.summary().force_on_sheet;
   ASSERT_LT(f.z(), 0.0);
@@ -181,7 +183,7 @@ TEST(BrickFamily, ToolPressesTheTopFacesAndTheClampsCarryItsForce) {
 }
 
 // The tangent of a top-layer brick with the tool's contact on its face (penalty, friction while
-// the tool slides) against central differences of its forces, at a rotated, stretched state.
+// the tool slides) against central differences of its forces, at a stretched and bent state.
 TEST(BrickFamily, TangentWithTheToolOnTheTopFaceMatchesCentralDifferences) {
   const mesh::Mesh mid = mesh::square_sheet({4.0, 4.0, 2, 2, false, 1.0, 1.0, 0, {}});
   const mesh::Mesh solid = mesh::extrude_sheet(mid, 1.0, 2);
@@ -257,10 +259,7 @@ double bent_strip_moment_ratio(int layers, const element::HourglassOptions& hour
   }
   for (int n : solid.node_sets.at("edge_xmax")) c.prescribe(model.node_dof(n, 0), -theta * solid.nodes[static_cast<std::size_t>(n)].z());
   c.finalize();
-  solver::NewtonOptions o;
-  o.initial_increment = o.max_increment = 0.05;
-  solver::NewtonSolver s(model, c, o);
-  const auto result = s.solve();
+  const auto result = solve_in_steps(model, c, 0.05);
   if (!result.converged) {
     ADD_FAILURE() << layers << " layers: " << result.message;
     return 0.0;

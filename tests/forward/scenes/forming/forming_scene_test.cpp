@@ -100,19 +100,21 @@ TEST(FormingScene, GcodeLinePathGivesTheSameForcesAsTheBuiltInPath) {
   fs::remove(nc);
 }
 
+// The reader's error for a scene text (empty: none).
+std::string error_of(const std::string& text) {
+  const fs::path f = fs::temp_directory_path() / ("spifit_forming_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(f) << text;
+  std::string err;
+  try {
+    read_forming_scene(f.string());
+  } catch (const io::InputError& e) {
+    err = e.what();
+  }
+  fs::remove(f);
+  return err;
+}
+
 TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
-  auto error_of = [](const std::string& text) {
-    const fs::path f = fs::temp_directory_path() / ("spifit_forming_" + std::to_string(::getpid()) + ".toml");
-    std::ofstream(f) << text;
-    std::string err;
-    try {
-      read_forming_scene(f.string());
-    } catch (const io::InputError& e) {
-      err = e.what();
-    }
-    fs::remove(f);
-    return err;
-  };
   const std::string head = "[scene]\nkind = \"indent\"\nmaterial = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n";
   EXPECT_NE(error_of(head + "[[path]]\nx = 0\ny = 0\nz = 1\n[[path]]\nx = 0\ny = 0\nz = 0.5\n").find("never goes below"), std::string::npos);
   EXPECT_NE(error_of(head + "[[path]]\nx = 0\ny = 0\nz = -1\n[[path]]\nx = 0\ny = 0\nz = -2\n").find("starts inside the sheet"),
@@ -130,18 +132,6 @@ TEST(FormingScene, ReaderRejectsPathsThatMissTheSheetOrStartInsideIt) {
 // The sheet's element family: keys that belong to one family only, a law the solid cannot take,
 // the scheme that has shells only; each refused with the file, key and value.
 TEST(FormingScene, ReaderRefusesWhatTheSheetsElementsCannotTake) {
-  auto error_of = [](const std::string& text) {
-    const fs::path f = fs::temp_directory_path() / ("spifit_forming_element_" + std::to_string(::getpid()) + ".toml");
-    std::ofstream(f) << text;
-    std::string err;
-    try {
-      read_forming_scene(f.string());
-    } catch (const io::InputError& e) {
-      err = e.what();
-    }
-    fs::remove(f);
-    return err;
-  };
   const std::string head = "[scene]\nkind = \"indent\"\nmaterial = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n";
   const std::string brick = "[sheet]\nelement = \"brick\"\n";
   EXPECT_NE(error_of(head + "[sheet]\nelement = \"tetra\"\n").find("sheet.element"), std::string::npos);
@@ -175,7 +165,9 @@ TEST(FormingScene, BrickIndentFallsWithLayersTowardsTheShell) {
     ASSERT_TRUE(r.ok()) << r.message;
     const double peak = r.force.peak().z();
     std::printf("indent with %d brick layer(s): peak force %.2f N\n", layers, peak);
-    if (previous > 0.0) EXPECT_LT(peak, previous) << layers;
+    if (previous > 0.0) {
+      EXPECT_LT(peak, previous) << layers;
+    }
     previous = peak;
     if (layers == 3) {
       ASSERT_EQ(r.sections.size(), 1u);
