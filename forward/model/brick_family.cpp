@@ -152,16 +152,17 @@ void BrickFamily::add_energies(const FeModel&, ModelEnergies* energies) const {
 
 void BrickFamily::add_vtu_data(const FeModel&, mesh::VtuFrame* frame) const {
   mesh::VtuField eqps{"eqps", 1, {}}, thickness{"thickness", 1, {}};
-  mesh::VtuField s11{"stress_11", 1, {}}, s22{"stress_22", 1, {}}, s33{"stress_33", 1, {}};
+  mesh::VtuField s11{"stress_11", 1, {}}, s22{"stress_22", 1, {}}, s33{"stress_33", 1, {}}, hourglass{"hourglass_work", 1, {}};
   for (int e = 0; e < num_elements(); ++e) {
     const auto& st = elements_[static_cast<std::size_t>(e)].point().committed();
+    hourglass.values.push_back(elements_[static_cast<std::size_t>(e)].hourglass_energy());
     eqps.values.push_back(st.eqps);
     thickness.values.push_back(element_thickness(e));
     s11.values.push_back(st.stress(0));
     s22.values.push_back(st.stress(1));
     s33.values.push_back(st.stress(2));
   }
-  for (auto* f : {&eqps, &thickness, &s11, &s22, &s33}) frame->cell_data.push_back(std::move(*f));
+  for (auto* f : {&eqps, &thickness, &s11, &s22, &s33, &hourglass}) frame->cell_data.push_back(std::move(*f));
 }
 
 MidSurface BrickFamily::mid_surface(const FeModel& model) const {

@@ -55,8 +55,8 @@ class BrickFamily final : public ElementFamily {
   const std::vector<std::string>& warnings() const override { return warnings_; }
   // Elastic (the centre's stored energy and the hourglass stabilisation's) and plastic work.
   void add_energies(const FeModel& model, ModelEnergies* energies) const override;
-  // Cell data: equivalent plastic strain, sheet thickness, and the Kirchhoff stress along the
-  // three material axes.
+  // Cell data: equivalent plastic strain, sheet thickness, the Kirchhoff stress along the three
+  // material axes, and the work of the hourglass forces [N mm].
   void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const override;
   // Each node column's midpoint (reference and current) and the distance between its bottom and
   // top nodes (mesh::extrude_sheet's columns: node k n + i at level k).

@@ -39,6 +39,9 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
   t.integer({"sheet.layers", {}, "", Range::closed(1, 16), {},
              "bricks through the thickness (sheet.element = \"brick\"; default 3, as the thesis's brick simulations)", false},
             [](FormingScene& s) -> int& { return s.layers; });
+  t.real({"sheet.hourglass_scale", {}, "", Range::closed(0.0, 10.0), {},
+          "bricks: factor on the hourglass stabilisation's stiffness (1: the incompatible-modes element's, on the centre's tangent)", true},
+         [](FormingScene& s) -> double& { return s.hourglass_scale; });
   t.real({"sheet.hourglass_stiffness", {}, "", Range::closed(0.0, 1.0), {},
           "> 0: one in-plane point per element (about a quarter of the material updates), with this fraction of the elastic "
           "section stiffness on the strains' variation over the element (hourglass control); 0: 2 x 2 points", true},

@@ -58,6 +58,7 @@ FeRunSetup forming_setup(const FormingScene& s) {
   f.time_of_travel = [feed](double travel) { return travel / feed; };
   f.element = s.element;
   f.layers = s.layers;
+  f.hourglass.scale = s.hourglass_scale;
   f.constraints = [&s](model::FeModel& m) { return sheet_constraints(s, m); };
   f.marks = forming_marks(s, f.tool_path);
   f.newton = tool_newton_options(s, length);
@@ -120,7 +121,7 @@ nlohmann::json forming_inputs(const FormingScene& s, const model::FeModel& model
   if (s.hourglass_stiffness > 0.0) j["model"]["hourglass_stiffness"] = s.hourglass_stiffness;
   if (s.element != "shell") {
     j["model"].erase("thickness_points");
-    j["model"].update({{"element", s.element}, {"layers", s.layers}});
+    j["model"].update({{"element", s.element}, {"layers", s.layers}, {"hourglass_scale", s.hourglass_scale}});
   }
   if (s.coarse_levels > 0)
     j["model"].update({{"coarse_levels", s.coarse_levels}, {"fine_band", s.fine_band}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});

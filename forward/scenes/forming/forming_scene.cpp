@@ -157,6 +157,9 @@ SheetAndTool forming_sheet_and_tool(const FormingScene& s) {
 InputViolation solid_sheet_violation(const FormingScene& s) {
   if (s.element == "shell") {
     if (s.layers != 0) return {"sheet.layers", std::to_string(s.layers), "layers are for solid sheets: set sheet.element = \"brick\" or remove it"};
+    if (s.hourglass_scale != 1.0)
+      return {"sheet.hourglass_scale", io::format_number(s.hourglass_scale),
+              "the bricks' stabilisation factor; the shell's one-point option is sheet.hourglass_stiffness"};
     return {};
   }
   const std::string quoted = "\"" + s.element + "\"";

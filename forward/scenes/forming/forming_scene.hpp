@@ -44,6 +44,8 @@ struct FormingScene {
   std::string element = "shell";
   int layers = 0;
   static constexpr int kBrickLayers = 3;
+  // The bricks' hourglass stabilisation: factor on its stiffness (element::HourglassOptions).
+  double hourglass_scale = 1.0;
   // > 0: each element carries its layers at its centre only, with this fraction of the elastic
   // section stiffness on the strains' variation over it (element::ShellOptions). 0: 2 x 2 points.
   double hourglass_stiffness = 0.0;

@@ -136,6 +136,7 @@ TEST(FormingScene, ReaderRefusesWhatTheSheetsElementsCannotTake) {
   const std::string brick = "[sheet]\nelement = \"brick\"\n";
   EXPECT_NE(error_of(head + "[sheet]\nelement = \"tetra\"\n").find("sheet.element"), std::string::npos);
   EXPECT_NE(error_of(head + "[sheet]\nlayers = 2\n").find("layers are for solid sheets"), std::string::npos);
+  EXPECT_NE(error_of(head + "[sheet]\nhourglass_scale = 0.5\n").find("the bricks' stabilisation factor"), std::string::npos);
   const std::string zero = error_of(head + brick + "layers = 0\n");
   EXPECT_NE(zero.find("sheet.layers"), std::string::npos) << zero;
   EXPECT_NE(zero.find("0"), std::string::npos) << zero;
