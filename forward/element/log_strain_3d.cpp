@@ -117,6 +117,8 @@ LogStrain3 log_strain_3d(const Voigt6& green) {
   const Eigen3 d = decompose(green);
   LogStrain3 out;
   out.value = value_from(d);
+  out.basis = d.Q;
+  out.lambda = d.lambda;
   Mat3 f1;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) f1(i, j) = log_divided_difference(d.lambda(i), d.lambda(j));
@@ -129,14 +131,13 @@ LogStrain3 log_strain_3d(const Voigt6& green) {
   return out;
 }
 
-Voigt6x6 log_strain_3d_second(const Voigt6& green, const Voigt6& T) {
-  const Eigen3 d = decompose(green);
+Voigt6x6 log_strain_3d_second(const LogStrain3& ls, const Voigt6& T) {
   double f2[3][3][3];
   for (int i = 0; i < 3; ++i)
     for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j) f2[i][k][j] = log_divided_difference(d.lambda(i), d.lambda(k), d.lambda(j));
-  const Mat3 t = d.Q.transpose() * tensor_of_stress(T) * d.Q;
-  const auto units = unit_strains_in_basis(d.Q);
+      for (int j = 0; j < 3; ++j) f2[i][k][j] = log_divided_difference(ls.lambda(i), ls.lambda(k), ls.lambda(j));
+  const Mat3 t = ls.basis.transpose() * tensor_of_stress(T) * ls.basis;
+  const auto units = unit_strains_in_basis(ls.basis);
   // W(b, c) = sum_ijk f2_ikj t_ij A_ik B_kj with A, B the unit strains b, c; then
   // T : d2 eps[b, c] = 2 T : D2 ln(C)[b, c] = 2 (W(b, c) + W(c, b)).
   Voigt6x6 W;

@@ -29,15 +29,18 @@ using Voigt6x6 = Eigen::Matrix<double, 6, 6>;
 struct LogStrain3 {
   Voigt6 value;      // eps
   Voigt6x6 first;    // d eps_i / d E_j
+  // The eigenbasis of E and the eigenvalues of C, kept for log_strain_3d_second.
+  Eigen::Matrix3d basis;
+  Eigen::Vector3d lambda;
 };
 
 // Value and first derivative. Requires C positive definite (the callers check det F > 0).
 LogStrain3 log_strain_3d(const Voigt6& green);
 // The value alone, bit for bit that of log_strain_3d.
 Voigt6 log_strain_3d_value(const Voigt6& green);
-// sum_i T_i d2 eps_i / dE_j dE_k at the strain `green`: the geometric part of the tangent of
-// S = (d eps / dE)^T T.
-Voigt6x6 log_strain_3d_second(const Voigt6& green, const Voigt6& T);
+// sum_i T_i d2 eps_i / dE_j dE_k at the strain of `ls` (log_strain_3d's result, whose
+// eigenbasis it reuses): the geometric part of the tangent of S = (d eps / dE)^T T.
+Voigt6x6 log_strain_3d_second(const LogStrain3& ls, const Voigt6& T);
 
 // ln[a, b] and ln[a, b, c]: the first and second divided differences of the natural logarithm
 // (exposed for the tests).

@@ -48,7 +48,7 @@ PointStatus SolidPoint::update(const Voigt6& green, Voigt6* S, Voigt6x6* tangent
   tangent_trial_ = ct;
   const Voigt6& t = point_.trial().stress;
   if (S) *S = ls.first.transpose() * t;
-  if (tangent) *tangent = ls.first.transpose() * ct * ls.first + log_strain_3d_second(green, t);
+  if (tangent) *tangent = ls.first.transpose() * ct * ls.first + log_strain_3d_second(ls, t);
   return status;
 }
 

@@ -74,7 +74,7 @@ void check_derivatives(const Voigt6& green, const char* where) {
   const LogStrain3 d = log_strain_3d(green);
   Voigt6 T;
   T << 120.0, -40.0, 15.0, 60.0, -25.0, 33.0;
-  const Voigt6x6 L = log_strain_3d_second(green, T);
+  const Voigt6x6 L = log_strain_3d_second(d, T);
   const double h = 1e-6;
   for (int j = 0; j < 6; ++j) {
     Voigt6 gp = green, gm = green;
