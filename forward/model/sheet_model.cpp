@@ -13,8 +13,6 @@ const std::vector<std::string>& sheet_element_names() {
   return names;
 }
 
-bool sheet_element_has_rotations(const std::string& element) { return element == "shell"; }
-
 std::unique_ptr<FeModel> make_sheet_model(const mesh::Mesh& mid, double thickness, const material::MaterialParams<double>& material,
                                           const SheetModelSpec& spec, mesh::Mesh* solid) {
   if (spec.element == "shell") return std::make_unique<ShellModel>(mid, thickness, material, spec.shell);

@@ -22,11 +22,8 @@ struct SheetModelSpec {
   element::HourglassOptions hourglass;  // the brick's stabilisation
 };
 
-// "shell", "brick".
+// "shell", "brick": the scenes' [sheet] element choices.
 const std::vector<std::string>& sheet_element_names();
-// Whether a family has nodes with rotations and directors (the shell), which the scenes clamp
-// and frame.
-bool sheet_element_has_rotations(const std::string& element);
 
 // The model of a sheet of the given thickness whose mid-surface mesh is `mid`. Solids are built
 // on mesh::extrude_sheet(mid, thickness, layers), kept in *solid, which must outlive the model

@@ -1,7 +1,10 @@
 #include "forward/scenes/forming/forming_inputs.hpp"
 
+#include "forward/model/sheet_model.hpp"
 #include "forward/scenes/common/scene_inputs.hpp"
 #include "forward/scenes/common/tool_scene_inputs.hpp"
+
+#include <algorithm>
 
 namespace spifit::scene {
 namespace {
@@ -29,12 +32,14 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
          [](FormingScene& s) -> double& { return s.fine_band; });
   t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
             [](FormingScene& s) -> int& { return s.thickness_points; });
-  t.text({"sheet.element", {}, "", {}, {"shell", "brick"},
+  t.text({"sheet.element", {}, "", {}, model::sheet_element_names(),
           "the sheet's elements: shells on its mid-surface, or one-point bricks in sheet.layers layers through the thickness", false},
          {[](const FormingScene& s) -> std::string { return s.element; },
           [](FormingScene& s, const std::string& v) {
+            const auto& names = model::sheet_element_names();
+            if (std::find(names.begin(), names.end(), v) == names.end()) return false;
             s.element = v;
-            return v == "shell" || v == "brick";
+            return true;
           }});
   t.integer({"sheet.layers", {}, "", Range::closed(1, 16), {},
              "bricks through the thickness (sheet.element = \"brick\"; default 3, as the thesis's brick simulations)", false},
