@@ -12,23 +12,6 @@ namespace {
 
 constexpr double kCorner[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {1, 1, 1}, {-1, 1, 1}};
 
-// dN_I / d(xi, eta, zeta) at a point of the parent cube (3 x 8).
-Eigen::Matrix<double, 3, 8> parent_derivatives(const Eigen::Vector3d& s) {
-  Eigen::Matrix<double, 3, 8> dN;
-  for (int I = 0; I < 8; ++I) {
-    const double a = 1 + kCorner[I][0] * s(0), b = 1 + kCorner[I][1] * s(1), c = 1 + kCorner[I][2] * s(2);
-    dN.col(I) << kCorner[I][0] * b * c / 8, kCorner[I][1] * a * c / 8, kCorner[I][2] * a * b / 8;
-  }
-  return dN;
-}
-
-// J(r, c) = d x_c / d s_r.
-Eigen::Matrix3d jacobian(const HexCorners& X, const Eigen::Matrix<double, 3, 8>& dN) {
-  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
-  for (int I = 0; I < 8; ++I) J += dN.col(I) * X[static_cast<std::size_t>(I)].transpose();
-  return J;
-}
-
 // The eight 2 x 2 x 2 Gauss points (weights 1).
 Eigen::Vector3d gauss_point(int p) {
   const double g = 1.0 / std::sqrt(3.0);
@@ -75,6 +58,21 @@ double hourglass_value(int a, int I) {
 
 }  // namespace
 
+Eigen::Matrix<double, 3, 8> hex_parent_derivatives(const Eigen::Vector3d& s) {
+  Eigen::Matrix<double, 3, 8> dN;
+  for (int I = 0; I < 8; ++I) {
+    const double a = 1 + kCorner[I][0] * s(0), b = 1 + kCorner[I][1] * s(1), c = 1 + kCorner[I][2] * s(2);
+    dN.col(I) << kCorner[I][0] * b * c / 8, kCorner[I][1] * a * c / 8, kCorner[I][2] * a * b / 8;
+  }
+  return dN;
+}
+
+Eigen::Matrix3d hex_jacobian(const HexCorners& X, const Eigen::Matrix<double, 3, 8>& dN) {
+  Eigen::Matrix3d J = Eigen::Matrix3d::Zero();
+  for (int I = 0; I < 8; ++I) J += dN.col(I) * X[static_cast<std::size_t>(I)].transpose();
+  return J;
+}
+
 Voigt6Matrix isotropic_elasticity(double E, double nu) {
   Voigt6Matrix D = Voigt6Matrix::Zero();
   const double lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
@@ -90,8 +88,8 @@ HexUniformGradient hex_uniform_gradient(const HexCorners& X) {
   HexUniformGradient g;
   g.b.setZero();
   for (int p = 0; p < 8; ++p) {
-    const Eigen::Matrix<double, 3, 8> dN = parent_derivatives(gauss_point(p));
-    const Eigen::Matrix3d J = jacobian(X, dN);
+    const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(gauss_point(p));
+    const Eigen::Matrix3d J = hex_jacobian(X, dN);
     const double det = checked_determinant(J, p);
     g.b += J.inverse() * dN * det;
     g.volume += det;
@@ -137,8 +135,8 @@ HexMatrix hex_one_point_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
 HexMatrix hex_full_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
   HexMatrix K = HexMatrix::Zero();
   for (int p = 0; p < 8; ++p) {
-    const Eigen::Matrix<double, 3, 8> dN = parent_derivatives(gauss_point(p));
-    const Eigen::Matrix3d J = jacobian(X, dN);
+    const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(gauss_point(p));
+    const Eigen::Matrix3d J = hex_jacobian(X, dN);
     const double det = checked_determinant(J, p);
     const Eigen::Matrix<double, 6, 24> B = strain_rows<8>(Eigen::Matrix<double, 3, 8>(J.inverse() * dN));
     K += B.transpose() * D * B * det;
@@ -147,7 +145,7 @@ HexMatrix hex_full_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
 }
 
 HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
-  const Eigen::Matrix3d J0 = jacobian(X, parent_derivatives(Eigen::Vector3d::Zero()));
+  const Eigen::Matrix3d J0 = hex_jacobian(X, hex_parent_derivatives(Eigen::Vector3d::Zero()));
   const double det0 = checked_determinant(J0, -1);
   const Eigen::Matrix3d J0inv = J0.inverse();
   HexMatrix Kuu = HexMatrix::Zero();
@@ -155,8 +153,8 @@ HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matr
   Eigen::Matrix<double, 9, 9> Kaa = Eigen::Matrix<double, 9, 9>::Zero();
   for (int p = 0; p < 8; ++p) {
     const Eigen::Vector3d s = gauss_point(p);
-    const Eigen::Matrix<double, 3, 8> dN = parent_derivatives(s);
-    const Eigen::Matrix3d J = jacobian(X, dN);
+    const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(s);
+    const Eigen::Matrix3d J = hex_jacobian(X, dN);
     const double det = checked_determinant(J, p);
     const Eigen::Matrix<double, 6, 24> B = strain_rows<8>(Eigen::Matrix<double, 3, 8>(J.inverse() * dN));
     // Modes 1 - s_k^2: parent gradient -2 s_k e_k, mapped with the centre's Jacobian and scaled

@@ -25,6 +25,11 @@ using HexVector = Eigen::Matrix<double, 24, 1>;
 using HexMatrix = Eigen::Matrix<double, 24, 24>;
 using Voigt6Matrix = Eigen::Matrix<double, 6, 6>;
 
+// dN_I / d(xi, eta, zeta) at a point s of the parent cube (3 x 8).
+Eigen::Matrix<double, 3, 8> hex_parent_derivatives(const Eigen::Vector3d& s);
+// J(r, c) = d x_c / d s_r for the corners X and dN = hex_parent_derivatives(s).
+Eigen::Matrix3d hex_jacobian(const HexCorners& X, const Eigen::Matrix<double, 3, 8>& dN);
+
 // Isotropic elastic matrix (Voigt, engineering shears).
 Voigt6Matrix isotropic_elasticity(double E, double nu);
 

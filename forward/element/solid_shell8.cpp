@@ -1,0 +1,331 @@
+#include "forward/element/solid_shell8.hpp"
+
+#include "forward/io/binary_archive.hpp"
+
+#include <Eigen/LU>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace spifit::element {
+
+using Mat3 = Eigen::Matrix3d;
+using Vec3 = Eigen::Vector3d;
+using Row8 = Eigen::Matrix<double, 1, 8>;
+using Grad = Eigen::Matrix<double, 3, 8>;  // d e / d x_I per corner (columns)
+
+namespace {
+
+constexpr int kVoigtPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+// The corner columns (xi, eta) of the bottom face, and the shear sampling points: e13 at
+// eta = -1, +1 (xi = 0), e23 at xi = -1, +1 (eta = 0).
+constexpr double kColumn[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+constexpr double kShearSample[4][2] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}};
+constexpr int kMaxEnhancedIterations = 12;
+constexpr double kEnhancedTolerance = 1e-10;
+
+// T with E_material = T e for the convective components e (Voigt, engineering shears), where
+// E_material = Jinv E_conv Jinv^T and Jinv(c, r) = d xi_r / d X_c.
+Voigt6x6 convective_to_material(const Mat3& Jinv) {
+  Voigt6x6 T;
+  for (int k = 0; k < 6; ++k) {
+    Mat3 e = Mat3::Zero();
+    const int i = kVoigtPair[k][0], j = kVoigtPair[k][1];
+    if (i == j) e(i, i) = 1.0;
+    else e(i, j) = e(j, i) = 0.5;
+    const Mat3 E = Jinv * e * Jinv.transpose();
+    T.col(k) << E(0, 0), E(1, 1), E(2, 2), 2.0 * E(0, 1), 2.0 * E(0, 2), 2.0 * E(1, 2);
+  }
+  return T;
+}
+
+Vec3 tangent(const Eigen::Matrix<double, 3, 8>& x, const Eigen::Matrix<double, 3, 8>& dN, int r) { return x * dN.row(r).transpose(); }
+
+double hex_jacobian_determinant(const Eigen::Matrix<double, 3, 8>& x, const Eigen::Matrix<double, 3, 8>& dN) {
+  return tangent(x, dN, 0).cross(tangent(x, dN, 1)).dot(tangent(x, dN, 2));
+}
+
+// A sampled convective component: its value, its derivative per corner and the two rows of
+// parent derivatives whose symmetric product is its second derivative.
+struct Sample {
+  double value = 0.0;
+  Grad grad;
+  Row8 a, b;
+};
+
+Sample sample_product(const Eigen::Matrix<double, 3, 8>& x, const Eigen::Matrix<double, 3, 8>& dN, int r, int s, double reference) {
+  const Vec3 gr = tangent(x, dN, r), gs = tangent(x, dN, s);
+  Sample out;
+  out.a = dN.row(r);
+  out.b = dN.row(s);
+  if (r == s) {
+    out.value = 0.5 * gr.dot(gr) - reference;
+    out.grad = gr * out.a;
+  } else {
+    out.value = gr.dot(gs) - reference;
+    out.grad = gs * out.a + gr * out.b;
+  }
+  return out;
+}
+
+// The second derivative of a sampled component as an 8 x 8 matrix (times the 3 x 3 identity):
+// a a^T for a normal component, a b^T + b a^T for a shear.
+Eigen::Matrix<double, 8, 8> second(const Sample& s, bool normal) {
+  if (normal) return s.a.transpose() * s.a;
+  return s.a.transpose() * s.b + s.b.transpose() * s.a;
+}
+
+}  // namespace
+
+struct SolidShell8::Sums {
+  HexVector fu = HexVector::Zero();
+  EnhancedVector ra = EnhancedVector::Zero();
+  Eigen::Matrix<double, kEnhanced, kEnhanced> kaa = Eigen::Matrix<double, kEnhanced, kEnhanced>::Zero();
+  Eigen::Matrix<double, 24, kEnhanced> kua = Eigen::Matrix<double, 24, kEnhanced>::Zero();
+  HexMatrix kuu = HexMatrix::Zero();
+};
+
+SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const ThicknessRule& rule)
+    : axes_(axes), zeta_(rule.zeta) {
+  if (!((axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-10 && axes.determinant() > 0.0))
+    throw std::invalid_argument("material axes of a solid-shell must be orthonormal and right-handed");
+  if (rule.zeta.empty()) throw std::invalid_argument("a solid-shell needs at least one point through the thickness");
+  HexCorners Xm;
+  for (std::size_t I = 0; I < 8; ++I) {
+    Xm[I] = axes.transpose() * X[I];
+    X_.col(static_cast<int>(I)) = Xm[I];
+  }
+  for (std::size_t I = 0; I < 8; ++I) x_committed_.col(static_cast<int>(I)) = X[I];
+  x_trial_ = x_committed_;
+  auto checked_inverse = [&](const Vec3& s, double* det) {
+    const Mat3 J = hex_jacobian(Xm, hex_parent_derivatives(s));
+    *det = J.determinant();
+    if (!(*det > 0.0))
+      throw std::invalid_argument("solid-shell: Jacobian " + std::to_string(*det) + " <= 0 at (" + std::to_string(s(0)) + ", " +
+                                  std::to_string(s(1)) + ", " + std::to_string(s(2)) + ") (inverted or badly ordered corners)");
+    return Mat3(J.inverse());
+  };
+  double det0 = 0.0;
+  const Voigt6x6 T0 = convective_to_material(checked_inverse(Vec3::Zero(), &det0));
+  const double g = 1.0 / std::sqrt(3.0);
+  for (std::size_t k = 0; k < zeta_.size(); ++k) {
+    const double zeta = zeta_[k];
+    for (int q = 0; q < 4; ++q) {
+      PointGeometry pg;
+      pg.s = Vec3(g * kColumn[q][0], g * kColumn[q][1], zeta);
+      pg.level = static_cast<int>(k);
+      double det = 0.0;
+      pg.T = convective_to_material(checked_inverse(pg.s, &det));
+      Eigen::Matrix<double, 6, kEnhanced> M = Eigen::Matrix<double, 6, kEnhanced>::Zero();
+      M.row(2) << zeta, zeta * pg.s(0), zeta * pg.s(1), zeta * pg.s(0) * pg.s(1);
+      pg.Gamma = (det0 / det) * T0 * M;
+      pg.weight = rule.weight[k] * det;
+      volume0_ += pg.weight;
+      geometry_.push_back(pg);
+      points_.emplace_back(law);
+    }
+    Eigen::Vector4d ref;
+    for (int m = 0; m < 4; ++m) {
+      const Grad dN = hex_parent_derivatives(Vec3(kShearSample[m][0], kShearSample[m][1], zeta));
+      ref(m) = tangent(X_, dN, m < 2 ? 0 : 1).dot(tangent(X_, dN, 2));
+    }
+    shear0_.push_back(ref);
+  }
+  for (int L = 0; L < 4; ++L) {
+    const Vec3 G3 = tangent(X_, hex_parent_derivatives(Vec3(kColumn[L][0], kColumn[L][1], 0.0)), 2);
+    thick0_(L) = 0.5 * G3.dot(G3);
+  }
+  g3_norm0_ = tangent(X_, hex_parent_derivatives(Vec3::Zero()), 2).norm();
+}
+
+void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool full, Sums* sums, PointStatus* status) {
+  *sums = Sums{};
+  // e33 at the corner columns (independent of zeta for the trilinear field).
+  std::array<Sample, 4> thick;
+  for (int L = 0; L < 4; ++L) thick[static_cast<std::size_t>(L)] = sample_product(x, hex_parent_derivatives(Vec3(kColumn[L][0], kColumn[L][1], 0.0)), 2, 2, thick0_(L));
+  std::array<Sample, 4> shear;
+  int level = -1;
+  for (std::size_t p = 0; p < geometry_.size(); ++p) {
+    const PointGeometry& pg = geometry_[p];
+    if (pg.level != level) {
+      level = pg.level;
+      const double zeta = zeta_[static_cast<std::size_t>(level)];
+      for (int m = 0; m < 4; ++m)
+        shear[static_cast<std::size_t>(m)] = sample_product(x, hex_parent_derivatives(Vec3(kShearSample[m][0], kShearSample[m][1], zeta)),
+                                                            m < 2 ? 0 : 1, 2, shear0_[static_cast<std::size_t>(level)](m));
+    }
+    const double xi = pg.s(0), eta = pg.s(1);
+    const Grad dN = hex_parent_derivatives(pg.s);
+    const double det = hex_jacobian_determinant(x, dN) / hex_jacobian_determinant(X_, dN);
+    if (!(det > 0.0)) {
+      status->ok = false;
+      status->reason = std::isfinite(det) ? "element turned inside out (det F = " + std::to_string(det) + ")" : "non-finite positions";
+      status->suggested_scale = 0.25;
+      return;
+    }
+    const Sample e11 = sample_product(x, dN, 0, 0, 0.0), e22 = sample_product(x, dN, 1, 1, 0.0), e12 = sample_product(x, dN, 0, 1, 0.0);
+    const Vec3 G1 = tangent(X_, dN, 0), G2 = tangent(X_, dN, 1);
+    const double w13[2] = {0.5 * (1.0 - eta), 0.5 * (1.0 + eta)}, w23[2] = {0.5 * (1.0 - xi), 0.5 * (1.0 + xi)};
+    double w33[4];
+    for (int L = 0; L < 4; ++L) w33[L] = 0.25 * (1.0 + kColumn[L][0] * xi) * (1.0 + kColumn[L][1] * eta);
+
+    Voigt6 e;
+    e(0) = e11.value - 0.5 * G1.dot(G1);
+    e(1) = e22.value - 0.5 * G2.dot(G2);
+    e(3) = e12.value - G1.dot(G2);
+    e(2) = 0.0;
+    for (int L = 0; L < 4; ++L) e(2) += w33[L] * thick[static_cast<std::size_t>(L)].value;
+    e(4) = w13[0] * shear[0].value + w13[1] * shear[1].value;
+    e(5) = w23[0] * shear[2].value + w23[1] * shear[3].value;
+    Eigen::Matrix<double, 6, 24> Bc;  // d e / d x (convective)
+    auto set_row = [&Bc](int r, const Grad& g) { Bc.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, 24>>(g.data()); };
+    set_row(0, e11.grad);
+    set_row(1, e22.grad);
+    set_row(3, e12.grad);
+    Grad g33 = Grad::Zero();
+    for (int L = 0; L < 4; ++L) g33 += w33[L] * thick[static_cast<std::size_t>(L)].grad;
+    set_row(2, g33);
+    set_row(4, w13[0] * shear[0].grad + w13[1] * shear[1].grad);
+    set_row(5, w23[0] * shear[2].grad + w23[1] * shear[3].grad);
+
+    const Voigt6 E = pg.T * e + pg.Gamma * alpha;
+    Voigt6 S;
+    Voigt6x6 D;
+    const PointStatus ps = points_[p].update(E, &S, &D);
+    if (!ps.ok) {
+      *status = ps;
+      return;
+    }
+    const Eigen::Matrix<double, 6, 24> B = pg.T * Bc;
+    const double w = pg.weight;
+    const Eigen::Matrix<double, 6, kEnhanced> DG = D * pg.Gamma;
+    sums->fu.noalias() += w * B.transpose() * S;
+    sums->ra.noalias() += w * pg.Gamma.transpose() * S;
+    sums->kaa.noalias() += w * pg.Gamma.transpose() * DG;
+    sums->kua.noalias() += w * B.transpose() * DG;
+    if (!full) continue;
+    sums->kuu.noalias() += w * B.transpose() * D * B;
+    // Geometric part: the convective stress times the second derivatives of e.
+    const Voigt6 s = w * pg.T.transpose() * S;
+    Eigen::Matrix<double, 8, 8> H = s(0) * second(e11, true) + s(1) * second(e22, true) + s(3) * second(e12, false);
+    for (int L = 0; L < 4; ++L) H += (s(2) * w33[L]) * second(thick[static_cast<std::size_t>(L)], true);
+    H += (s(4) * w13[0]) * second(shear[0], false) + (s(4) * w13[1]) * second(shear[1], false);
+    H += (s(5) * w23[0]) * second(shear[2], false) + (s(5) * w23[1]) * second(shear[3], false);
+    for (int I = 0; I < 8; ++I)
+      for (int J = 0; J < 8; ++J)
+        for (int i = 0; i < 3; ++i) sums->kuu(3 * I + i, 3 * J + i) += H(I, J);
+  }
+}
+
+PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix* K) {
+  PointStatus status;
+  Eigen::Matrix<double, 3, 8> x;
+  for (std::size_t I = 0; I < 8; ++I) x.col(static_cast<int>(I)) = xc[I];
+  if (!x.allFinite()) {
+    status.ok = false;
+    status.reason = "non-finite positions";
+    status.suggested_scale = 0.25;
+    return status;
+  }
+  const Eigen::Matrix<double, 3, 8> dx = x - x_committed_;
+  EnhancedVector alpha = alpha_ + dalpha_ * Eigen::Map<const Eigen::Matrix<double, 24, 1>>(dx.data());
+  Sums sums;
+  EnhancedVector step;
+  Eigen::PartialPivLU<Eigen::Matrix<double, kEnhanced, kEnhanced>> lu;
+  int it = 0;
+  for (;; ++it) {
+    accumulate(x, alpha, true, &sums, &status);
+    if (!status.ok) return status;
+    lu.compute(sums.kaa);
+    step = lu.solve(sums.ra);
+    if (!step.allFinite()) {
+      status.ok = false;
+      status.reason = "solid-shell: singular enhanced-strain stiffness";
+      status.suggested_scale = 0.25;
+      return status;
+    }
+    if (step.cwiseAbs().maxCoeff() <= kEnhancedTolerance) break;
+    if (it + 1 == kMaxEnhancedIterations) {
+      status.ok = false;
+      status.reason = "solid-shell: the enhanced strains did not converge (last change " + std::to_string(step.cwiseAbs().maxCoeff()) + ")";
+      status.suggested_scale = 0.5;
+      return status;
+    }
+    alpha -= step;
+  }
+  last_iterations_ = it + 1;
+  // The residual left in the enhanced equations, removed to first order.
+  if (f) *f = sums.fu - sums.kua * step;
+  const Eigen::Matrix<double, kEnhanced, 24> kaa_inv_kau = lu.solve(sums.kua.transpose());
+  if (K) *K = sums.kuu - sums.kua * kaa_inv_kau;
+  alpha_trial_ = alpha;
+  x_trial_ = x;
+  dalpha_trial_ = -kaa_inv_kau;
+  thickness_ratio_trial_ = tangent(x, hex_parent_derivatives(Vec3::Zero()), 2).norm() / g3_norm0_;
+  return status;
+}
+
+void SolidShell8::commit() {
+  for (auto& p : points_) p.commit();
+  alpha_ = alpha_trial_;
+  x_committed_ = x_trial_;
+  dalpha_ = dalpha_trial_;
+  thickness_ratio_ = thickness_ratio_trial_;
+}
+
+void SolidShell8::revert() {
+  for (auto& p : points_) p.revert();
+  alpha_trial_ = alpha_;
+  x_trial_ = x_committed_;
+  dalpha_trial_ = dalpha_;
+  thickness_ratio_trial_ = thickness_ratio_;
+}
+
+double SolidShell8::elastic_energy() const {
+  double sum = 0.0;
+  for (std::size_t p = 0; p < points_.size(); ++p) sum += geometry_[p].weight * points_[p].elastic_energy_density();
+  return sum;
+}
+
+double SolidShell8::plastic_work() const {
+  double sum = 0.0;
+  for (std::size_t p = 0; p < points_.size(); ++p) sum += geometry_[p].weight * points_[p].plastic_work_density();
+  return sum;
+}
+
+double SolidShell8::max_eqps() const {
+  double m = 0.0;
+  for (const auto& p : points_) m = std::max(m, p.committed().eqps);
+  return m;
+}
+
+Voigt6 SolidShell8::mean_stress() const {
+  Voigt6 s = Voigt6::Zero();
+  for (std::size_t p = 0; p < points_.size(); ++p) s += (geometry_[p].weight / volume0_) * points_[p].committed().stress;
+  return s;
+}
+
+void SolidShell8::save_state(io::BinaryWriter& w) const {
+  for (const auto& p : points_) p.save_state(w);
+  w.vector(alpha_);
+  w.vector(Eigen::Map<const Eigen::VectorXd>(x_committed_.data(), 24));
+  w.vector(Eigen::Map<const Eigen::VectorXd>(dalpha_.data(), kEnhanced * 24));
+  w.f64(thickness_ratio_);
+}
+
+void SolidShell8::load_state(io::BinaryReader& r) {
+  for (auto& p : points_) p.load_state(r);
+  const Eigen::VectorXd a = r.vector(), xc = r.vector(), da = r.vector();
+  if (a.size() != kEnhanced || xc.size() != 24 || da.size() != kEnhanced * 24)
+    throw io::ArchiveError("solid-shell: expected " + std::to_string(kEnhanced) + " enhanced parameters, 24 corner coordinates and their " +
+                           std::to_string(kEnhanced * 24) + " derivatives");
+  alpha_ = alpha_trial_ = a;
+  x_committed_ = x_trial_ = Eigen::Map<const Eigen::Matrix<double, 3, 8>>(xc.data());
+  dalpha_ = dalpha_trial_ = Eigen::Map<const Eigen::Matrix<double, kEnhanced, 24>>(da.data());
+  thickness_ratio_ = thickness_ratio_trial_ = r.f64();
+}
+
+}  // namespace spifit::element
