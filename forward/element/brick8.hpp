@@ -20,6 +20,7 @@
 // times its yield curvature carried 4.1 (two layers) to 1.4 (eight layers) times its plastic
 // limit moment with it, against 1.45 to 1.04 on the tangent (docs/design/numerics-solid.md).
 #include "forward/element/hex8_stiffness.hpp"
+#include "forward/element/solid_element.hpp"
 #include "forward/element/solid_point.hpp"
 
 #include <Eigen/Core>
@@ -34,13 +35,9 @@ struct HourglassOptions {
   bool elastic = false;
 };
 
-struct BrickStatus {
-  bool ok = true;
-  std::string reason;
-  double suggested_scale = 1.0;
-};
+using BrickStatus = PointStatus;
 
-class Brick8 {
+class Brick8 final : public SolidElement {
  public:
   using Law = SolidPoint::Law;
 
@@ -51,9 +48,9 @@ class Brick8 {
 
   // Internal forces (24: ux uy uz per corner) and their tangent at the current corners x; f, K
   // may be null. The centre's trial state is what commit() keeps.
-  BrickStatus evaluate(const HexCorners& x, HexVector* f, HexMatrix* K);
-  void commit();
-  void revert();
+  BrickStatus evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) override;
+  void commit() override;
+  void revert() override;
 
   // F (global current <- material-frame reference) at the corners x.
   Eigen::Matrix3d deformation_gradient(const HexCorners& x) const;
@@ -68,10 +65,15 @@ class Brick8 {
   const Eigen::Matrix<double, 12, 1>& hourglass_forces() const { return g_; }
   // Extent along the material normal of the committed state relative to the reference one,
   // h / h0 = 1 / |F^-T N| (Nanson), N the third material axis.
-  double thickness_ratio() const { return thickness_ratio_; }
+  double thickness_ratio() const override { return thickness_ratio_; }
+  // The centre's stored energy plus the hourglass forces' work; the centre's plastic work.
+  double elastic_energy() const override { return volume0_ * point_.elastic_energy_density() + hourglass_energy_; }
+  double plastic_work() const override { return volume0_ * point_.plastic_work_density(); }
+  double max_eqps() const override { return point_.committed().eqps; }
+  Voigt6 mean_stress() const override { return point_.committed().stress; }
 
-  void save_state(io::BinaryWriter& w) const;
-  void load_state(io::BinaryReader& r);
+  void save_state(io::BinaryWriter& w) const override;
+  void load_state(io::BinaryReader& r) override;
 
  private:
   Eigen::Matrix3d axes_;

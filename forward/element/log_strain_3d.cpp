@@ -122,7 +122,8 @@ LogStrain3 log_strain_3d(const Voigt6& green) {
   Mat3 f1;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) f1(i, j) = log_divided_difference(d.lambda(i), d.lambda(j));
-  const auto units = unit_strains_in_basis(d.Q);
+  out.units = unit_strains_in_basis(d.Q);
+  const auto& units = out.units;
   for (int b = 0; b < 6; ++b) {
     // d eps = D(ln C / 2)[2 dE] = D ln(C)[dE]
     const Mat3 de = d.Q * f1.cwiseProduct(units[static_cast<std::size_t>(b)]) * d.Q.transpose();
@@ -132,12 +133,16 @@ LogStrain3 log_strain_3d(const Voigt6& green) {
 }
 
 Voigt6x6 log_strain_3d_second(const LogStrain3& ls, const Voigt6& T) {
+  // ln[a, b, c] sorts its arguments: one evaluation per multiset of indices (10 of the 27).
   double f2[3][3][3];
   for (int i = 0; i < 3; ++i)
-    for (int k = 0; k < 3; ++k)
-      for (int j = 0; j < 3; ++j) f2[i][k][j] = log_divided_difference(ls.lambda(i), ls.lambda(k), ls.lambda(j));
+    for (int k = i; k < 3; ++k)
+      for (int j = k; j < 3; ++j) {
+        const double v = log_divided_difference(ls.lambda(i), ls.lambda(k), ls.lambda(j));
+        f2[i][k][j] = f2[i][j][k] = f2[k][i][j] = f2[k][j][i] = f2[j][i][k] = f2[j][k][i] = v;
+      }
   const Mat3 t = ls.basis.transpose() * tensor_of_stress(T) * ls.basis;
-  const auto units = unit_strains_in_basis(ls.basis);
+  const auto& units = ls.units;
   // W(b, c) = sum_ijk f2_ikj t_ij A_ik B_kj with A, B the unit strains b, c; then
   // T : d2 eps[b, c] = 2 T : D2 ln(C)[b, c] = 2 (W(b, c) + W(c, b)).
   Voigt6x6 W;

@@ -21,6 +21,8 @@
 // (material/stress_space.hpp, Dim = 6), so that T . d eps is the work density.
 #include <Eigen/Core>
 
+#include <array>
+
 namespace spifit::element {
 
 using Voigt6 = Eigen::Matrix<double, 6, 1>;
@@ -29,9 +31,11 @@ using Voigt6x6 = Eigen::Matrix<double, 6, 6>;
 struct LogStrain3 {
   Voigt6 value;      // eps
   Voigt6x6 first;    // d eps_i / d E_j
-  // The eigenbasis of E and the eigenvalues of C, kept for log_strain_3d_second.
+  // The eigenbasis of E, the eigenvalues of C and the unit Green strains of the six Voigt
+  // components in that basis, kept for log_strain_3d_second.
   Eigen::Matrix3d basis;
   Eigen::Vector3d lambda;
+  std::array<Eigen::Matrix3d, 6> units;
 };
 
 // Value and first derivative. Requires C positive definite (the callers check det F > 0).

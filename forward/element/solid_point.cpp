@@ -18,7 +18,7 @@ Voigt6 read_voigt(io::BinaryReader& r, const char* what) {
 
 SolidPoint::SolidPoint(const Law& law) : point_(law), tangent_(law.elastic_matrix()), tangent_trial_(law.elastic_matrix()) {}
 
-PointStatus SolidPoint::update(const Voigt6& green, Voigt6* S, Voigt6x6* tangent) {
+PointStatus admissible_green_strain(const Voigt6& green) {
   PointStatus status;
   // C = I + 2E positive definite: its leading principal minors.
   const double c11 = 1.0 + 2.0 * green(0), c22 = 1.0 + 2.0 * green(1), c33 = 1.0 + 2.0 * green(2);
@@ -29,11 +29,27 @@ PointStatus SolidPoint::update(const Voigt6& green, Voigt6* S, Voigt6x6* tangent
     status.ok = false;
     status.reason = std::isfinite(det) ? "element turned inside out (det C = " + std::to_string(det) + ")" : "non-finite strain";
     status.suggested_scale = 0.25;
-    return status;
   }
+  return status;
+}
+
+PointStatus SolidPoint::update(const Voigt6& green, Voigt6* S, Voigt6x6* tangent) {
+  const PointStatus admissible = admissible_green_strain(green);
+  if (!admissible.ok) return admissible;
   const LogStrain3 ls = log_strain_3d(green);
-  eps_trial_ = ls.value;
-  const Voigt6 d_eps = ls.value - eps_;
+  Voigt6 t;
+  Voigt6x6 ct;
+  const PointStatus status = update_log(ls.value, &t, &ct);
+  if (!status.ok) return status;
+  if (S) *S = ls.first.transpose() * t;
+  if (tangent) *tangent = ls.first.transpose() * ct * ls.first + log_strain_3d_second(ls, t);
+  return status;
+}
+
+PointStatus SolidPoint::update_log(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent) {
+  PointStatus status;
+  eps_trial_ = eps;
+  const Voigt6 d_eps = eps - eps_;
   Voigt6x6 ct;
   const material::UpdateResult r = point_.update(d_eps, &ct);
   if (!r.ok()) {
@@ -46,9 +62,8 @@ PointStatus SolidPoint::update(const Voigt6& green, Voigt6* S, Voigt6x6* tangent
   // tangent instead of the elastic one, as the shell's layers do.
   if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_.cwiseAbs().maxCoeff())) ct = tangent_;
   tangent_trial_ = ct;
-  const Voigt6& t = point_.trial().stress;
-  if (S) *S = ls.first.transpose() * t;
-  if (tangent) *tangent = ls.first.transpose() * ct * ls.first + log_strain_3d_second(ls, t);
+  if (T) *T = point_.trial().stress;
+  if (tangent) *tangent = ct;
   return status;
 }
 

@@ -24,6 +24,10 @@ struct PointStatus {
   double suggested_scale = 1.0;  // < 1: retry the increment with this fraction
 };
 
+// A Green strain whose metric C = I + 2E is positive definite; otherwise a failed status that
+// asks for a smaller step ("element turned inside out").
+PointStatus admissible_green_strain(const Voigt6& green);
+
 class SolidPoint {
  public:
   using Law = material::ReturnMapping<double, 6>;
@@ -34,6 +38,10 @@ class SolidPoint {
   // Trial update at the Green strain `green` (material frame, engineering shears). S, tangent
   // may be null. Refuses a metric that is not positive definite.
   PointStatus update(const Voigt6& green, Voigt6* S, Voigt6x6* tangent);
+  // Trial update at the log strain eps itself (the caller forms it, e.g. with a modified
+  // volumetric part): the stress T conjugate to eps and the consistent tangent dT/d eps; either
+  // may be null.
+  PointStatus update_log(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent);
   void commit();
   void revert();
 

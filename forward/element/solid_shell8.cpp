@@ -25,7 +25,7 @@ constexpr int kVoigtPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}
 constexpr double kColumn[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 constexpr double kShearSample[4][2] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}};
 constexpr int kMaxEnhancedIterations = 12;
-constexpr double kEnhancedTolerance = 1e-10;
+constexpr double kEnhancedTolerance = 1e-8;
 
 // T with E_material = T e for the convective components e (Voigt, engineering shears), where
 // E_material = Jinv E_conv Jinv^T and Jinv(c, r) = d xi_r / d X_c.
@@ -120,7 +120,8 @@ SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const
       double det = 0.0;
       pg.T = convective_to_material(checked_inverse(pg.s, &det));
       Eigen::Matrix<double, 6, kEnhanced> M = Eigen::Matrix<double, 6, kEnhanced>::Zero();
-      M.row(2) << zeta, zeta * pg.s(0), zeta * pg.s(1), zeta * pg.s(0) * pg.s(1);
+      const double xi = pg.s(0), eta = pg.s(1);
+      M.row(2) << zeta, zeta * xi, zeta * eta, zeta * xi * eta;
       pg.Gamma = (det0 / det) * T0 * M;
       pg.weight = rule.weight[k] * det;
       volume0_ += pg.weight;
@@ -141,83 +142,142 @@ SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const
   g3_norm0_ = tangent(X_, hex_parent_derivatives(Vec3::Zero()), 2).norm();
 }
 
+namespace {
+// The kinematics of one integration point: convective strain samples, interpolation weights,
+// d E / d x (material frame), and the log strain of E with d eps / d (x, alpha).
+struct PointKinematics {
+  Sample e11, e22, e12;
+  double w13[2], w23[2], w33[4];
+  Eigen::Matrix<double, 6, 24> B;
+  LogStrain3 ls;
+  Eigen::Matrix<double, 6, 24 + SolidShell8::kEnhanced> G;  // d eps / d (x, alpha)
+};
+const Voigt6 kTrace = (Voigt6() << 1, 1, 1, 0, 0, 0).finished();
+}  // namespace
+
 void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool full, Sums* sums, PointStatus* status) {
+  constexpr int kExt = 24 + kEnhanced;
   *sums = Sums{};
   // e33 at the corner columns (independent of zeta for the trilinear field).
   std::array<Sample, 4> thick;
   for (int L = 0; L < 4; ++L) thick[static_cast<std::size_t>(L)] = sample_product(x, hex_parent_derivatives(Vec3(kColumn[L][0], kColumn[L][1], 0.0)), 2, 2, thick0_(L));
   std::array<Sample, 4> shear;
-  int level = -1;
-  for (std::size_t p = 0; p < geometry_.size(); ++p) {
-    const PointGeometry& pg = geometry_[p];
-    if (pg.level != level) {
-      level = pg.level;
-      const double zeta = zeta_[static_cast<std::size_t>(level)];
-      for (int m = 0; m < 4; ++m)
-        shear[static_cast<std::size_t>(m)] = sample_product(x, hex_parent_derivatives(Vec3(kShearSample[m][0], kShearSample[m][1], zeta)),
-                                                            m < 2 ? 0 : 1, 2, shear0_[static_cast<std::size_t>(level)](m));
+  std::array<PointKinematics, 4> pk;
+  Eigen::Matrix<double, kExt, kExt> kext = Eigen::Matrix<double, kExt, kExt>::Zero();
+  for (std::size_t level = 0; level < zeta_.size(); ++level) {
+    const double zeta = zeta_[level];
+    for (int m = 0; m < 4; ++m)
+      shear[static_cast<std::size_t>(m)] = sample_product(x, hex_parent_derivatives(Vec3(kShearSample[m][0], kShearSample[m][1], zeta)),
+                                                          m < 2 ? 0 : 1, 2, shear0_[level](m));
+    // The level's four in-plane points: their log strains and the mean volumetric strain.
+    double volume = 0.0, theta = 0.0;
+    Eigen::Matrix<double, 1, kExt> dtheta = Eigen::Matrix<double, 1, kExt>::Zero();
+    for (std::size_t q = 0; q < 4; ++q) {
+      const std::size_t p = 4 * level + q;
+      const PointGeometry& pg = geometry_[p];
+      PointKinematics& k = pk[q];
+      const double xi = pg.s(0), eta = pg.s(1);
+      const Grad dN = hex_parent_derivatives(pg.s);
+      const double det = hex_jacobian_determinant(x, dN) / hex_jacobian_determinant(X_, dN);
+      if (!(det > 0.0)) {
+        status->ok = false;
+        status->reason = std::isfinite(det) ? "element turned inside out (det F = " + std::to_string(det) + ")" : "non-finite positions";
+        status->suggested_scale = 0.25;
+        return;
+      }
+      k.e11 = sample_product(x, dN, 0, 0, 0.0);
+      k.e22 = sample_product(x, dN, 1, 1, 0.0);
+      k.e12 = sample_product(x, dN, 0, 1, 0.0);
+      const Vec3 G1 = tangent(X_, dN, 0), G2 = tangent(X_, dN, 1);
+      k.w13[0] = 0.5 * (1.0 - eta);
+      k.w13[1] = 0.5 * (1.0 + eta);
+      k.w23[0] = 0.5 * (1.0 - xi);
+      k.w23[1] = 0.5 * (1.0 + xi);
+      for (int L = 0; L < 4; ++L) k.w33[L] = 0.25 * (1.0 + kColumn[L][0] * xi) * (1.0 + kColumn[L][1] * eta);
+      Voigt6 e;
+      e(0) = k.e11.value - 0.5 * G1.dot(G1);
+      e(1) = k.e22.value - 0.5 * G2.dot(G2);
+      e(3) = k.e12.value - G1.dot(G2);
+      e(2) = 0.0;
+      for (int L = 0; L < 4; ++L) e(2) += k.w33[L] * thick[static_cast<std::size_t>(L)].value;
+      e(4) = k.w13[0] * shear[0].value + k.w13[1] * shear[1].value;
+      e(5) = k.w23[0] * shear[2].value + k.w23[1] * shear[3].value;
+      Eigen::Matrix<double, 6, 24> Bc;  // d e / d x (convective)
+      auto set_row = [&Bc](int r, const Grad& g) { Bc.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, 24>>(g.data()); };
+      set_row(0, k.e11.grad);
+      set_row(1, k.e22.grad);
+      set_row(3, k.e12.grad);
+      Grad g33 = Grad::Zero();
+      for (int L = 0; L < 4; ++L) g33 += k.w33[L] * thick[static_cast<std::size_t>(L)].grad;
+      set_row(2, g33);
+      set_row(4, k.w13[0] * shear[0].grad + k.w13[1] * shear[1].grad);
+      set_row(5, k.w23[0] * shear[2].grad + k.w23[1] * shear[3].grad);
+      const Voigt6 E = pg.T * e + pg.Gamma * alpha;
+      const PointStatus admissible = admissible_green_strain(E);
+      if (!admissible.ok) {
+        *status = admissible;
+        return;
+      }
+      k.B = pg.T * Bc;
+      k.ls = log_strain_3d(E);
+      k.G.leftCols<24>() = k.ls.first * k.B;
+      k.G.rightCols<kEnhanced>() = k.ls.first * pg.Gamma;
+      volume += pg.weight;
+      theta += pg.weight * kTrace.dot(k.ls.value);
+      dtheta += pg.weight * kTrace.transpose() * k.G;
     }
-    const double xi = pg.s(0), eta = pg.s(1);
-    const Grad dN = hex_parent_derivatives(pg.s);
-    const double det = hex_jacobian_determinant(x, dN) / hex_jacobian_determinant(X_, dN);
-    if (!(det > 0.0)) {
-      status->ok = false;
-      status->reason = std::isfinite(det) ? "element turned inside out (det F = " + std::to_string(det) + ")" : "non-finite positions";
-      status->suggested_scale = 0.25;
-      return;
+    theta /= volume;
+    dtheta /= volume;
+    // Mean dilatation: each point takes its own deviatoric log strain and the level's mean
+    // volumetric one, and the stresses their own deviator and the level's mean pressure.
+    std::array<Voigt6, 4> T;
+    std::array<Voigt6x6, 4> D;
+    double pressure = 0.0;
+    for (std::size_t q = 0; q < 4; ++q) {
+      const std::size_t p = 4 * level + q;
+      const Voigt6 eps = pk[q].ls.value + kTrace * ((theta - kTrace.dot(pk[q].ls.value)) / 3.0);
+      const PointStatus ps = points_[p].update_log(eps, &T[q], &D[q]);
+      if (!ps.ok) {
+        *status = ps;
+        return;
+      }
+      pressure += geometry_[p].weight * kTrace.dot(T[q]);
     }
-    const Sample e11 = sample_product(x, dN, 0, 0, 0.0), e22 = sample_product(x, dN, 1, 1, 0.0), e12 = sample_product(x, dN, 0, 1, 0.0);
-    const Vec3 G1 = tangent(X_, dN, 0), G2 = tangent(X_, dN, 1);
-    const double w13[2] = {0.5 * (1.0 - eta), 0.5 * (1.0 + eta)}, w23[2] = {0.5 * (1.0 - xi), 0.5 * (1.0 + xi)};
-    double w33[4];
-    for (int L = 0; L < 4; ++L) w33[L] = 0.25 * (1.0 + kColumn[L][0] * xi) * (1.0 + kColumn[L][1] * eta);
-
-    Voigt6 e;
-    e(0) = e11.value - 0.5 * G1.dot(G1);
-    e(1) = e22.value - 0.5 * G2.dot(G2);
-    e(3) = e12.value - G1.dot(G2);
-    e(2) = 0.0;
-    for (int L = 0; L < 4; ++L) e(2) += w33[L] * thick[static_cast<std::size_t>(L)].value;
-    e(4) = w13[0] * shear[0].value + w13[1] * shear[1].value;
-    e(5) = w23[0] * shear[2].value + w23[1] * shear[3].value;
-    Eigen::Matrix<double, 6, 24> Bc;  // d e / d x (convective)
-    auto set_row = [&Bc](int r, const Grad& g) { Bc.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, 24>>(g.data()); };
-    set_row(0, e11.grad);
-    set_row(1, e22.grad);
-    set_row(3, e12.grad);
-    Grad g33 = Grad::Zero();
-    for (int L = 0; L < 4; ++L) g33 += w33[L] * thick[static_cast<std::size_t>(L)].grad;
-    set_row(2, g33);
-    set_row(4, w13[0] * shear[0].grad + w13[1] * shear[1].grad);
-    set_row(5, w23[0] * shear[2].grad + w23[1] * shear[3].grad);
-
-    const Voigt6 E = pg.T * e + pg.Gamma * alpha;
-    Voigt6 S;
-    Voigt6x6 D;
-    const PointStatus ps = points_[p].update(E, &S, &D);
-    if (!ps.ok) {
-      *status = ps;
-      return;
+    pressure /= volume;
+    for (std::size_t q = 0; q < 4; ++q) {
+      const std::size_t p = 4 * level + q;
+      const PointGeometry& pg = geometry_[p];
+      const PointKinematics& k = pk[q];
+      const double w = pg.weight;
+      const Voigt6 Te = T[q] + kTrace * ((pressure - kTrace.dot(T[q])) / 3.0);  // conjugate to eps of this point
+      const Voigt6 S = k.ls.first.transpose() * Te;
+      sums->fu.noalias() += w * k.B.transpose() * S;
+      sums->ra.noalias() += w * pg.Gamma.transpose() * S;
+      const Eigen::Matrix<double, 6, kExt> Gbar = k.G + kTrace * ((dtheta - kTrace.transpose() * k.G) / 3.0);
+      Eigen::Matrix<double, 6, kExt> BG;  // d E / d (x, alpha)
+      BG.leftCols<24>() = k.B;
+      BG.rightCols<kEnhanced>() = pg.Gamma;
+      if (full) {
+        kext.noalias() += w * Gbar.transpose() * D[q] * Gbar + w * BG.transpose() * log_strain_3d_second(k.ls, Te) * BG;
+      } else {
+        const Eigen::Matrix<double, 6, kEnhanced> Ga = Gbar.rightCols<kEnhanced>(), Ba = BG.rightCols<kEnhanced>();
+        kext.bottomRightCorner<kEnhanced, kEnhanced>().noalias() += w * Ga.transpose() * D[q] * Ga + w * Ba.transpose() * log_strain_3d_second(k.ls, Te) * Ba;
+        continue;
+      }
+      // Geometric part: the convective stress times the second derivatives of e.
+      const Voigt6 s = w * pg.T.transpose() * S;
+      Eigen::Matrix<double, 8, 8> H = s(0) * second(k.e11, true) + s(1) * second(k.e22, true) + s(3) * second(k.e12, false);
+      for (int L = 0; L < 4; ++L) H += (s(2) * k.w33[L]) * second(thick[static_cast<std::size_t>(L)], true);
+      H += (s(4) * k.w13[0]) * second(shear[0], false) + (s(4) * k.w13[1]) * second(shear[1], false);
+      H += (s(5) * k.w23[0]) * second(shear[2], false) + (s(5) * k.w23[1]) * second(shear[3], false);
+      for (int I = 0; I < 8; ++I)
+        for (int J = 0; J < 8; ++J)
+          for (int i = 0; i < 3; ++i) kext(3 * I + i, 3 * J + i) += H(I, J);
     }
-    const Eigen::Matrix<double, 6, 24> B = pg.T * Bc;
-    const double w = pg.weight;
-    const Eigen::Matrix<double, 6, kEnhanced> DG = D * pg.Gamma;
-    sums->fu.noalias() += w * B.transpose() * S;
-    sums->ra.noalias() += w * pg.Gamma.transpose() * S;
-    sums->kaa.noalias() += w * pg.Gamma.transpose() * DG;
-    sums->kua.noalias() += w * B.transpose() * DG;
-    if (!full) continue;
-    sums->kuu.noalias() += w * B.transpose() * D * B;
-    // Geometric part: the convective stress times the second derivatives of e.
-    const Voigt6 s = w * pg.T.transpose() * S;
-    Eigen::Matrix<double, 8, 8> H = s(0) * second(e11, true) + s(1) * second(e22, true) + s(3) * second(e12, false);
-    for (int L = 0; L < 4; ++L) H += (s(2) * w33[L]) * second(thick[static_cast<std::size_t>(L)], true);
-    H += (s(4) * w13[0]) * second(shear[0], false) + (s(4) * w13[1]) * second(shear[1], false);
-    H += (s(5) * w23[0]) * second(shear[2], false) + (s(5) * w23[1]) * second(shear[3], false);
-    for (int I = 0; I < 8; ++I)
-      for (int J = 0; J < 8; ++J)
-        for (int i = 0; i < 3; ++i) sums->kuu(3 * I + i, 3 * J + i) += H(I, J);
   }
+  sums->kaa = kext.bottomRightCorner<kEnhanced, kEnhanced>();
+  sums->kua = kext.topRightCorner<24, kEnhanced>();
+  if (full) sums->kuu = kext.topLeftCorner<24, 24>();
 }
 
 PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix* K) {
@@ -230,8 +290,8 @@ PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix*
     status.suggested_scale = 0.25;
     return status;
   }
-  const Eigen::Matrix<double, 3, 8> dx = x - x_committed_;
-  EnhancedVector alpha = alpha_ + dalpha_ * Eigen::Map<const Eigen::Matrix<double, 24, 1>>(dx.data());
+  const Eigen::Matrix<double, 3, 8> dx = x - x_trial_;
+  EnhancedVector alpha = alpha_trial_ + dalpha_trial_ * Eigen::Map<const Eigen::Matrix<double, 24, 1>>(dx.data());
   Sums sums;
   EnhancedVector step;
   Eigen::PartialPivLU<Eigen::Matrix<double, kEnhanced, kEnhanced>> lu;

@@ -250,7 +250,9 @@ TEST(SolidShell8, PureBendingOfThinAndThickStripsIsExact) {
       const double roundoff = 10.0 * 2.2e-16 * 1.0 * 1000.0 / std::pow(h, 4) / (1.0 - 2.0 * nu);
       std::printf("solid-shell pure bending, 10 x 1 elements, L/h = %g, nu = %g: largest nodal error / tip deflection %.1e (round-off bound %.1e)\n",
                   10.0 / h, nu, err, roundoff);
-      if (roundoff < 1e-2) EXPECT_LT(err, roundoff);
+      if (roundoff < 1e-2) {
+        EXPECT_LT(err, roundoff);
+      }
     }
 }
 
