@@ -63,7 +63,7 @@ struct MidSurface {
 class ElementFamily {
  public:
   virtual ~ElementFamily() = default;
-  // "shell", "brick": for checkpoints and messages.
+  // "shell", "brick", "solid_shell": for checkpoints and messages.
   virtual std::string name() const = 0;
   // DOFs at each node of the family's elements: 6 (ux uy uz, then rotation increments about x
   // y z, moving the node's director) or 3 (ux uy uz).

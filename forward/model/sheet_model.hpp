@@ -1,7 +1,8 @@
 #pragma once
 // The element families a forming scene can model its sheet with, in one place: the shell on the
-// sheet's mid-surface, or one-point bricks on the solid sheet extruded from it in layers
-// ([sheet] element and layers of the scenes; docs/design/numerics-solid.md). A new family adds
+// sheet's mid-surface, one-point bricks on the solid sheet extruded from it in layers, or
+// solid-shells, one through the thickness ([sheet] element and layers of the scenes;
+// docs/design/numerics-solid.md). A new family adds
 // its name to sheet_element_names() and its construction to make_sheet_model.
 #include "forward/element/brick8.hpp"
 #include "forward/material/material_params.hpp"
@@ -17,12 +18,13 @@ namespace spifit::model {
 
 struct SheetModelSpec {
   std::string element = "shell";       // one of sheet_element_names()
-  int layers = 1;                      // elements through the thickness (solids)
-  ShellModelOptions shell;             // the shell's options; its material axes serve every family
+  int layers = 1;                      // bricks through the thickness
+  ShellModelOptions shell;             // the shell's options; its material axes serve every family,
+                                       // its thickness rule the solid-shell
   element::HourglassOptions hourglass;  // the brick's stabilisation
 };
 
-// "shell", "brick": the scenes' [sheet] element choices.
+// "shell", "brick", "solid_shell": the scenes' [sheet] element choices.
 const std::vector<std::string>& sheet_element_names();
 
 // The model of a sheet of the given thickness whose mid-surface mesh is `mid`. Solids are built

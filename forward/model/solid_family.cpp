@@ -1,4 +1,4 @@
-#include "forward/model/brick_family.hpp"
+#include "forward/model/solid_family.hpp"
 
 #include "forward/io/binary_archive.hpp"
 #include "forward/model/element_contribution.hpp"
@@ -20,12 +20,15 @@ element::HexCorners corners(const mesh::Hex& h, const std::vector<Eigen::Vector3
 }
 }  // namespace
 
-BrickFamily::BrickFamily(const mesh::Mesh& mesh, const material::MaterialParams<double>& material, const BrickOptions& options)
-    : mesh_(&mesh), law_(material), layers_(options.layers) {
-  if (!mesh.quads.empty()) throw std::invalid_argument("the brick needs a mesh of hexahedra; this one has " + std::to_string(mesh.quads.size()) + " quadrilaterals");
+SolidFamily::SolidFamily(const mesh::Mesh& mesh, const material::MaterialParams<double>& material, const SolidOptions& options)
+    : mesh_(&mesh), law_(material), kind_(options.element), layers_(options.layers) {
+  if (!mesh.quads.empty())
+    throw std::invalid_argument("the " + name() + " needs a mesh of hexahedra; this one has " + std::to_string(mesh.quads.size()) + " quadrilaterals");
   const int ne = static_cast<int>(mesh.hexes.size());
   if (ne == 0) throw std::invalid_argument("the mesh has no hexahedron");
-  if (options.layers < 1) throw std::invalid_argument("a brick sheet needs at least one layer, got " + std::to_string(options.layers));
+  if (options.layers < 1) throw std::invalid_argument("a " + name() + " sheet needs at least one layer, got " + std::to_string(options.layers));
+  if (kind_ == SolidElementKind::solid_shell && options.layers != 1)
+    throw std::invalid_argument("a solid-shell sheet has one element through the thickness, got " + std::to_string(options.layers) + " layers");
   if (ne % options.layers != 0)
     throw std::invalid_argument(std::to_string(ne) + " hexahedra are not " + std::to_string(options.layers) + " equal layers");
   if (!(options.material_axis.allFinite() && options.material_axis.norm() > 0.0)) throw std::invalid_argument("the rolling direction must be a non-zero vector");
@@ -55,7 +58,8 @@ BrickFamily::BrickFamily(const mesh::Mesh& mesh, const material::MaterialParams<
     axes.col(1) = n.cross(axes.col(0));
     axes.col(2) = n;
     try {
-      elements_.emplace_back(X, axes, law_, options.hourglass);
+      if (kind_ == SolidElementKind::brick) elements_.push_back(std::make_unique<element::Brick8>(X, axes, law_, options.hourglass));
+      else elements_.push_back(std::make_unique<element::SolidShell8>(X, axes, law_, options.thickness_rule));
     } catch (const std::invalid_argument& err) {
       throw std::invalid_argument("element " + std::to_string(e) + ": " + err.what());
     }
@@ -67,32 +71,44 @@ BrickFamily::BrickFamily(const mesh::Mesh& mesh, const material::MaterialParams<
     for (std::size_t f = 0; f < top_.element.size(); ++f) {
       if (top_.face[f] != 1)
         throw std::invalid_argument("face set 'top': element " + std::to_string(top_.element[f]) + " has face " + std::to_string(top_.face[f]) +
-                                    " in it; the brick's tool side is its face 1 (corners 4-7)");
+                                    " in it; the " + name() + "'s tool side is its face 1 (corners 4-7)");
       face_of_element_[static_cast<std::size_t>(top_.element[f])] = static_cast<int>(f);
     }
   }
 }
 
-ContactSurface BrickFamily::contact_surface() const {
+std::string SolidFamily::name() const { return kind_ == SolidElementKind::brick ? "brick" : "solid_shell"; }
+
+const element::Brick8& SolidFamily::brick(int e) const {
+  if (kind_ != SolidElementKind::brick) throw std::logic_error("element " + std::to_string(e) + " is a " + name() + ", not a brick");
+  return static_cast<const element::Brick8&>(element(e));
+}
+
+const element::SolidShell8& SolidFamily::solid_shell(int e) const {
+  if (kind_ != SolidElementKind::solid_shell) throw std::logic_error("element " + std::to_string(e) + " is a " + name() + ", not a solid-shell");
+  return static_cast<const element::SolidShell8&>(element(e));
+}
+
+ContactSurface SolidFamily::contact_surface() const {
   if (top_.element.empty()) throw std::invalid_argument("the solid mesh has no face set 'top' for the tool to touch");
   return ContactSurface{&top_.mesh, top_.element};
 }
 
-std::vector<int> BrickFamily::element_nodes(int e) const {
+std::vector<int> SolidFamily::element_nodes(int e) const {
   const mesh::Hex& h = mesh_->hexes[static_cast<std::size_t>(e)];
   return {h.begin(), h.end()};
 }
 
-solver::ElementEvaluation BrickFamily::evaluate(int e, const ElementInputs& in, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
+solver::ElementEvaluation SolidFamily::evaluate(int e, const ElementInputs& in, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
   element::HexVector f;
   element::HexMatrix k;
-  const element::BrickStatus s = elements_[static_cast<std::size_t>(e)].evaluate(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), &f, ke ? &k : nullptr);
+  const element::PointStatus s = elements_[static_cast<std::size_t>(e)]->evaluate(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), &f, ke ? &k : nullptr);
   solver::ElementEvaluation out;
   if (!s.ok) {
     out.ok = false;
     out.reason = s.reason;
     out.suggested_scale = s.suggested_scale;
-    out.where = "brick element " + std::to_string(e);
+    out.where = name() + " element " + std::to_string(e);
     return out;
   }
   const int face = face_of_element_[static_cast<std::size_t>(e)];
@@ -124,50 +140,52 @@ solver::ElementEvaluation BrickFamily::evaluate(int e, const ElementInputs& in, 
   return out;
 }
 
-void BrickFamily::commit() {
-  for (auto& el : elements_) el.commit();
+void SolidFamily::commit() {
+  for (auto& el : elements_) el->commit();
 }
 
-void BrickFamily::revert() {
-  for (auto& el : elements_) el.revert();
+void SolidFamily::revert() {
+  for (auto& el : elements_) el->revert();
 }
 
-double BrickFamily::element_thickness(int e) const {
+double SolidFamily::element_thickness(int e) const {
   const int per_layer = num_elements() / layers_;
   const int q = e % per_layer;
   double h = 0.0;
   for (int l = 0; l < layers_; ++l) {
     const auto k = static_cast<std::size_t>(l * per_layer + q);
-    h += height0_[k] * elements_[k].thickness_ratio();
+    h += height0_[k] * elements_[k]->thickness_ratio();
   }
   return h;
 }
 
-void BrickFamily::add_energies(const FeModel&, ModelEnergies* energies) const {
+void SolidFamily::add_energies(const FeModel&, ModelEnergies* energies) const {
   for (const auto& el : elements_) {
-    energies->elastic += el.reference_volume() * el.point().elastic_energy_density() + el.hourglass_energy();
-    energies->plastic += el.reference_volume() * el.point().plastic_work_density();
+    energies->elastic += el->elastic_energy();
+    energies->plastic += el->plastic_work();
   }
 }
 
-void BrickFamily::add_vtu_data(const FeModel&, mesh::VtuFrame* frame) const {
+void SolidFamily::add_vtu_data(const FeModel&, mesh::VtuFrame* frame) const {
   mesh::VtuField eqps{"eqps", 1, {}}, thickness{"thickness", 1, {}};
   mesh::VtuField s11{"stress_11", 1, {}}, s22{"stress_22", 1, {}}, s33{"stress_33", 1, {}}, hourglass{"hourglass_work", 1, {}};
   for (int e = 0; e < num_elements(); ++e) {
-    const auto& st = elements_[static_cast<std::size_t>(e)].point().committed();
-    hourglass.values.push_back(elements_[static_cast<std::size_t>(e)].hourglass_energy());
-    eqps.values.push_back(st.eqps);
+    const element::SolidElement& el = element(e);
+    if (kind_ == SolidElementKind::brick) hourglass.values.push_back(brick(e).hourglass_energy());
+    const element::Voigt6 stress = el.mean_stress();
+    eqps.values.push_back(el.max_eqps());
     thickness.values.push_back(element_thickness(e));
-    s11.values.push_back(st.stress(0));
-    s22.values.push_back(st.stress(1));
-    s33.values.push_back(st.stress(2));
+    s11.values.push_back(stress(0));
+    s22.values.push_back(stress(1));
+    s33.values.push_back(stress(2));
   }
-  for (auto* f : {&eqps, &thickness, &s11, &s22, &s33, &hourglass}) frame->cell_data.push_back(std::move(*f));
+  for (auto* f : {&eqps, &thickness, &s11, &s22, &s33}) frame->cell_data.push_back(std::move(*f));
+  if (kind_ == SolidElementKind::brick) frame->cell_data.push_back(std::move(hourglass));
 }
 
-MidSurface BrickFamily::mid_surface(const FeModel& model) const {
+MidSurface SolidFamily::mid_surface(const FeModel& model) const {
   const std::size_t levels = static_cast<std::size_t>(layers_) + 1, nn = model.mesh().nodes.size(), n = nn / levels;
-  if (n * levels != nn) throw std::logic_error("brick family: the mesh's nodes are not " + std::to_string(levels) + " levels of a sheet");
+  if (n * levels != nn) throw std::logic_error(name() + " family: the mesh's nodes are not " + std::to_string(levels) + " levels of a sheet");
   MidSurface m;
   const std::vector<Eigen::Vector3d>& X = model.mesh().nodes;
   const std::vector<Eigen::Vector3d>& x = model.positions();
@@ -180,14 +198,14 @@ MidSurface BrickFamily::mid_surface(const FeModel& model) const {
   return m;
 }
 
-void BrickFamily::save_state(io::BinaryWriter& w) const {
+void SolidFamily::save_state(io::BinaryWriter& w) const {
   w.i64(static_cast<std::int64_t>(elements_.size()));
-  for (const auto& el : elements_) el.save_state(w);
+  for (const auto& el : elements_) el->save_state(w);
 }
 
-void BrickFamily::load_state(io::BinaryReader& r) {
-  r.expect_count("brick elements", static_cast<std::int64_t>(elements_.size()));
-  for (auto& el : elements_) el.load_state(r);
+void SolidFamily::load_state(io::BinaryReader& r) {
+  r.expect_count((name() + " elements").c_str(), static_cast<std::int64_t>(elements_.size()));
+  for (auto& el : elements_) el->load_state(r);
 }
 
 }  // namespace spifit::model

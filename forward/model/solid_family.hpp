@@ -1,43 +1,55 @@
 #pragma once
-// The one-point brick family (forward/element/brick8.hpp) over a mesh's hexahedra: three DOFs
-// per node, one Brick8 per hexahedron with its material axes (the rolling direction fixed, or
-// read in the polar frame, turned into the plane of the sheet at the element), and the sheet
-// thickness through each element's column of layers. The elements of a solid sheet are those
-// of mesh::extrude_sheet: layer l of mid-surface element q is element l m + q (m elements per
+// The solid families over a mesh's hexahedra: three DOFs per node, one solid element per
+// hexahedron with its material axes (the rolling direction fixed, or read in the polar frame,
+// turned into the plane of the sheet at the element), and the sheet thickness through each
+// element's column of layers. The elements are one-point bricks (element/brick8.hpp) in any
+// number of layers, or solid-shells (element/solid_shell8.hpp), one through the thickness with
+// the shell's thickness rule along it. The elements of a solid sheet are those of
+// mesh::extrude_sheet: layer l of mid-surface element q is element l m + q (m elements per
 // layer).
 #include "forward/element/brick8.hpp"
+#include "forward/element/solid_element.hpp"
+#include "forward/element/solid_shell8.hpp"
+#include "forward/element/thickness_rule.hpp"
 #include "forward/mesh/face_surface.hpp"
 #include "forward/mesh/mesh.hpp"
 #include "forward/model/element_family.hpp"
 #include "forward/model/shell_family.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace spifit::model {
 
-struct BrickOptions {
+enum class SolidElementKind { brick, solid_shell };
+
+struct SolidOptions {
+  SolidElementKind element = SolidElementKind::brick;
   // The rolling direction (material axis 1), projected into each element's sheet plane; the
   // sheet normal of an element runs from its bottom face (corners 0-3) to its top face (4-7).
   Eigen::Vector3d material_axis = Eigen::Vector3d::UnitX();
   ShellModelOptions::MaterialAxes material_axes = ShellModelOptions::MaterialAxes::fixed;
-  // The hourglass stabilisation (element::Brick8): factor 1 on the centre's tangent by default.
+  // The bricks' hourglass stabilisation (element::Brick8): factor 1 on the centre's tangent by
+  // default.
   element::HourglassOptions hourglass;
-  // Elements through the thickness (mesh::extrude_sheet's layers).
+  // The solid-shells' integration points through the thickness.
+  element::ThicknessRule thickness_rule = element::gauss_legendre_rule(5);
+  // Elements through the thickness (mesh::extrude_sheet's layers; 1 for solid-shells).
   int layers = 1;
 };
 
-class BrickFamily final : public ElementFamily {
+class SolidFamily final : public ElementFamily {
  public:
   // Throws std::invalid_argument for a mesh with quadrilaterals or without hexahedra, an
-  // element count that is not a multiple of the layers, an inverted element or a rolling
-  // direction along an element's normal (naming the element). The family must not move: its
-  // elements refer to its law.
-  BrickFamily(const mesh::Mesh& mesh, const material::MaterialParams<double>& material, const BrickOptions& options);
-  BrickFamily(const BrickFamily&) = delete;
-  BrickFamily& operator=(const BrickFamily&) = delete;
+  // element count that is not a multiple of the layers, solid-shells in more than one layer, an
+  // inverted element or a rolling direction along an element's normal (naming the element).
+  SolidFamily(const mesh::Mesh& mesh, const material::MaterialParams<double>& material, const SolidOptions& options);
+  SolidFamily(const SolidFamily&) = delete;
+  SolidFamily& operator=(const SolidFamily&) = delete;
 
-  std::string name() const override { return "brick"; }
+  // "brick" or "solid_shell".
+  std::string name() const override;
   int dofs_per_node() const override { return 3; }
   int num_elements() const override { return static_cast<int>(elements_.size()); }
   std::vector<int> element_nodes(int e) const override;
@@ -53,10 +65,11 @@ class BrickFamily final : public ElementFamily {
   // layer's reference height times its thickness ratio (Brick8::thickness_ratio).
   double element_thickness(int e) const override;
   const std::vector<std::string>& warnings() const override { return warnings_; }
-  // Elastic (the centre's stored energy and the hourglass stabilisation's) and plastic work.
+  // Elastic (with the bricks' hourglass stabilisation's work) and plastic work.
   void add_energies(const FeModel& model, ModelEnergies* energies) const override;
-  // Cell data: equivalent plastic strain, sheet thickness, the Kirchhoff stress along the three
-  // material axes, and the work of the hourglass forces [N mm].
+  // Cell data: equivalent plastic strain (the largest over the element's points), sheet
+  // thickness, the Kirchhoff stress along the three material axes (the element's volume
+  // average), and for bricks the work of the hourglass forces [N mm].
   void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const override;
   // Each node column's midpoint (reference and current) and the distance between its bottom and
   // top nodes (mesh::extrude_sheet's columns: node k n + i at level k).
@@ -64,14 +77,19 @@ class BrickFamily final : public ElementFamily {
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
 
-  const element::Brick8& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
+  const element::SolidElement& element(int e) const { return *elements_[static_cast<std::size_t>(e)]; }
+  // Element e as a brick or a solid-shell: std::logic_error for the other kind.
+  const element::Brick8& brick(int e) const;
+  const element::SolidShell8& solid_shell(int e) const;
+  SolidElementKind kind() const { return kind_; }
   int layers() const { return layers_; }
 
  private:
   const mesh::Mesh* mesh_;
-  element::Brick8::Law law_;
+  element::SolidPoint::Law law_;
+  SolidElementKind kind_;
   int layers_;
-  std::vector<element::Brick8> elements_;
+  std::vector<std::unique_ptr<element::SolidElement>> elements_;
   std::vector<double> height0_;  // reference distance between the bottom and top face centroids
   mesh::FaceSurface top_;        // the top faces (empty without a face set "top")
   std::vector<int> face_of_element_;  // index into top_ (-1: no top face)

@@ -30,10 +30,11 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
   t.real({"sheet.fine_band", {}, "mm", Range::positive(), {}, "distance from the tool tip's path (below the sheet's top) within which "
           "cells keep the sheet.elements size when sheet.coarse_levels > 0", false},
          [](FormingScene& s) -> double& { return s.fine_band; });
-  t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
+  t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness (shells and solid-shells)", true},
             [](FormingScene& s) -> int& { return s.thickness_points; });
   t.text({"sheet.element", {}, "", {}, model::sheet_element_names(),
-          "the sheet's elements: shells on its mid-surface, or one-point bricks in sheet.layers layers through the thickness", false},
+          "the sheet's elements: shells on its mid-surface, one-point bricks in sheet.layers layers through the thickness, "
+          "or solid-shells (one through the thickness, sheet.thickness_points along it)", false},
          {[](const FormingScene& s) -> std::string { return s.element; },
           [](FormingScene& s, const std::string& v) {
             const auto& names = model::sheet_element_names();

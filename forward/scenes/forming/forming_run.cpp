@@ -119,10 +119,11 @@ nlohmann::json forming_inputs(const FormingScene& s, const model::FeModel& model
   j["model"] = {{"elements", model.num_elements()}, {"nodes", model.num_nodes()}, {"half", s.half},
                 {"thickness", s.thickness}, {"length", s.length}, {"thickness_points", s.thickness_points}};
   if (s.hourglass_stiffness > 0.0) j["model"]["hourglass_stiffness"] = s.hourglass_stiffness;
-  if (s.element != "shell") {
+  if (s.element == "brick") {
     j["model"].erase("thickness_points");
     j["model"].update({{"element", s.element}, {"layers", s.layers}, {"hourglass_scale", s.hourglass_scale}});
   }
+  if (s.element == "solid_shell") j["model"]["element"] = s.element;
   if (s.coarse_levels > 0)
     j["model"].update({{"coarse_levels", s.coarse_levels}, {"fine_band", s.fine_band}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});
   j["tool"] = {{"radius", s.radius}, {"travel", length}, {"feed", s.feed}, {"spin_rpm", s.spin}, {"gcode", s.gcode}};

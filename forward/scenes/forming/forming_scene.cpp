@@ -152,20 +152,24 @@ SheetAndTool forming_sheet_and_tool(const FormingScene& s) {
   return st;
 }
 
-// The checks of a solid sheet (sheet.element other than the shell): keys and options the shell
-// alone has, and a law the solid cannot take.
+// The checks of the sheet's elements: keys and options one family alone has, and a law the
+// solids cannot take.
 InputViolation solid_sheet_violation(const FormingScene& s) {
-  if (s.element == "shell") {
-    if (s.layers != 0) return {"sheet.layers", std::to_string(s.layers), "layers are for solid sheets: set sheet.element = \"brick\" or remove it"};
+  if (s.element != "brick") {
+    if (s.layers != 0)
+      return {"sheet.layers", std::to_string(s.layers),
+              s.element == "shell" ? "layers are for brick sheets: set sheet.element = \"brick\" or remove it"
+                                   : "a solid-shell sheet has one element through the thickness (its points along it are sheet.thickness_points): remove it"};
     if (s.hourglass_scale != 1.0)
       return {"sheet.hourglass_scale", io::format_number(s.hourglass_scale),
-              "the bricks' stabilisation factor; the shell's one-point option is sheet.hourglass_stiffness"};
-    return {};
+              s.element == "shell" ? "the bricks' stabilisation factor; the shell's one-point option is sheet.hourglass_stiffness"
+                                   : "the bricks' stabilisation factor; the solid-shell has no hourglass modes: remove it"};
   }
+  if (s.element == "shell") return {};
   const std::string quoted = "\"" + s.element + "\"";
   if (s.hourglass_stiffness > 0.0)
     return {"sheet.hourglass_stiffness", io::format_number(s.hourglass_stiffness),
-            "the shell's one-point option; the " + s.element + " has its own stabilisation: remove it with sheet.element = " + quoted};
+            "the shell's one-point option; the " + s.element + " has its own integration: remove it with sheet.element = " + quoted};
   if (s.explicit_scheme) return {"solver.scheme", "\"explicit\"", "the explicit scheme has shell elements only, not " + s.element + " elements"};
   if (s.contact.surface == contact::ContactOptions::Surface::phong)
     return {"contact.surface", "\"phong\"", "phong curves the facets with the shell's directors; solid elements take \"flat\""};
@@ -219,10 +223,10 @@ FormingScene read_forming_scene(const std::string& path) {
   const auto points = root.table_array("path");
   read_path_points(root, points, s);
   if (const auto o = root.table("output")) read_sections(*o, s);
-  if (s.element != "shell") {
+  if (s.element == "brick") {
     if (root.table("sheet")->has("thickness_points"))
       throw io::InputError(path, "sheet.thickness_points", std::to_string(s.thickness_points),
-                           "the shell's integration points through the thickness; a solid sheet has sheet.layers instead");
+                           "integration points through the thickness of shells and solid-shells; a brick sheet has sheet.layers instead");
     if (s.layers == 0) s.layers = FormingScene::kBrickLayers;
   }
   const InputViolation v = forming_scene_error(s);

@@ -39,8 +39,9 @@ struct FormingScene {
   int coarse_levels = 0;
   double fine_band = 20.0;
   int thickness_points = 5;
-  // The sheet's elements (model::sheet_element_names()): "shell" on the mid-surface, or "brick"
-  // on the solid sheet in `layers` layers (0 until read: the brick's default, kBrickLayers).
+  // The sheet's elements (model::sheet_element_names()): "shell" on the mid-surface, "brick" on
+  // the solid sheet in `layers` layers (0 until read: the brick's default, kBrickLayers), or
+  // "solid_shell", one through the thickness with thickness_points along it.
   std::string element = "shell";
   int layers = 0;
   static constexpr int kBrickLayers = 3;

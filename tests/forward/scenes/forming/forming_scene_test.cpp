@@ -135,12 +135,12 @@ TEST(FormingScene, ReaderRefusesWhatTheSheetsElementsCannotTake) {
   const std::string head = "[scene]\nkind = \"indent\"\nmaterial = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n";
   const std::string brick = "[sheet]\nelement = \"brick\"\n";
   EXPECT_NE(error_of(head + "[sheet]\nelement = \"tetra\"\n").find("sheet.element"), std::string::npos);
-  EXPECT_NE(error_of(head + "[sheet]\nlayers = 2\n").find("layers are for solid sheets"), std::string::npos);
+  EXPECT_NE(error_of(head + "[sheet]\nlayers = 2\n").find("layers are for brick sheets"), std::string::npos);
   EXPECT_NE(error_of(head + "[sheet]\nhourglass_scale = 0.5\n").find("the bricks' stabilisation factor"), std::string::npos);
   const std::string zero = error_of(head + brick + "layers = 0\n");
   EXPECT_NE(zero.find("sheet.layers"), std::string::npos) << zero;
   EXPECT_NE(zero.find("0"), std::string::npos) << zero;
-  EXPECT_NE(error_of(head + brick + "thickness_points = 7\n").find("a solid sheet has sheet.layers instead"), std::string::npos);
+  EXPECT_NE(error_of(head + brick + "thickness_points = 7\n").find("a brick sheet has sheet.layers instead"), std::string::npos);
   EXPECT_NE(error_of(head + brick + "hourglass_stiffness = 0.1\n").find("the shell's one-point option"), std::string::npos);
   EXPECT_NE(error_of(head + brick + "[solver]\nscheme = \"explicit\"\n").find("the explicit scheme has shell elements only"),
             std::string::npos);
@@ -151,38 +151,50 @@ TEST(FormingScene, ReaderRefusesWhatTheSheetsElementsCannotTake) {
   EXPECT_NE(plane.find("aa3003o_yld2000_start.toml"), std::string::npos) << plane;
   const FormingScene defaulted = read_forming_scene(test::write_temp_file("brick_default.toml", head + brick).string());
   EXPECT_EQ(defaulted.layers, FormingScene::kBrickLayers);
+  // Solid-shells: one element through the thickness, thickness_points along it, no hourglass.
+  const std::string solid_shell = "[sheet]\nelement = \"solid_shell\"\n";
+  const std::string stacked = error_of(head + solid_shell + "layers = 2\n");
+  EXPECT_NE(stacked.find("sheet.layers"), std::string::npos) << stacked;
+  EXPECT_NE(stacked.find("one element through the thickness"), std::string::npos) << stacked;
+  EXPECT_NE(error_of(head + solid_shell + "hourglass_scale = 0.5\n").find("the solid-shell has no hourglass modes"), std::string::npos);
+  EXPECT_NE(error_of(head + solid_shell + "[solver]\nscheme = \"explicit\"\n").find("not solid_shell elements"), std::string::npos);
+  EXPECT_NE(error_of(yld + solid_shell).find("plane-stress yield function"), std::string::npos);
+  const FormingScene points = read_forming_scene(test::write_temp_file("solid_shell_points.toml", head + solid_shell + "thickness_points = 7\n").string());
+  EXPECT_EQ(points.thickness_points, 7);
+  EXPECT_EQ(points.layers, 0);
 }
 
-// The §7.1 indent with bricks: the peak force falls as layers are added (the hourglass
-// stabilisation's share of the bending goes down, docs/design/numerics-solid.md) and stays above
-// the shell's on this coarse in-plane mesh (one in-plane point per brick against the shell's 2 x 2);
-// the mid-surface section has one row per node column, with the sheet thinned under the tool.
-TEST(FormingScene, BrickIndentFallsWithLayersTowardsTheShell) {
-  FormingScene s = read_forming_scene(src("experiments/aa3003o/scenes/indent_brick.toml"));
-  double previous = 0.0;
-  for (int layers : {1, 2, 3}) {
-    s.layers = layers;
-    const FormingResult r = run_forming_scene(s, RunFiles(), RunControl{});
-    ASSERT_TRUE(r.ok()) << r.message;
-    const double peak = r.force.peak().z();
-    std::printf("indent with %d brick layer(s): peak force %.2f N\n", layers, peak);
-    if (previous > 0.0) {
-      EXPECT_LT(peak, previous) << layers;
-    }
-    previous = peak;
-    if (layers == 3) {
-      ASSERT_EQ(r.sections.size(), 1u);
-      const io::Series& sec = r.sections.front().nodes;
-      EXPECT_EQ(sec.size(), 11u);  // the 11 node columns on y = 0
-      double thinnest = 1.0;
-      for (const auto& row : sec.rows()) thinnest = std::min(thinnest, row[4]);
-      EXPECT_LT(thinnest, 0.3);
-      EXPECT_GT(thinnest, 0.2);
-    }
+// The §7.1 indent with solid-shells (one through the thickness, five points along it, a 3D law at
+// each): the peak force within 1 % of the shell's on the same 10 x 10 mesh (docs/design/
+// numerics-solid.md: 290.4 N against 289.4 N; the 3-layer bricks 373.2 N), the mid-surface
+// section thinned under the tool. (The node columns' thickness on this coarse mesh wavers about
+// the shell's profile, by up to 0.026 mm; on 20 x 20 it follows it, docs/design/numerics-solid.md.)
+TEST(FormingScene, SolidShellIndentAgreesWithTheShell) {
+  FormingScene s = read_forming_scene(src("experiments/aa3003o/scenes/indent_solid_shell.toml"));
+  const FormingResult solid = run_forming_scene(s, RunFiles(), RunControl{});
+  ASSERT_TRUE(solid.ok()) << solid.message;
+  s.element = "shell";
+  const FormingResult shell = run_forming_scene(s, RunFiles(), RunControl{});
+  ASSERT_TRUE(shell.ok()) << shell.message;
+  const double ps = solid.force.peak().z(), ph = shell.force.peak().z();
+  std::printf("indent peak force: solid-shells %.2f N, shells %.2f N\n", ps, ph);
+  EXPECT_NEAR(ps / ph, 1.0, 0.01);
+  ASSERT_EQ(solid.sections.size(), 1u);
+  ASSERT_EQ(shell.sections.size(), 1u);
+  const io::Series& a = solid.sections.front().nodes;
+  const io::Series& b = shell.sections.front().nodes;
+  ASSERT_EQ(a.size(), b.size());
+  double worst = 0.0, thinnest = 1.0, deepest = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    worst = std::max(worst, std::abs(a.rows()[i][4] - b.rows()[i][4]));
+    thinnest = std::min(thinnest, a.rows()[i][4]);
+    deepest = std::max(deepest, std::abs(a.rows()[i][3] - b.rows()[i][3]));
   }
-  const FormingResult shell = run_forming_scene(read_forming_scene(src("experiments/aa3003o/scenes/indent.toml")), RunFiles(), RunControl{});
-  ASSERT_TRUE(shell.ok());
-  EXPECT_GT(previous, shell.force.peak().z());
+  std::printf("indent section: thinnest %.4f mm (solid-shells), largest difference to the shells: thickness %.4f mm, depth %.4f mm\n", thinnest,
+              worst, deepest);
+  EXPECT_LT(thinnest, 0.25);
+  EXPECT_GT(thinnest, 0.2);
+  EXPECT_LT(deepest, 0.02);  // the mid-surfaces' shapes
 }
 
 // Plausibility warnings: a penalty so soft that the tool sinks into the sheet (K_p = 10 on the
