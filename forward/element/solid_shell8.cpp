@@ -244,6 +244,13 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       pressure += geometry_[p].weight * kTrace.dot(T[q]);
     }
     pressure /= volume;
+    // With A = (I - m m^T / 3) d eps / dE and Gbar = A BG + m dtheta / 3 the derivative of a point's
+    // modified log strain (BG = d E / d (x, alpha)):
+    //   Gbar^T D Gbar + BG^T L BG = BG^T (A^T D A + L) BG + (BG^T c dtheta + dtheta^T c^T BG) / 3
+    //                               + (m^T D m / 9) dtheta^T dtheta,   c = A^T D m,
+    // L the log strain's second derivative contracted with the point's stress.
+    Eigen::Matrix<double, kExt, 1> u = Eigen::Matrix<double, kExt, 1>::Zero();
+    double dmm = 0.0;
     for (std::size_t q = 0; q < 4; ++q) {
       const std::size_t p = 4 * level + q;
       const PointGeometry& pg = geometry_[p];
@@ -253,17 +260,20 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       const Voigt6 S = k.ls.first.transpose() * Te;
       sums->fu.noalias() += w * k.B.transpose() * S;
       sums->ra.noalias() += w * pg.Gamma.transpose() * S;
-      const Eigen::Matrix<double, 6, kExt> Gbar = k.G + kTrace * ((dtheta - kTrace.transpose() * k.G) / 3.0);
       Eigen::Matrix<double, 6, kExt> BG;  // d E / d (x, alpha)
       BG.leftCols<24>() = k.B;
       BG.rightCols<kEnhanced>() = pg.Gamma;
-      if (full) {
-        kext.noalias() += w * Gbar.transpose() * D[q] * Gbar + w * BG.transpose() * log_strain_3d_second(k.ls, Te) * BG;
-      } else {
-        const Eigen::Matrix<double, 6, kEnhanced> Ga = Gbar.rightCols<kEnhanced>(), Ba = BG.rightCols<kEnhanced>();
-        kext.bottomRightCorner<kEnhanced, kEnhanced>().noalias() += w * Ga.transpose() * D[q] * Ga + w * Ba.transpose() * log_strain_3d_second(k.ls, Te) * Ba;
+      const Voigt6x6 A = k.ls.first - kTrace * (kTrace.transpose() * k.ls.first) / 3.0;
+      const Voigt6 Dm = D[q] * kTrace;
+      const Voigt6x6 M = w * (A.transpose() * D[q] * A + log_strain_3d_second(k.ls, Te));
+      u.noalias() += w * BG.transpose() * (A.transpose() * Dm);
+      dmm += w * kTrace.dot(Dm);
+      const Eigen::Matrix<double, 6, kExt> MB = M * BG;
+      if (!full) {
+        kext.bottomRightCorner<kEnhanced, kEnhanced>().noalias() += pg.Gamma.transpose().lazyProduct(MB.rightCols<kEnhanced>());
         continue;
       }
+      kext.noalias() += BG.transpose().lazyProduct(MB);
       // Geometric part: the convective stress times the second derivatives of e.
       const Voigt6 s = w * pg.T.transpose() * S;
       Eigen::Matrix<double, 8, 8> H = s(0) * second(k.e11, true) + s(1) * second(k.e22, true) + s(3) * second(k.e12, false);
@@ -273,6 +283,12 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       for (int I = 0; I < 8; ++I)
         for (int J = 0; J < 8; ++J)
           for (int i = 0; i < 3; ++i) kext(3 * I + i, 3 * J + i) += H(I, J);
+    }
+    const Eigen::Matrix<double, kExt, kExt> coupling = (u * dtheta) / 3.0;
+    if (full) {
+      kext.noalias() += coupling + coupling.transpose() + (dmm / 9.0) * dtheta.transpose() * dtheta;
+    } else {
+      kext.bottomRightCorner<kEnhanced, kEnhanced>() += (coupling + coupling.transpose() + (dmm / 9.0) * dtheta.transpose() * dtheta).bottomRightCorner<kEnhanced, kEnhanced>();
     }
   }
   sums->kaa = kext.bottomRightCorner<kEnhanced, kEnhanced>();
