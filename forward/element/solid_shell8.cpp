@@ -163,7 +163,7 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
   for (int L = 0; L < 4; ++L) thick[static_cast<std::size_t>(L)] = sample_product(x, hex_parent_derivatives(Vec3(kColumn[L][0], kColumn[L][1], 0.0)), 2, 2, thick0_(L));
   std::array<Sample, 4> shear;
   std::array<PointKinematics, 4> pk;
-  Eigen::Matrix<double, kExt, kExt> kext = Eigen::Matrix<double, kExt, kExt>::Zero();
+  Eigen::Matrix<double, kExt, kExt> kext = Eigen::Matrix<double, kExt, kExt>::Zero(), klow = kext;
   for (std::size_t level = 0; level < zeta_.size(); ++level) {
     const double zeta = zeta_[level];
     for (int m = 0; m < 4; ++m)
@@ -273,7 +273,9 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
         kext.bottomRightCorner<kEnhanced, kEnhanced>().noalias() += pg.Gamma.transpose().lazyProduct(MB.rightCols<kEnhanced>());
         continue;
       }
-      kext.noalias() += BG.transpose().lazyProduct(MB);
+      // BG^T M BG is symmetric: its lower triangle only, mirrored after the loop.
+      for (int j = 0; j < kExt; ++j)
+        for (int i = j; i < kExt; ++i) klow(i, j) += BG.col(i).dot(MB.col(j));
       // Geometric part: the convective stress times the second derivatives of e.
       const Voigt6 s = w * pg.T.transpose() * S;
       Eigen::Matrix<double, 8, 8> H = s(0) * second(k.e11, true) + s(1) * second(k.e22, true) + s(3) * second(k.e12, false);
@@ -291,6 +293,7 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       kext.bottomRightCorner<kEnhanced, kEnhanced>() += (coupling + coupling.transpose() + (dmm / 9.0) * dtheta.transpose() * dtheta).bottomRightCorner<kEnhanced, kEnhanced>();
     }
   }
+  if (full) kext += klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
   sums->kaa = kext.bottomRightCorner<kEnhanced, kEnhanced>();
   sums->kua = kext.topRightCorner<24, kEnhanced>();
   if (full) sums->kuu = kext.topLeftCorner<24, 24>();
