@@ -20,7 +20,7 @@ using Grad = Eigen::Matrix<double, 3, 8>;  // d e / d x_I per corner (columns)
 namespace {
 
 constexpr int kVoigtPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
-// The corner columns (xi, eta) of the bottom face, and the shear sampling points: e13 at
+// The in-plane Gauss points' signs (xi, eta), and the shear sampling points: e13 at
 // eta = -1, +1 (xi = 0), e23 at xi = -1, +1 (eta = 0).
 constexpr double kColumn[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 constexpr double kShearSample[4][2] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}};
@@ -135,10 +135,6 @@ SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const
     }
     shear0_.push_back(ref);
   }
-  for (int L = 0; L < 4; ++L) {
-    const Vec3 G3 = tangent(X_, hex_parent_derivatives(Vec3(kColumn[L][0], kColumn[L][1], 0.0)), 2);
-    thick0_(L) = 0.5 * G3.dot(G3);
-  }
   g3_norm0_ = tangent(X_, hex_parent_derivatives(Vec3::Zero()), 2).norm();
 }
 
@@ -146,8 +142,8 @@ namespace {
 // The kinematics of one integration point: convective strain samples, interpolation weights,
 // d E / d x (material frame), and the log strain of E with d eps / d (x, alpha).
 struct PointKinematics {
-  Sample e11, e22, e12;
-  double w13[2], w23[2], w33[4];
+  Sample e11, e22, e12, e33;
+  double w13[2], w23[2];
   Eigen::Matrix<double, 6, 24> B;
   LogStrain3 ls;
   Eigen::Matrix<double, 6, 24 + SolidShell8::kEnhanced> G;  // d eps / d (x, alpha)
@@ -158,9 +154,6 @@ const Voigt6 kTrace = (Voigt6() << 1, 1, 1, 0, 0, 0).finished();
 void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool full, Sums* sums, PointStatus* status) {
   constexpr int kExt = 24 + kEnhanced;
   *sums = Sums{};
-  // e33 at the corner columns (independent of zeta for the trilinear field).
-  std::array<Sample, 4> thick;
-  for (int L = 0; L < 4; ++L) thick[static_cast<std::size_t>(L)] = sample_product(x, hex_parent_derivatives(Vec3(kColumn[L][0], kColumn[L][1], 0.0)), 2, 2, thick0_(L));
   std::array<Sample, 4> shear;
   std::array<PointKinematics, 4> pk;
   Eigen::Matrix<double, kExt, kExt> kext = Eigen::Matrix<double, kExt, kExt>::Zero(), klow = kext;
@@ -193,13 +186,13 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       k.w13[1] = 0.5 * (1.0 + eta);
       k.w23[0] = 0.5 * (1.0 - xi);
       k.w23[1] = 0.5 * (1.0 + xi);
-      for (int L = 0; L < 4; ++L) k.w33[L] = 0.25 * (1.0 + kColumn[L][0] * xi) * (1.0 + kColumn[L][1] * eta);
       Voigt6 e;
       e(0) = k.e11.value - 0.5 * G1.dot(G1);
       e(1) = k.e22.value - 0.5 * G2.dot(G2);
       e(3) = k.e12.value - G1.dot(G2);
-      e(2) = 0.0;
-      for (int L = 0; L < 4; ++L) e(2) += k.w33[L] * thick[static_cast<std::size_t>(L)].value;
+      const Vec3 G3 = tangent(X_, dN, 2);
+      k.e33 = sample_product(x, dN, 2, 2, 0.5 * G3.dot(G3));
+      e(2) = k.e33.value;
       e(4) = k.w13[0] * shear[0].value + k.w13[1] * shear[1].value;
       e(5) = k.w23[0] * shear[2].value + k.w23[1] * shear[3].value;
       Eigen::Matrix<double, 6, 24> Bc;  // d e / d x (convective)
@@ -207,9 +200,7 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       set_row(0, k.e11.grad);
       set_row(1, k.e22.grad);
       set_row(3, k.e12.grad);
-      Grad g33 = Grad::Zero();
-      for (int L = 0; L < 4; ++L) g33 += k.w33[L] * thick[static_cast<std::size_t>(L)].grad;
-      set_row(2, g33);
+      set_row(2, k.e33.grad);
       set_row(4, k.w13[0] * shear[0].grad + k.w13[1] * shear[1].grad);
       set_row(5, k.w23[0] * shear[2].grad + k.w23[1] * shear[3].grad);
       const Voigt6 E = pg.T * e + pg.Gamma * alpha;
@@ -279,7 +270,7 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       // Geometric part: the convective stress times the second derivatives of e.
       const Voigt6 s = w * pg.T.transpose() * S;
       Eigen::Matrix<double, 8, 8> H = s(0) * second(k.e11, true) + s(1) * second(k.e22, true) + s(3) * second(k.e12, false);
-      for (int L = 0; L < 4; ++L) H += (s(2) * k.w33[L]) * second(thick[static_cast<std::size_t>(L)], true);
+      H += s(2) * second(k.e33, true);
       H += (s(4) * k.w13[0]) * second(shear[0], false) + (s(4) * k.w13[1]) * second(shear[1], false);
       H += (s(5) * k.w23[0]) * second(shear[2], false) + (s(5) * k.w23[1]) * second(shear[3], false);
       for (int I = 0; I < 8; ++I)

@@ -77,6 +77,15 @@ TEST(FormingResume, BrickIndentStoppedMidwayResumesBitForBit) {
   stop_and_resume(s, "indent_brick", stop);
 }
 
+// The solid-shell's checkpoint state (its points, the enhanced strains and their predictor).
+TEST(FormingResume, SolidShellIndentStoppedMidwayResumesBitForBit) {
+  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_solid_shell.toml");
+  s.checkpoint_increments = 8;
+  RunControl stop;
+  stop.stop_after_increments = 21;  // checkpoint after 16, deep in the plastic range
+  stop_and_resume(s, "indent_solid_shell", stop);
+}
+
 TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
   const fs::path file = test::write_tiny_line(temp_path("line.toml"), "checkpoint_increments = 10\n");
   const FormingScene s = read_forming_scene(file.string());

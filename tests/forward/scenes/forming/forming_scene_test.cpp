@@ -166,9 +166,9 @@ TEST(FormingScene, ReaderRefusesWhatTheSheetsElementsCannotTake) {
 
 // The §7.1 indent with solid-shells (one through the thickness, five points along it, a 3D law at
 // each): the peak force within 1 % of the shell's on the same 10 x 10 mesh (docs/design/
-// numerics-solid.md: 290.4 N against 289.4 N; the 3-layer bricks 373.2 N), the mid-surface
-// section thinned under the tool. (The node columns' thickness on this coarse mesh wavers about
-// the shell's profile, by up to 0.026 mm; on 20 x 20 it follows it, docs/design/numerics-solid.md.)
+// numerics-solid.md: 287.5 N against 289.4 N; the 3-layer bricks 373.2 N), the mid-surface's
+// shape within 2 % of the 2 mm depth, and the section thinned under the tool (0.224 mm at the
+// centre against the shell's 0.243 mm: the tool's pressure acts through the thickness).
 TEST(FormingScene, SolidShellIndentAgreesWithTheShell) {
   FormingScene s = read_forming_scene(src("experiments/aa3003o/scenes/indent_solid_shell.toml"));
   const FormingResult solid = run_forming_scene(s, RunFiles(), RunControl{});
@@ -194,7 +194,7 @@ TEST(FormingScene, SolidShellIndentAgreesWithTheShell) {
               worst, deepest);
   EXPECT_LT(thinnest, 0.25);
   EXPECT_GT(thinnest, 0.2);
-  EXPECT_LT(deepest, 0.02);  // the mid-surfaces' shapes
+  EXPECT_LT(deepest, 0.04);  // the mid-surfaces' shapes, 2 % of the depth
 }
 
 // Plausibility warnings: a penalty so soft that the tool sinks into the sheet (K_p = 10 on the
