@@ -1,5 +1,7 @@
 #include "forward/element/brick8.hpp"
 
+#include "tests/support/hex_elements.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -9,21 +11,13 @@
 namespace spifit::element {
 namespace {
 
+using test::aa3003;
+using test::box;
+using test::map;
+using test::rotation;
+
 using Mat3 = Eigen::Matrix3d;
 using Vec3 = Eigen::Vector3d;
-
-material::MaterialParams<double> aa3003() {  // card C.3 + C.4 (Hill 1948 + Swift)
-  material::MaterialParams<double> p;
-  p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;
-  return p;
-}
-
-HexCorners box(double a, double b, double c) {
-  HexCorners X;
-  const double s[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (int I = 0; I < 8; ++I) X[static_cast<std::size_t>(I)] = Vec3(a * s[I][0], b * s[I][1], c * s[I][2]);
-  return X;
-}
 
 HexCorners distorted() {
   HexCorners X = box(2.0, 1.5, 0.6);
@@ -33,14 +27,6 @@ HexCorners distorted() {
   X[7] += Vec3(-0.1, 0.1, 0.07);
   return X;
 }
-
-HexCorners map(const HexCorners& X, const Mat3& F, const Vec3& c = Vec3::Zero()) {
-  HexCorners x;
-  for (std::size_t I = 0; I < 8; ++I) x[I] = F * X[I] + c;
-  return x;
-}
-
-Mat3 rotation() { return Eigen::AngleAxisd(0.9, Vec3(0.3, -1.0, 0.6).normalized()).toRotationMatrix(); }
 
 // The uniaxial force on the x = a face of a box stretched homogeneously, against the 3D return
 // mapping fed the same log strain: exact conversion from T to the first Piola-Kirchhoff stress.

@@ -3,6 +3,7 @@
 // 3D pure bending with one element through the thickness against the exact solution, with
 // compressible and nearly incompressible material, beside the full-integration element.
 #include "forward/element/hex8_stiffness.hpp"
+#include "tests/support/hex_elements.hpp"
 
 #include <Eigen/Dense>
 #include <gtest/gtest.h>
@@ -39,13 +40,7 @@ HexVector linear_field(const HexCorners& X, const Eigen::Vector3d& c, const Eige
   return u;
 }
 
-int zero_eigenvalues(const HexMatrix& K) {
-  const Eigen::SelfAdjointEigenSolver<HexMatrix> es(K);
-  const double tol = 1e-10 * es.eigenvalues().cwiseAbs().maxCoeff();
-  int n = 0;
-  for (int i = 0; i < 24; ++i) n += std::abs(es.eigenvalues()(i)) < tol;
-  return n;
-}
+using test::zero_eigenvalues;
 
 TEST(Hex8Stiffness, UniformGradientReproducesLinearFieldsAndTheVolume) {
   const HexCorners X = distorted();

@@ -5,6 +5,8 @@
 #include "forward/element/brick8.hpp"
 #include "forward/element/solid_shell8.hpp"
 
+#include "tests/support/hex_elements.hpp"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -17,27 +19,20 @@
 namespace spifit::element {
 namespace {
 
+using test::aa3003;
+using test::box;
+using test::map;
+using test::rotation;
+using test::zero_eigenvalues;
+
 using Mat3 = Eigen::Matrix3d;
 using Vec3 = Eigen::Vector3d;
-
-material::MaterialParams<double> aa3003() {  // card C.3 + C.4 (Hill 1948 + Swift)
-  material::MaterialParams<double> p;
-  p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;
-  return p;
-}
 
 material::MaterialParams<double> elastic(double nu) {
   material::MaterialParams<double> p;
   p.E = 70000.0;
   p.nu = nu;
   return p;
-}
-
-HexCorners box(double a, double b, double c) {
-  HexCorners X;
-  const double s[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
-  for (int I = 0; I < 8; ++I) X[static_cast<std::size_t>(I)] = Vec3(a * s[I][0], b * s[I][1], c * s[I][2]);
-  return X;
 }
 
 // A quadrilateral of a sheet extruded along its normal: distorted in the plane, its corner
@@ -51,14 +46,6 @@ HexCorners distorted() {
   }
   return X;
 }
-
-HexCorners map(const HexCorners& X, const Mat3& F, const Vec3& c = Vec3::Zero()) {
-  HexCorners x;
-  for (std::size_t I = 0; I < 8; ++I) x[I] = F * X[I] + c;
-  return x;
-}
-
-Mat3 rotation() { return Eigen::AngleAxisd(0.9, Vec3(0.3, -1.0, 0.6).normalized()).toRotationMatrix(); }
 
 ThicknessRule five() { return gauss_legendre_rule(5); }
 
@@ -132,14 +119,6 @@ TEST(SolidShell8, PatchUnderAHomogeneousDeformationMatchesTheBricks) {
     std::printf("solid-shell patch, homogeneous deformation, interior column moved by %g x (0.17, -0.11): force error %.2e of the bricks'\n", s, err);
     EXPECT_LT(err, 1e-12);
   }
-}
-
-int zero_eigenvalues(const HexMatrix& K) {
-  const Eigen::SelfAdjointEigenSolver<HexMatrix> es(K);
-  const double tol = 1e-10 * es.eigenvalues().cwiseAbs().maxCoeff();
-  int n = 0;
-  for (int i = 0; i < 24; ++i) n += std::abs(es.eigenvalues()(i)) < tol;
-  return n;
 }
 
 // Full in-plane integration: only the six rigid-body modes are free of energy.
