@@ -5,7 +5,7 @@
 // went (elements, assembly, linear solver), and an error against a stated reference:
 //   indent       peak Fz vs the impenetrable limit 293.78 N (K_p = 1e7, docs/results/validation.md);
 //   indent_line  peak Fz vs the same scene at 0.25 mm of travel per increment (637.72 N);
-//   line_*, *_brick  none (reference_error printed as 0; half vs full, bricks vs shells:
+//   line_*, *_brick, *_solid_shell  none (reference_error printed as 0; half vs full, solids vs shells:
 //                docs/results/validation.md, docs/design/numerics-solid.md).
 // The line scenes are long (minutes): select them with --benchmark_filter.
 #include "bench/bench_main.hpp"
@@ -39,8 +39,10 @@ const Case kCases[] = {
     {"indent", "experiments/aa3003o/scenes/indent.toml", 293.78, 5},
     {"indent_line", "experiments/aa3003o/scenes/indent_line.toml", 637.72, 3},
     {"indent_brick", "experiments/aa3003o/scenes/indent_brick.toml", 0.0, 3},
+    {"indent_solid_shell", "experiments/aa3003o/scenes/indent_solid_shell.toml", 0.0, 3},
     {"line_half", "experiments/aa3003o/scenes/line_half.toml", 0.0, 1},
     {"line_half_brick", "experiments/aa3003o/scenes/line_half_brick.toml", 0.0, 1},
+    {"line_half_solid_shell", "experiments/aa3003o/scenes/line_half_solid_shell.toml", 0.0, 1},
     {"line_full", "experiments/aa3003o/scenes/line_full.toml", 0.0, 1},
 };
 

@@ -12,7 +12,7 @@ run() {  # run NAME EXECUTABLE [FLAGS...]
   shift 2
   "$exe" --benchmark_out="out/bench/$name.json" --benchmark_out_format=json "$@" >/dev/null
 }
-run forming build/bench/bench_forming --benchmark_filter='forming/(indent|indent_line|indent_brick|line_half)/'
+run forming build/bench/bench_forming --benchmark_filter='forming/(indent|indent_line|indent_brick|indent_solid_shell|line_half)/'
 run cone build/bench/bench_cone --benchmark_filter='cone70_short'
 run material_point build/bench/bench_material_point
 run fit_classic build/bench/bench_fit

@@ -18,7 +18,12 @@ Usage: bench/calculix/compare.sh [options]
   --spifit-full           full spifit model (default: half model, y >= 0: N x N/2 shells;
                           the default 100 gives 5 000 shells)
   --spifit-grading G      spifit [sheet] grading, edge / centre element size (default 1)
+  --spifit-element E      spifit [sheet] element: shell (default), brick or solid_shell
+  --spifit-layers N       spifit [sheet] layers of bricks (default 3)
   --ccx-elements N        CalculiX S4 elements across the side, full model (default 40: 1 600)
+  --ccx-element E          CalculiX sheet elements: S4 (default; ccx expands each into one C3D8I
+                          through the thickness) or C3D8I (bricks, --ccx-layers through it)
+  --ccx-layers N          C3D8I layers through the thickness (default 1)
   --ccx-grading G         CalculiX mesh grading, edge / centre element size (default 8:
                           1.33 mm at the centre, 10.6 mm at the edge for 40 elements)
   --contact TYPE          CalculiX contact: surface (SURFACE TO SURFACE, default) or node
@@ -42,6 +47,10 @@ ccx="${CCX:-ccx}"
 sp_elements=100
 sp_half=true
 sp_grading=1
+sp_element=shell
+sp_layers=3
+cx_element=S4
+cx_layers=1
 cx_elements=40
 cx_grading=8
 contact=surface
@@ -58,6 +67,10 @@ while [ $# -gt 0 ]; do
     --spifit-elements) sp_elements="$2"; shift ;;
     --spifit-full) sp_half=false ;;
     --spifit-grading) sp_grading="$2"; shift ;;
+    --spifit-element) sp_element="$2"; shift ;;
+    --spifit-layers) sp_layers="$2"; shift ;;
+    --ccx-element) cx_element="$2"; shift ;;
+    --ccx-layers) cx_layers="$2"; shift ;;
     --ccx-elements) cx_elements="$2"; shift ;;
     --ccx-grading) cx_grading="$2"; shift ;;
     --contact) contact="$2"; shift ;;
@@ -99,10 +112,14 @@ mkdir -p "$out/ccx"
 
 # --- spifit scene: bench/calculix/indent_centre.toml with the mesh, depth and penalty replaced
 awk -v el="$sp_elements" -v half="$sp_half" -v gr="$sp_grading" -v d="$depth" -v k="$penalty" \
+    -v family="$sp_element" -v layers="$sp_layers" \
     -v card="$here/aa3003o_c4_mises.toml" '
   /^material = / { print "material = \"" card "\""; next }
   /^elements = / { print "elements = " el; next }
-  /^half = / { print "half = " half; if (gr != 1) print "grading = " gr; next }
+  /^half = / { print "half = " half; if (gr != 1) print "grading = " gr
+                if (family != "shell") print "element = \"" family "\""
+                if (family == "brick") print "layers = " layers
+                next }
   /^name = "B"/ { inB = 1 }
   inB && /^z = / { print "z = -" d; inB = 0; next }
   /^penalty = / { print "penalty = " k; next }
@@ -110,6 +127,7 @@ awk -v el="$sp_elements" -v half="$sp_half" -v gr="$sp_grading" -v d="$depth" -v
 
 # --- CalculiX deck
 python3 "$here/make_deck.py" --elements "$cx_elements" --grading "$cx_grading" --depth "$depth" \
+  --element "$cx_element" --layers "$cx_layers" \
   --penalty "$penalty" --contact-type "$contact_type" --slave "$slave" -o "$out/ccx/job.inp" 2> "$out/ccx/make_deck.log"
 cat "$out/ccx/make_deck.log"
 
@@ -135,6 +153,11 @@ cx_wall=$(python3 -c "print($t3 - $t2)")
 sp_wall=$(python3 -c "print($t1 - $t0)")
 sp_count=$(python3 -c "import json; print(json.load(open('$out/spifit/summary.json'))['model']['elements'])")
 sp_desc="$sp_elements x $sp_elements"
+sp_kind="shells"
+[ "$sp_element" = brick ] && sp_kind="bricks, $sp_layers layers"
+[ "$sp_element" = solid_shell ] && sp_kind="solid-shells"
+cx_kind="$cx_element"
+[ "$cx_element" = C3D8I ] && cx_kind="C3D8I, $cx_layers layer(s)"
 [ "$sp_half" = true ] && sp_desc="$sp_elements x $((sp_elements / 2)), half model"
 [ "$sp_grading" != 1 ] && sp_desc="$sp_desc, grading $sp_grading"
 cx_desc="$cx_elements x $cx_elements, full model, $contact_type, slave $slave"
@@ -146,15 +169,17 @@ rc=0
 python3 "$here/compare_table.py" --spifit "$out/spifit" --ccx "$out/ccx/job.dat" --depths "$depths" \
   --json "$out/table.json" > "$out/table.md" || rc=$?
 cat "$out/table.md"
-python3 - "$sp_count" "$sp_desc" "$sp_wall" "$((cx_elements * cx_elements))" "$cx_desc" "$cx_wall" "$threads" <<'EOF' | tee -a "$out/table.md"
+cx_count=$((cx_elements * cx_elements))
+[ "$cx_element" = C3D8I ] && cx_count=$((cx_count * cx_layers))
+python3 - "$sp_count" "$sp_desc" "$sp_wall" "$cx_count" "$cx_desc" "$cx_wall" "$threads" "$sp_kind" "$cx_kind" <<'EOF' | tee -a "$out/table.md"
 import sys
-spn, spd, spw, cxn, cxd, cxw, th = sys.argv[1:]
+spn, spd, spw, cxn, cxd, cxw, th, spk, cxk = sys.argv[1:]
 spw, cxw = float(spw), float(cxw)
 print()
 print("| code | elements | wall time [s] |")
 print("|---|---|---:|")
-print("| spifit | %s shells (%s) | %.1f |" % (spn, spd, spw))
-print("| CalculiX | %s S4 (%s) | %.1f |" % (cxn, cxd, cxw))
+print("| spifit | %s %s (%s) | %.1f |" % (spn, spk, spd, spw))
+print("| CalculiX | %s %s (%s) | %.1f |" % (cxn, cxk, cxd, cxw))
 print()
 print("time ratio CalculiX / spifit: %.1f (threads: %s each)" % (cxw / spw, th))
 EOF

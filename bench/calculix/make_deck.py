@@ -5,7 +5,10 @@ The same problem as bench/calculix/indent_centre.toml for spifit: a square sheet
 thickness t, mid-surface at z = 0, edges clamped) of S4 shells, pushed at its centre by a rigid
 sphere of radius R along -z, frictionless penalty contact, von Mises + Swift plasticity.
 
-- Sheet: n x n S4 elements (full model), normals +z, clamped edges (all six DOFs).
+- Sheet: n x n S4 elements (full model), normals +z, clamped edges (all six DOFs); or, with
+  --element C3D8I, n x n x layers incompatible-mode bricks through the thickness (the element
+  ccx expands each S4 into), clamped edges (every node of the edge columns), the top faces (S2)
+  as the slave surface.
 - Material: *ELASTIC E, nu and a *PLASTIC table sampled from sigma = K (eps0 + p)^n
   (p = 0, then a geometric grid up to 2; ccx interpolates linearly).
 - Tool: the lower hemisphere of a sphere, one layer of C3D8 elements (a cube-sphere mesh, no
@@ -159,27 +162,37 @@ def write_deck(a, out):
     w.append("** card %s: E = %g, nu = %g, Swift K = %g, eps0 = %g, n = %g, von Mises"
              % (os.path.basename(a.card), E, nu, K, eps0, n))
     w.append("*HEADING")
-    w.append("spifit bench: centre indent, CalculiX S4 %dx%d" % (N, N))
-    # --- sheet nodes
+    solid = a.element == "C3D8I"
+    levels = a.layers + 1 if solid else 1
+    w.append("spifit bench: centre indent, CalculiX %s %dx%d%s" % (a.element, N, N, " x %d" % a.layers if solid else ""))
+    # --- sheet nodes: shells one level (the mid-surface); bricks levels k = 0..layers at
+    # z = -t/2 + k t / layers
     w.append("*NODE, NSET=NSHEET")
-    nid = lambda i, j: j * (N + 1) + i + 1
+    nid = lambda i, j, k=0: k * (N + 1) ** 2 + j * (N + 1) + i + 1
     xs = graded_coordinates(L, N, a.grading)
     h = max(xs[N // 2 + 1] - xs[N // 2], 1e-12)  # the central element size
-    for j in range(N + 1):
-        for i in range(N + 1):
-            w.append("%d, %s, %s, 0." % (nid(i, j), fmt(xs[i]), fmt(xs[j])))
-    nsheet = (N + 1) ** 2
-    # --- sheet elements
-    w.append("*ELEMENT, TYPE=S4, ELSET=SHEET")
-    eid = lambda i, j: j * N + i + 1
-    for j in range(N):
-        for i in range(N):
-            w.append("%d, %d, %d, %d, %d" % (eid(i, j), nid(i, j), nid(i + 1, j), nid(i + 1, j + 1), nid(i, j + 1)))
-    nelem = N * N
-    # clamped edges
-    edge = [nid(i, j) for j in range(N + 1) for i in range(N + 1) if i in (0, N) or j in (0, N)]
+    for k in range(levels):
+        z = -t / 2 + t * k / a.layers if solid else 0.0
+        for j in range(N + 1):
+            for i in range(N + 1):
+                w.append("%d, %s, %s, %s" % (nid(i, j, k), fmt(xs[i]), fmt(xs[j]), fmt(z) if solid else "0."))
+    nsheet = levels * (N + 1) ** 2
+    # --- sheet elements (eid's default layer is the top one, whose faces are the slave surface)
+    w.append("*ELEMENT, TYPE=%s, ELSET=SHEET" % a.element)
+    top = a.layers - 1 if solid else 0
+    eid = lambda i, j, k=top: k * N * N + j * N + i + 1
+    for k in range(a.layers if solid else 1):
+        for j in range(N):
+            for i in range(N):
+                corners = [nid(i, j, k), nid(i + 1, j, k), nid(i + 1, j + 1, k), nid(i, j + 1, k)]
+                if solid:
+                    corners += [nid(i, j, k + 1), nid(i + 1, j, k + 1), nid(i + 1, j + 1, k + 1), nid(i, j + 1, k + 1)]
+                w.append("%d, " % eid(i, j, k) + ", ".join(str(c) for c in corners))
+    nelem = N * N * (a.layers if solid else 1)
+    # clamped edges (every level's edge nodes for bricks)
+    edge = [nid(i, j, k) for k in range(levels) for j in range(N + 1) for i in range(N + 1) if i in (0, N) or j in (0, N)]
     w.append("*NSET, NSET=NCENTRE")
-    w.append("%d" % nid(N // 2, N // 2))
+    w.append("%d" % nid(N // 2, N // 2, levels - 1))
     w.append("*NSET, NSET=EDGE")
     for k in range(0, len(edge), 8):
         w.append(", ".join(str(v) for v in edge[k:k + 8]) + ",")
@@ -212,15 +225,18 @@ def write_deck(a, out):
     w.append("*MATERIAL, NAME=TOOLMAT")
     w.append("*ELASTIC")
     w.append("210000., 0.3")
-    w.append("*SHELL SECTION, ELSET=SHEET, MATERIAL=SHEETMAT")
-    w.append(fmt(t))
+    if solid:
+        w.append("*SOLID SECTION, ELSET=SHEET, MATERIAL=SHEETMAT")
+    else:
+        w.append("*SHELL SECTION, ELSET=SHEET, MATERIAL=SHEETMAT")
+        w.append(fmt(t))
     w.append("*SOLID SECTION, ELSET=TOOL, MATERIAL=TOOLMAT")
     w.append("*RIGID BODY, ELSET=TOOL, REF NODE=%d, ROT NODE=%d" % (ref, rot))
     # --- contact
     if a.slave == "faces":
         w.append("*SURFACE, NAME=SSHEET, TYPE=ELEMENT")
         for e in slave:
-            w.append("%d, %s" % (e, a.slave_face))
+            w.append("%d, %s" % (e, "S2" if solid else a.slave_face))
     else:
         ids = sorted({nid(i + di, j + dj) for j in range(N) for i in range(N) if eid(i, j) in set(slave)
                       for di in (0, 1) for dj in (0, 1)})
@@ -237,7 +253,7 @@ def write_deck(a, out):
     w.append("%s, %s" % (fmt(a.penalty), fmt(a.tension)))
     # --- boundary conditions
     w.append("*BOUNDARY")
-    w.append("EDGE, 1, 6")
+    w.append("EDGE, 1, %d" % (3 if solid else 6))
     w.append("NREF, 1, 2")
     w.append("NROT, 1, 3")
     # --- step
@@ -270,6 +286,9 @@ def main():
     p.add_argument("--elements", type=int, default=40, help="S4 elements across the side (even; default 40 = 1600)")
     p.add_argument("--grading", type=float, default=1.0,
                    help="edge / centre element size, geometric (spifit's [sheet] grading; 1: regular)")
+    p.add_argument("--element", choices=["S4", "C3D8I"], default="S4",
+                   help="sheet elements: S4 shells (ccx expands each into one C3D8I) or C3D8I bricks in --layers layers")
+    p.add_argument("--layers", type=int, default=1, help="C3D8I layers through the thickness (default 1)")
     p.add_argument("--length", type=float, default=182.0, help="side of the square sheet [mm]")
     p.add_argument("--thickness", type=float, default=1.2, help="sheet thickness [mm]")
     p.add_argument("--radius", type=float, default=5.0, help="tool radius [mm]")
@@ -297,6 +316,10 @@ def main():
     p.add_argument("--max-increments", type=int, default=1000, help="*STEP INC")
     p.add_argument("--frd", action="store_true", help="also write displacements to the .frd file")
     a = p.parse_args()
+    if a.element == "C3D8I" and a.slave == "nodes":
+        p.error("--slave nodes is for shells: the bricks' slave surface is their top faces")
+    if a.layers < 1:
+        p.error("--layers must be >= 1")
     if a.slave == "nodes" and a.contact_type != "NODE TO SURFACE":
         p.error("--slave nodes needs --contact-type 'NODE TO SURFACE' (ccx: a face-to-face slave must be faces)")
     if a.output == "-":
@@ -304,7 +327,7 @@ def main():
     else:
         with open(a.output, "w", encoding="utf-8") as f:
             ne, nt, ns = write_deck(a, f)
-    print("make_deck.py: %d S4, %d tool C3D8, %d slave faces -> %s" % (ne, nt, ns, a.output), file=sys.stderr)
+    print("make_deck.py: %d %s, %d tool C3D8, %d slave faces -> %s" % (ne, a.element, nt, ns, a.output), file=sys.stderr)
 
 
 if __name__ == "__main__":
