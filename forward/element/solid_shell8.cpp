@@ -151,7 +151,7 @@ struct PointKinematics {
 const Voigt6 kTrace = (Voigt6() << 1, 1, 1, 0, 0, 0).finished();
 }  // namespace
 
-void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool full, Sums* sums, PointStatus* status) {
+void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, Sums* sums, PointStatus* status) {
   constexpr int kExt = 24 + kEnhanced;
   *sums = Sums{};
   std::array<Sample, 4> shear;
@@ -260,10 +260,6 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       u.noalias() += w * BG.transpose() * (A.transpose() * Dm);
       dmm += w * kTrace.dot(Dm);
       const Eigen::Matrix<double, 6, kExt> MB = M * BG;
-      if (!full) {
-        kext.bottomRightCorner<kEnhanced, kEnhanced>().noalias() += pg.Gamma.transpose().lazyProduct(MB.rightCols<kEnhanced>());
-        continue;
-      }
       // BG^T M BG is symmetric: its lower triangle only, mirrored after the loop.
       for (int j = 0; j < kExt; ++j)
         for (int i = j; i < kExt; ++i) klow(i, j) += BG.col(i).dot(MB.col(j));
@@ -278,16 +274,12 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
           for (int i = 0; i < 3; ++i) kext(3 * I + i, 3 * J + i) += H(I, J);
     }
     const Eigen::Matrix<double, kExt, kExt> coupling = (u * dtheta) / 3.0;
-    if (full) {
-      kext.noalias() += coupling + coupling.transpose() + (dmm / 9.0) * dtheta.transpose() * dtheta;
-    } else {
-      kext.bottomRightCorner<kEnhanced, kEnhanced>() += (coupling + coupling.transpose() + (dmm / 9.0) * dtheta.transpose() * dtheta).bottomRightCorner<kEnhanced, kEnhanced>();
-    }
+    kext.noalias() += coupling + coupling.transpose() + (dmm / 9.0) * dtheta.transpose() * dtheta;
   }
-  if (full) kext += klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
+  kext += klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
   sums->kaa = kext.bottomRightCorner<kEnhanced, kEnhanced>();
   sums->kua = kext.topRightCorner<24, kEnhanced>();
-  if (full) sums->kuu = kext.topLeftCorner<24, 24>();
+  sums->kuu = kext.topLeftCorner<24, 24>();
 }
 
 PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix* K) {
@@ -307,7 +299,7 @@ PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix*
   Eigen::PartialPivLU<Eigen::Matrix<double, kEnhanced, kEnhanced>> lu;
   int it = 0;
   for (;; ++it) {
-    accumulate(x, alpha, true, &sums, &status);
+    accumulate(x, alpha, &sums, &status);
     if (!status.ok) return status;
     lu.compute(sums.kaa);
     step = lu.solve(sums.ra);

@@ -91,7 +91,9 @@ class SolidShell8 final : public SolidElement {
     double weight = 0.0;
   };
   struct Sums;
-  void accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool full, Sums* sums, PointStatus* status);
+  // Forces, enhanced residual and the blocks of the tangent in (x, alpha) at the corners x and
+  // the enhanced parameters alpha; the points' trial states follow.
+  void accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, Sums* sums, PointStatus* status);
 
   Eigen::Matrix3d axes_;
   Eigen::Matrix<double, 3, 8> X_;  // reference corners in the material frame
