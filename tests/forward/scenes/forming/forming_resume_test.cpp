@@ -67,24 +67,22 @@ TEST(FormingResume, IndentLineStoppedMidwayResumesBitForBit) {
   stop_and_resume(s, "indent_line", stop);
 }
 
-// The brick family's checkpoint state (centre points, hourglass amplitudes and forces) and the
-// tool's contact on the top faces.
-TEST(FormingResume, BrickIndentStoppedMidwayResumesBitForBit) {
-  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_brick.toml");
+// A bundled indent of a solid sheet stopped after 21 increments (checkpoint after 16, deep in the
+// plastic range) and resumed.
+void stop_and_resume_solid_indent(const std::string& name) {
+  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/" + name + ".toml");
   s.checkpoint_increments = 8;
   RunControl stop;
-  stop.stop_after_increments = 21;  // checkpoint after 16, deep in the plastic range
-  stop_and_resume(s, "indent_brick", stop);
+  stop.stop_after_increments = 21;
+  stop_and_resume(s, name, stop);
 }
 
+// The brick family's checkpoint state (centre points, hourglass amplitudes and forces) and the
+// tool's contact on the top faces.
+TEST(FormingResume, BrickIndentStoppedMidwayResumesBitForBit) { stop_and_resume_solid_indent("indent_brick"); }
+
 // The solid-shell's checkpoint state (its points, the enhanced strains and their predictor).
-TEST(FormingResume, SolidShellIndentStoppedMidwayResumesBitForBit) {
-  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_solid_shell.toml");
-  s.checkpoint_increments = 8;
-  RunControl stop;
-  stop.stop_after_increments = 21;  // checkpoint after 16, deep in the plastic range
-  stop_and_resume(s, "indent_solid_shell", stop);
-}
+TEST(FormingResume, SolidShellIndentStoppedMidwayResumesBitForBit) { stop_and_resume_solid_indent("indent_solid_shell"); }
 
 TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
   const fs::path file = test::write_tiny_line(temp_path("line.toml"), "checkpoint_increments = 10\n");
