@@ -14,7 +14,7 @@ using Mat3 = Eigen::Matrix3d;
 using Vec3 = Eigen::Vector3d;
 
 Brick8::Brick8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const HourglassOptions& hourglass)
-    : axes_(axes), hourglass_(hourglass), point_(law) {
+    : axes_(axes), corners_(X), hourglass_(hourglass), point_(law) {
   if (!(std::isfinite(hourglass.scale) && hourglass.scale >= 0.0))
     throw std::invalid_argument("hourglass scale must be finite and >= 0, got " + std::to_string(hourglass.scale));
   if (!((axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-10 && axes.determinant() > 0.0))
@@ -38,15 +38,18 @@ void Brick8::update_hourglass_stiffness() {
   else kq_ = hourglass_.scale * hex_hourglass_stiffness(reference_, D);
 }
 
-Mat3 Brick8::deformation_gradient(const HexCorners& x) const {
-  Mat3 F = Mat3::Zero();
-  for (std::size_t I = 0; I < 8; ++I) F += x[I] * b_.col(static_cast<int>(I)).transpose();
-  return F;
+Mat3 Brick8::displacement_gradient(const HexCorners& x) const {
+  Mat3 G = Mat3::Zero();
+  for (std::size_t I = 0; I < 8; ++I) G += (x[I] - corners_[I]) * b_.col(static_cast<int>(I)).transpose();
+  return axes_.transpose() * G;
 }
+
+Mat3 Brick8::deformation_gradient(const HexCorners& x) const { return axes_ * (Mat3::Identity() + displacement_gradient(x)); }
 
 BrickStatus Brick8::evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) {
   BrickStatus status;
-  const Mat3 F = deformation_gradient(x);
+  const Mat3 H = displacement_gradient(x);
+  const Mat3 F = axes_ * (Mat3::Identity() + H);
   const double detF = F.determinant();
   if (!(detF > 0.0)) {
     status.ok = false;
@@ -54,9 +57,9 @@ BrickStatus Brick8::evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) {
     status.suggested_scale = 0.25;
     return status;
   }
-  const Mat3 C = F.transpose() * F;
+  const Mat3 C1 = H + H.transpose() + H.transpose() * H;  // C - I
   Voigt6 green;
-  green << 0.5 * (C(0, 0) - 1.0), 0.5 * (C(1, 1) - 1.0), 0.5 * (C(2, 2) - 1.0), C(0, 1), C(0, 2), C(1, 2);
+  green << 0.5 * C1(0, 0), 0.5 * C1(1, 1), 0.5 * C1(2, 2), C1(0, 1), C1(0, 2), C1(1, 2);
   Voigt6 S;
   Voigt6x6 D;
   const PointStatus ps = point_.update(green, &S, K ? &D : nullptr);
@@ -69,9 +72,9 @@ BrickStatus Brick8::evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) {
   thickness_ratio_trial_ = 1.0 / F.inverse().transpose().col(2).norm();
 
   // Hourglass amplitudes and their pull-back.
-  Eigen::Matrix<double, 3, 8> xs;
-  for (std::size_t I = 0; I < 8; ++I) xs.col(static_cast<int>(I)) = x[I];
-  const Eigen::Matrix<double, 3, 4> q = xs * gamma_.transpose();
+  Eigen::Matrix<double, 3, 8> us;
+  for (std::size_t I = 0; I < 8; ++I) us.col(static_cast<int>(I)) = x[I] - corners_[I];
+  const Eigen::Matrix<double, 3, 4> q = us * gamma_.transpose();
   Eigen::Matrix<double, 12, 1> Q;
   for (int a = 0; a < 4; ++a) Q.segment<3>(3 * a) = F.transpose() * q.col(a);
   const Eigen::Matrix<double, 12, 1> gq = g_ + kq_ * (Q - q_);

@@ -59,6 +59,21 @@ TEST(Brick8, HomogeneousStretchGivesTheMaterialPointsStress) {
   }
 }
 
+// An undeformed element has no forces at all, however far from the origin and however turned its
+// material axes: the strain and the hourglass amplitudes come from the displacements. (From the
+// positions, round-off gave forces of 1.3e-9 N here and 2e-9 N of residual in an unloaded cone
+// pie, which Newton's relative force test could not pass.)
+TEST(Brick8, UndeformedElementAwayFromTheOriginHasNoForces) {
+  const SolidPoint::Law law(aa3003());
+  const HexCorners X = map(distorted(), rotation(), Vec3(83.7, -41.3, 12.9));
+  Brick8 brick(X, rotation().transpose(), law);
+  HexVector f;
+  HexMatrix K;
+  ASSERT_TRUE(brick.evaluate(X, &f, &K).ok);
+  EXPECT_EQ(f.cwiseAbs().maxCoeff(), 0.0);
+  EXPECT_GT(K.norm(), 0.0);
+}
+
 // A rigid motion of a deformed, plastically loaded element leaves its forces turned with it and
 // its stress and hourglass energy unchanged (objectivity).
 TEST(Brick8, RigidRotationTurnsTheForcesAndKeepsTheEnergy) {
