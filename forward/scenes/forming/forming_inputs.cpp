@@ -1,10 +1,8 @@
 #include "forward/scenes/forming/forming_inputs.hpp"
 
-#include "forward/model/sheet_model.hpp"
 #include "forward/scenes/common/scene_inputs.hpp"
+#include "forward/scenes/common/sheet_element_inputs.hpp"
 #include "forward/scenes/common/tool_scene_inputs.hpp"
-
-#include <algorithm>
 
 namespace spifit::scene {
 namespace {
@@ -32,22 +30,7 @@ void add_scene_and_sheet(io::InputTable<FormingScene>& t) {
          [](FormingScene& s) -> double& { return s.fine_band; });
   t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness (shells and solid-shells)", true},
             [](FormingScene& s) -> int& { return s.thickness_points; });
-  t.text({"sheet.element", {}, "", {}, model::sheet_element_names(),
-          "the sheet's elements: shells on its mid-surface, one-point bricks in sheet.layers layers through the thickness, "
-          "or solid-shells (one through the thickness, sheet.thickness_points along it)", false},
-         {[](const FormingScene& s) -> std::string { return s.element; },
-          [](FormingScene& s, const std::string& v) {
-            const auto& names = model::sheet_element_names();
-            if (std::find(names.begin(), names.end(), v) == names.end()) return false;
-            s.element = v;
-            return true;
-          }});
-  t.integer({"sheet.layers", {}, "", Range::closed(1, 16), {},
-             "bricks through the thickness (sheet.element = \"brick\"; default 3, as the thesis's brick simulations)", false},
-            [](FormingScene& s) -> int& { return s.layers; });
-  t.real({"sheet.hourglass_scale", {}, "", Range::closed(0.0, 10.0), {},
-          "bricks: factor on the hourglass stabilisation's stiffness (1: the incompatible-modes element's, on the centre's tangent)", true},
-         [](FormingScene& s) -> double& { return s.hourglass_scale; });
+  add_sheet_element_inputs(t);
   t.real({"sheet.hourglass_stiffness", {}, "", Range::closed(0.0, 1.0), {},
           "> 0: one in-plane point per element (about a quarter of the material updates), with this fraction of the elastic "
           "section stiffness on the strains' variation over the element (hourglass control); 0: 2 x 2 points", true},

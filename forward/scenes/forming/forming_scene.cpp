@@ -7,6 +7,7 @@
 #include "forward/mesh/square_sheet.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/scenes/common/scene_inputs.hpp"
+#include "forward/scenes/common/sheet_element_inputs.hpp"
 #include "forward/scenes/forming/forming_inputs.hpp"
 #include "forward/scenes/forming/forming_path.hpp"
 #include "forward/toolpath/tool_path.hpp"
@@ -152,33 +153,6 @@ SheetAndTool forming_sheet_and_tool(const FormingScene& s) {
   return st;
 }
 
-// The checks of the sheet's elements: keys and options one family alone has, and a law the
-// solids cannot take.
-InputViolation solid_sheet_violation(const FormingScene& s) {
-  if (s.element != "brick") {
-    if (s.layers != 0)
-      return {"sheet.layers", std::to_string(s.layers),
-              s.element == "shell" ? "layers are for brick sheets: set sheet.element = \"brick\" or remove it"
-                                   : "a solid-shell sheet has one element through the thickness (its points along it are sheet.thickness_points): remove it"};
-    if (s.hourglass_scale != 1.0)
-      return {"sheet.hourglass_scale", io::format_number(s.hourglass_scale),
-              s.element == "shell" ? "the bricks' stabilisation factor; the shell's one-point option is sheet.hourglass_stiffness"
-                                   : "the bricks' stabilisation factor; the solid-shell has no hourglass modes: remove it"};
-  }
-  if (s.element == "shell") return {};
-  const std::string quoted = "\"" + s.element + "\"";
-  if (s.hourglass_stiffness > 0.0)
-    return {"sheet.hourglass_stiffness", io::format_number(s.hourglass_stiffness),
-            "the shell's one-point option; the " + s.element + " has its own integration: remove it with sheet.element = " + quoted};
-  if (s.explicit_scheme) return {"solver.scheme", "\"explicit\"", "the explicit scheme has shell elements only, not " + s.element + " elements"};
-  if (s.contact.surface == contact::ContactOptions::Surface::phong)
-    return {"contact.surface", "\"phong\"", "phong curves the facets with the shell's directors; solid elements take \"flat\""};
-  if (s.card.params.yield.active())
-    return {"sheet.element", quoted, "the material card " + s.card.file + " has a plane-stress yield function (" +
-                                         material::yield_function_title(s.card.params.yield.law) + "); solid elements need a 3D law (Hill 1948)"};
-  return {};
-}
-
 InputViolation forming_scene_error(const FormingScene& s) {
   if (const InputViolation v = sheet_and_tool_error(forming_sheet_and_tool(s))) return v;
   if (s.half && s.elements % 2 != 0)
@@ -223,12 +197,7 @@ FormingScene read_forming_scene(const std::string& path) {
   const auto points = root.table_array("path");
   read_path_points(root, points, s);
   if (const auto o = root.table("output")) read_sections(*o, s);
-  if (s.element == "brick") {
-    if (root.table("sheet")->has("thickness_points"))
-      throw io::InputError(path, "sheet.thickness_points", std::to_string(s.thickness_points),
-                           "integration points through the thickness of shells and solid-shells; a brick sheet has sheet.layers instead");
-    if (s.layers == 0) s.layers = FormingScene::kBrickLayers;
-  }
+  settle_sheet_element(root, path, s);
   const InputViolation v = forming_scene_error(s);
   if (!v) return s;
   if (v.key == "tool.gcode") root.table("tool")->fail("gcode", v.message);

@@ -40,11 +40,10 @@ struct FormingScene {
   double fine_band = 20.0;
   int thickness_points = 5;
   // The sheet's elements (model::sheet_element_names()): "shell" on the mid-surface, "brick" on
-  // the solid sheet in `layers` layers (0 until read: the brick's default, kBrickLayers), or
+  // the solid sheet in `layers` layers (0 until read: the brick's default, kDefaultBrickLayers), or
   // "solid_shell", one through the thickness with thickness_points along it.
   std::string element = "shell";
   int layers = 0;
-  static constexpr int kBrickLayers = 3;
   // The bricks' hourglass stabilisation: factor on its stiffness (element::HourglassOptions).
   double hourglass_scale = 1.0;
   // > 0: each element carries its layers at its centre only, with this fraction of the elastic

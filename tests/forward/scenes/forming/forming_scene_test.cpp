@@ -2,6 +2,7 @@
 // study, G-code vs built-in path, and the input checks of the scene reader.
 #include "forward/io/input_error.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/common/sheet_element_inputs.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
 #include "forward/scenes/forming/forming_scene.hpp"
 #include "tests/support/temp_files.hpp"
@@ -150,7 +151,7 @@ TEST(FormingScene, ReaderRefusesWhatTheSheetsElementsCannotTake) {
   EXPECT_NE(plane.find("plane-stress yield function"), std::string::npos) << plane;
   EXPECT_NE(plane.find("aa3003o_yld2000_start.toml"), std::string::npos) << plane;
   const FormingScene defaulted = read_forming_scene(test::write_temp_file("brick_default.toml", head + brick).string());
-  EXPECT_EQ(defaulted.layers, FormingScene::kBrickLayers);
+  EXPECT_EQ(defaulted.layers, kDefaultBrickLayers);
   // Solid-shells: one element through the thickness, thickness_points along it, no hourglass.
   const std::string solid_shell = "[sheet]\nelement = \"solid_shell\"\n";
   const std::string stacked = error_of(head + solid_shell + "layers = 2\n");
