@@ -54,10 +54,12 @@ struct ContactSurface {
   std::vector<int> element;  // the model element of each face (with faces)
 };
 
-// The sheet's mid-surface at the model's committed state, one entry per mid-surface node.
+// The sheet's mid-surface at the model's committed state, one entry per mid-surface node: its
+// top (tool-side) and bottom surfaces are current +- thickness / 2 along the unit director.
 struct MidSurface {
   std::vector<Eigen::Vector3d> reference, current;
-  std::vector<double> thickness;  // the sheet's thickness there [mm]
+  std::vector<Eigen::Vector3d> director;  // a shell node's director; a solid column's bottom-to-top unit vector
+  std::vector<double> thickness;          // the sheet's thickness there [mm]
 };
 
 class ElementFamily {
@@ -94,10 +96,10 @@ class ElementFamily {
   // The family's point and cell data of the model's committed state for the VTU output, appended
   // after the model's displacement (model_vtu.hpp).
   virtual void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const = 0;
-  // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
-  // The sections' view of the sheet. By default the model's nodes with FeModel::nodal_thickness
-  // (a shell's nodes lie on its mid-surface).
+  // The sections' view of the sheet. By default the model's nodes with their directors and
+  // FeModel::nodal_thickness (a shell's nodes lie on its mid-surface).
   virtual MidSurface mid_surface(const FeModel& model) const;
+  // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;
 };

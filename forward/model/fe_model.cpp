@@ -173,6 +173,7 @@ MidSurface ElementFamily::mid_surface(const FeModel& model) const {
   MidSurface m;
   m.reference = model.mesh().nodes;
   m.current = model.positions();
+  m.director = model.directors();
   m.thickness = model.nodal_thickness();
   return m;
 }

@@ -193,7 +193,9 @@ MidSurface SolidFamily::mid_surface(const FeModel& model) const {
   for (std::size_t i = 0; i < n; ++i) {
     m.reference.push_back(0.5 * (X[i] + X[top + i]));
     m.current.push_back(0.5 * (x[i] + x[top + i]));
-    m.thickness.push_back((x[top + i] - x[i]).norm());
+    const Eigen::Vector3d across = x[top + i] - x[i];
+    m.thickness.push_back(across.norm());
+    m.director.push_back(across / across.norm());
   }
   return m;
 }

@@ -30,13 +30,15 @@ inline std::string toml_float(double v) {
   return s;
 }
 
-// The tiny cone: 45 deg wall, 0.5 mm stepdown, 1 mm sheet with 3 thickness points, on a coarse
-// 90 deg pie, card C.3 + C.4.
+// The tiny cone: 45 deg wall, 0.5 mm stepdown, 1 mm sheet with 3 thickness points (shells and
+// solid-shells), on a coarse 90 deg pie, card C.3 + C.4.
 struct TinyCone {
   int contours = 1;
   double top_radius = 20.0;           // 128 elements with elements_per_45deg = 8
   int elements_per_45deg = 8;
   double travel_per_increment = 0.5;  // mm
+  std::string element = "shell";      // [sheet] element; a brick sheet has `layers` instead of thickness points
+  int layers = 0;                     // > 0: [sheet] layers
 };
 // Its smaller cousin: top radius 12 mm, 6 elements per 45 deg (72 elements, about a second a contour).
 inline TinyCone small_tiny_cone(int contours = 1) { return {contours, 12.0, 6, 0.5}; }
@@ -47,7 +49,10 @@ inline std::filesystem::path write_tiny_cone(const std::filesystem::path& file, 
   std::ofstream(file) << "[scene]\nkind = \"cone\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
                       << "[cone]\nwall_angle = 45.0\nstepdown = 0.5\ncontours = " << c.contours << "\ntop_radius = " << toml_float(c.top_radius)
                       << "\npie_angle = 90.0\n"
-                      << "[sheet]\nthickness = 1.0\nelements_per_45deg = " << c.elements_per_45deg << "\nthickness_points = 3\n"
+                      << "[sheet]\nthickness = 1.0\nelements_per_45deg = " << c.elements_per_45deg << "\n"
+                      << (c.element == "brick" ? "" : "thickness_points = 3\n")
+                      << (c.element == "shell" ? "" : "element = \"" + c.element + "\"\n")
+                      << (c.layers > 0 ? "layers = " + std::to_string(c.layers) + "\n" : "")
                       << "[solver]\ntravel_per_increment = " << toml_float(c.travel_per_increment) << "\n"
                       << extra;
   return file;

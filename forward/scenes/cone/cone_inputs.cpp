@@ -1,6 +1,7 @@
 #include "forward/scenes/cone/cone_inputs.hpp"
 
 #include "forward/scenes/common/scene_inputs.hpp"
+#include "forward/scenes/common/sheet_element_inputs.hpp"
 #include "forward/scenes/common/tool_scene_inputs.hpp"
 
 namespace spifit::scene {
@@ -61,11 +62,13 @@ void add_sheet(Table& t) {
          [](ConeScene& s) -> double& { return s.thickness; });
   t.real({"sheet.clamp_radius", {}, "mm", Range::positive(), {}, "radius of the clamp = the mesh's rim; > the top radius (default: top + 1.5)", false},
          [](ConeScene& s) -> double& { return s.clamp_radius; });
-  t.boolean({"sheet.clamp_rotations", {}, "", {}, {}, "clamp the rim's rotations too (thesis: translations only)", false},
+  t.boolean({"sheet.clamp_rotations", {}, "", {}, {}, "clamp the rim's rotations too (thesis: translations only); solids: every node of the "
+              "rim's columns, else their mid-surface only", false},
             [](ConeScene& s) -> bool& { return s.clamp_rotations; });
   add_mesh(t);
-  t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness", true},
+  t.integer({"sheet.thickness_points", {}, "", Range::closed(1, 11), {}, "integration points through the thickness (shells and solid-shells)", true},
             [](ConeScene& s) -> int& { return s.thickness_points; });
+  add_sheet_element_inputs(t);
   t.real({"sheet.hourglass_stiffness", {}, "", Range::closed(0.0, 1.0), {},
           "> 0: one in-plane point per element (about a quarter of the material updates), with this fraction of the elastic "
           "section stiffness on the strains' variation over the element (hourglass control); 0: 2 x 2 points", true},

@@ -3,6 +3,7 @@
 #include "forward/io/binary_archive.hpp"
 #include "forward/io/format_text.hpp"
 #include "forward/model/shell_model.hpp"
+#include "forward/mesh/mesh.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
 #include "forward/scenes/cone/element_history.hpp"
 
@@ -103,34 +104,43 @@ std::vector<double> stage_end_distances(const toolpath::ConePath& path) {
   return ends;
 }
 
-ConeObservableLog::ConeObservableLog(const ConeScene& scene, const model::ShellModel& model, const ConeTrack& track, const RunFiles& files)
-    : scene_(scene), model_(model), track_(track), files_(files), line_(radial_line_nodes(model.mesh(), section_angle_deg(scene.pie_angle))),
-      stage_ends_(stage_end_distances(track.path())),
+ConeObservableLog::ConeObservableLog(const ConeScene& scene, const model::FeModel& model, const mesh::Mesh& mid_surface, const ConeTrack& track,
+                                     const RunFiles& files)
+    : scene_(scene), model_(model), mid_surface_(mid_surface), track_(track), files_(files),
+      line_(radial_line_nodes(mid_surface, section_angle_deg(scene.pie_angle))), stage_ends_(stage_end_distances(track.path())),
       // The run's shells use the scene's thickness rule and points (element_history_row checks
       // the count against the element's layers).
       rule_(element::make_thickness_rule(scene.thickness_rule, scene.thickness_points)),
       section_rows_(io::parse_columns(kSectionColumns)), stage_rows_(io::parse_columns(kStageColumns)),
       history_rows_(io::parse_columns(element_history_columns(scene.thickness_points))) {
-  const auto axis = model.mesh().node_sets.find("axis");
-  if (axis != model.mesh().node_sets.end() && !axis->second.empty()) centre_node_ = axis->second.front();
-  if (scene.history_element) history_element_ = nearest_element(model.mesh(), scene.history_element->r, scene.history_element->theta_deg);
+  const auto axis = mid_surface.node_sets.find("axis");
+  if (axis != mid_surface.node_sets.end() && !axis->second.empty()) centre_node_ = axis->second.front();
+  if (scene.history_element) {
+    if (!dynamic_cast<const model::ShellModel*>(&model))
+      throw std::invalid_argument("the element history (output.history_element) is the shell's; the model has " + model.family().name() +
+                                  " elements");
+    history_element_ = nearest_element(mid_surface, scene.history_element->r, scene.history_element->theta_deg);
+  }
 }
 
 std::vector<SectionNode> ConeObservableLog::section_nodes() const {
-  const std::vector<double> h = model_.nodal_thickness();
+  const model::MidSurface mid = model_.family().mid_surface(model_);
   std::vector<SectionNode> nodes;
-  for (int n : line_)
-    nodes.push_back({model_.mesh().nodes[static_cast<std::size_t>(n)], model_.position(n), model_.director(n), h[static_cast<std::size_t>(n)]});
+  for (int n : line_) {
+    const std::size_t i = static_cast<std::size_t>(n);
+    nodes.push_back({mid.reference[i], mid.current[i], mid.director[i], mid.thickness[i]});
+  }
   return nodes;
 }
 
 double ConeObservableLog::centre_z() const {
-  return centre_node_ >= 0 ? model_.position(centre_node_).z() : std::numeric_limits<double>::quiet_NaN();
+  if (centre_node_ < 0) return std::numeric_limits<double>::quiet_NaN();
+  return model_.family().mid_surface(model_).current[static_cast<std::size_t>(centre_node_)].z();
 }
 
 void ConeObservableLog::after_increment(const IncrementView& v) {
   const double travel = v.travel;
-  if (history_element_ >= 0) history_rows_.add_row(element_history_values(travel, v.lambda, element_history_row(model_, history_element_, rule_)));
+  if (history_element_ >= 0) history_rows_.add_row(element_history_values(travel, v.lambda, element_history_row(static_cast<const model::ShellModel&>(model_), history_element_, rule_)));
   // Stage ends (the end of the stage's retract; the last stage ends with the path).
   while (stage_rows_.size() < stage_ends_.size() && travel >= stage_ends_[stage_rows_.size()] - 1e-9) {
     const int stage = static_cast<int>(stage_rows_.size()) + 1;
@@ -178,7 +188,7 @@ void ConeObservableLog::write(WriteReason reason) {
   files_.write("stages.csv", head + ": at the end of each stage (end of its retract; thesis Fig. 8.16): part centre = axis node, "
                                        "mid-surface; depth = -z\n" + stage_rows_.csv());
   if (history_element_ >= 0) {
-    const Eigen::Vector3d c = model_.mesh().centroid(history_element_);
+    const Eigen::Vector3d c = mid_surface_.centroid(history_element_);
     char buf[300];
     std::snprintf(buf, sizeof buf,
                   ": element %d (initial centroid r = %.6g mm, theta = %.6g deg), after every increment; Green strains and curvatures in "
@@ -203,7 +213,7 @@ json ConeObservableLog::summary() const {
     j["stages"].push_back({{"stage", static_cast<int>(r[0])}, {"wall_angle", r[1]}, {"centre_z", finite_or_null(r[3])},
                            {"centre_depth", finite_or_null(r[4])}, {"max_elongation", r[5]}});
   if (history_element_ >= 0) {
-    const Eigen::Vector3d c = model_.mesh().centroid(history_element_);
+    const Eigen::Vector3d c = mid_surface_.centroid(history_element_);
     j["history_element"] = {{"element", history_element_},
                             {"requested", {{"r", scene_.history_element->r}, {"theta", scene_.history_element->theta_deg}}},
                             {"centroid_r", c.head<2>().norm()},

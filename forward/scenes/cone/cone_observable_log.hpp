@@ -6,7 +6,9 @@
 //  - at the end of each stage (the end of its retract; thesis Fig. 8.16): a row of stages.csv
 //    with the height and depth of the part centre (the axis node's mid-surface);
 //  - after every increment, with [output] history_element: a row of history.csv
-//    (element_history.hpp).
+//    (element_history.hpp; a shell model's).
+// Sections see the sheet through its family's mid-surface (ElementFamily::mid_surface): a
+// shell's nodes and directors, a solid's node columns.
 #include "forward/element/thickness_rule.hpp"
 #include "forward/io/series.hpp"
 #include "forward/scenes/common/run_files.hpp"
@@ -18,8 +20,12 @@
 
 #include <vector>
 
+namespace spifit::mesh {
+struct Mesh;
+}  // namespace spifit::mesh
+
 namespace spifit::model {
-class ShellModel;
+class FeModel;
 }  // namespace spifit::model
 
 namespace spifit::scene {
@@ -32,9 +38,11 @@ std::vector<double> stage_end_distances(const toolpath::ConePath& path);
 
 class ConeObservableLog : public RunObserver {
  public:
-  // The scene, model, track and files must outlive the log; the model's mesh gives the section
-  // line and the history element.
-  ConeObservableLog(const ConeScene& scene, const model::ShellModel& model, const ConeTrack& track, const RunFiles& files);
+  // The scene, model, the sheet's mid-surface mesh, track and files must outlive the log; the
+  // mid-surface mesh gives the section line, the part centre and the history element
+  // (std::invalid_argument for a history element in a model of another family than the shell).
+  ConeObservableLog(const ConeScene& scene, const model::FeModel& model, const mesh::Mesh& mid_surface, const ConeTrack& track,
+                    const RunFiles& files);
 
   // Per completed contour (sections.csv), per stage (stages.csv), per increment (history.csv).
   const io::Series& sections() const { return section_rows_; }
@@ -61,11 +69,12 @@ class ConeObservableLog : public RunObserver {
   double centre_z() const;
 
   const ConeScene& scene_;
-  const model::ShellModel& model_;
+  const model::FeModel& model_;
+  const mesh::Mesh& mid_surface_;
   const ConeTrack& track_;
   const RunFiles& files_;
   std::vector<int> line_;   // the section's nodes from the axis outwards
-  int centre_node_ = -1;    // the axis node
+  int centre_node_ = -1;    // the axis node (of the mid-surface mesh)
   std::vector<double> stage_ends_;
   int history_element_ = -1;
   element::ThicknessRule rule_;

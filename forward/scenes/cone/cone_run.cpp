@@ -24,31 +24,52 @@ using json = nlohmann::json;
 
 bool is_pie(const ConeScene& s) { return s.pie_angle < 360.0; }
 
-// Rim (= clamp radius) fixed in translation (and rotation on request); pie edges tied
-// cyclically: the DOFs of edge_theta1 are those of edge_theta0 rotated by gamma, and the axis
-// node moves along z only (tie_cyclic_edges). The rim node of edge_theta1 is a tied node: it
-// is not clamped itself but follows its clamped partner on edge_theta0 (R 0 = 0). A coarsened
-// centre's hanging nodes follow their edges' ends (model/hanging_nodes.hpp; an end on
-// edge_theta1 is expanded through its cyclic tie).
-solver::DofConstraints cone_constraints(const ConeScene& s, model::ShellModel* model) {
-  const mesh::Mesh& m = model->mesh();
-  solver::DofConstraints c(model->num_dofs());
+// The rim's columns of a solid sheet (levels 0 .. L of mesh::extrude_sheet): every node held
+// with clamp_rotations; otherwise the mid-surface alone, as the shell's rim without its
+// rotations: level k moves opposite to level L - k (u_k = -u_{L-k}, their mean stays put) and a
+// middle level is held, so that the column may turn about its middle and change its length.
+void clamp_solid_rim(const ConeScene& s, const model::FeModel& model, const std::vector<char>& slave, solver::DofConstraints* c) {
+  const int levels = (s.element == "brick" ? s.layers : 1) + 1, n = model.num_nodes() / levels;
+  for (int node : model.mesh().node_sets.at("rim")) {
+    if (slave[static_cast<std::size_t>(node)]) continue;
+    const int k = node / n, mirror = (levels - 1 - k) * n + node % n;
+    for (int i = 0; i < 3; ++i) {
+      if (s.clamp_rotations || mirror == node) c->prescribe(model.node_dof(node, i));
+      else if (k < levels - 1 - k) c->tie(model.node_dof(node, i), {{model.node_dof(mirror, i), -1.0}});
+    }
+  }
+}
+
+// Rim (= clamp radius) fixed in translation (and rotation on request; a solid's columns:
+// clamp_solid_rim); pie edges tied cyclically: the DOFs of edge_theta1 are those of edge_theta0
+// rotated by gamma, and the axis node moves along z only (tie_cyclic_edges). The rim node of
+// edge_theta1 is a tied node: it is not clamped itself but follows its clamped partner on
+// edge_theta0 (R 0 = 0). A coarsened centre's hanging nodes follow their edges' ends
+// (model/hanging_nodes.hpp; an end on edge_theta1 is expanded through its cyclic tie).
+solver::DofConstraints cone_constraints(const ConeScene& s, model::FeModel& model) {
+  const mesh::Mesh& m = model.mesh();
+  solver::DofConstraints c(model.num_dofs());
   std::vector<char> slave(static_cast<std::size_t>(m.num_nodes()), 0);
   if (is_pie(s)) {
-    model::tie_cyclic_edges(*model, "edge_theta0", "edge_theta1", s.pie_angle, &c);
+    model::tie_cyclic_edges(model, "edge_theta0", "edge_theta1", s.pie_angle, &c);
     for (int n : m.node_sets.at("edge_theta1")) slave[static_cast<std::size_t>(n)] = 1;
     for (int n : m.node_sets.at("axis")) slave[static_cast<std::size_t>(n)] = 0;
   }
-  const int clamped = s.clamp_rotations ? 6 : 3;
-  for (int n : m.node_sets.at("rim")) {
-    if (slave[static_cast<std::size_t>(n)]) continue;
-    for (int k = 0; k < clamped; ++k) c.prescribe(model::ShellModel::dof(n, k));
+  const bool shell = model.family().dofs_per_node() == 6;
+  if (shell) {
+    const int clamped = s.clamp_rotations ? 6 : 3;
+    for (int n : m.node_sets.at("rim")) {
+      if (slave[static_cast<std::size_t>(n)]) continue;
+      for (int k = 0; k < clamped; ++k) c.prescribe(model.node_dof(n, k));
+    }
+  } else {
+    clamp_solid_rim(s, model, slave, &c);
   }
-  model::tie_hanging_translations(*model, &c);
-  // Five unknowns at every node away from the ties and the clamp: the drilling rotations
+  model::tie_hanging_translations(model, &c);
+  // Five unknowns at every shell node away from the ties and the clamp: the drilling rotations
   // leave the factorisation (docs/design/numerics-shell.md, "Nodal rotation frames").
-  model->use_nodal_rotation_frames(&c);
-  model::tie_hanging_rotations(*model, &c);
+  if (shell) model.use_nodal_rotation_frames(&c);
+  model::tie_hanging_rotations(model, &c);
   c.finalize();
   return c;
 }
@@ -60,7 +81,7 @@ std::vector<double> tool_copies(const ConeScene& s) {
   return {s.pie_angle, -s.pie_angle};
 }
 
-std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& track, const model::ShellModel& model) {
+std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& track, const model::FeModel& model) {
   std::vector<std::string> w = model.warnings();
   if (!is_pie(s)) return w;
   if (!s.virtual_tools) w.emplace_back("virtual tools off: a tool footprint crossing a pie edge does not act on the other edge");
@@ -77,7 +98,7 @@ std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& tra
   return w;
 }
 
-json summary_head(const ConeScene& s, const model::ShellModel& model, const model::ToolContact& tool, const ConeTrack& track,
+json summary_head(const ConeScene& s, const model::FeModel& model, const model::ToolContact& tool, const ConeTrack& track,
                   const std::vector<std::string>& warnings) {
   const auto& p = track.path().path;
   json j;
@@ -95,6 +116,11 @@ json summary_head(const ConeScene& s, const model::ShellModel& model, const mode
                 {"material_axes", model::to_string(s.material_axes)},
                 {"virtual_tools_deg", tool.copies_deg()}};
   if (s.hourglass_stiffness > 0.0) j["model"]["hourglass_stiffness"] = s.hourglass_stiffness;
+  if (s.element == "brick") {
+    for (const char* key : {"thickness_points", "thickness_rule"}) j["model"].erase(key);
+    j["model"].update({{"element", s.element}, {"layers", s.layers}, {"hourglass_scale", s.hourglass_scale}});
+  }
+  if (s.element == "solid_shell") j["model"]["element"] = s.element;
   if (s.mesh.coarse_inside > 0.0)
     j["model"].update({{"coarse_inside", s.mesh.coarse_inside}, {"hanging_nodes", model.mesh().constrained_nodes.size()}});
   json stages = json::array();
@@ -132,8 +158,10 @@ FeRunSetup cone_setup(const ConeScene& scene, const ConeTrack& track) {
   f.spin_per_load_factor = scene.spin * 2.0 * std::numbers::pi / 60.0 * duration * map.map.effective_length() / length;
   f.load_map = map.map;
   f.time_of_travel = [length, duration](double travel) { return travel / length * duration; };
-  // The cone runs with shells (cone_setup leaves FeRunSetup::element at "shell").
-  f.constraints = [&scene](model::FeModel& m) { return cone_constraints(scene, &static_cast<model::ShellModel&>(m)); };
+  f.element = scene.element;
+  f.layers = scene.layers;
+  f.hourglass.scale = scene.hourglass_scale;
+  f.constraints = [&scene](model::FeModel& m) { return cone_constraints(scene, m); };
   f.newton = tool_newton_options(scene, map.map.effective_length());
   f.newton.breakpoints = map.breakpoints;
   for (std::size_t k = 0; k < track.contours().size(); ++k) {
@@ -179,17 +207,16 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
       std::string(scene.explicit_scheme ? "explicit: kinetic energy and damping work in their columns; "
                                         : "kinetic energy 0 (static implicit); ") +
       "balance_error = external_work - the other columns", run.files(), scene.explicit_scheme));
-  const model::ShellModel& shell = *run.shell_model();
-  auto& observables = run.add_observer(std::make_unique<ConeObservableLog>(scene, shell, track, run.files()));
+  auto& observables = run.add_observer(std::make_unique<ConeObservableLog>(scene, run.model(), run.setup().mesh, track, run.files()));
   run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
 
   ConeResult r;
-  r.warnings = scene_warnings(scene, track, shell);
-  r.inputs = summary_head(scene, shell, run.tool(), track, r.warnings);
+  r.warnings = scene_warnings(scene, track, run.model());
+  r.inputs = summary_head(scene, run.model(), run.tool(), track, r.warnings);
   r.name = scene.name;
   r.elements = run.model().num_elements();
   r.contours_total = static_cast<int>(track.contours().size());
-  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.model().mesh()));
+  r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.setup().mesh));
   for (const ForceSample& s : polar_samples(r.force))
     for (int i = 0; i < 3; ++i)
       if (std::abs(s.polar(i)) > std::abs(r.peak_polar(i))) r.peak_polar(i) = s.polar(i);

@@ -3,6 +3,7 @@
 #include "forward/scenes/cone/cone_scene.hpp"
 
 #include "forward/scenes/common/scene_inputs.hpp"
+#include "forward/scenes/common/sheet_element_inputs.hpp"
 #include "forward/scenes/cone/cone_inputs.hpp"
 
 #include "forward/io/input_error.hpp"
@@ -172,7 +173,7 @@ InputViolation coarsening_violation(const ConeScene& s) {
   return {};
 }
 
-// The mesh must exist and its elements must not be too short for the thickness (ShellModel's
+// The mesh must exist and a shell's elements must not be too short for the thickness (ShellModel's
 // limit t/l <= 3): checked before the run so that the error comes before any output.
 InputViolation mesh_violation(const ConeScene& s) {
   mesh::Mesh m;
@@ -187,7 +188,7 @@ InputViolation mesh_violation(const ConeScene& s) {
   for (const auto& q : m.quads)
     for (std::size_t i = 0; i < 4; ++i)
       shortest = std::min(shortest, (m.nodes[static_cast<std::size_t>(q[(i + 1) % 4])] - m.nodes[static_cast<std::size_t>(q[i])]).norm());
-  if (s.thickness / shortest > 3.0)
+  if (s.element == "shell" && s.thickness / shortest > 3.0)
     return {"sheet.elements_per_45deg", std::to_string(s.mesh.elements_per_45deg),
             "the shortest element edge " + io::format_number(shortest) + " mm is below a third of the thickness (sheet.thickness = " +
                 io::format_number(s.thickness) + "; the shell's limit t/l <= 3): fewer elements or a thinner sheet"};
@@ -211,6 +212,7 @@ ConeScene read_cone_scene(const std::string& path) {
   read_cone_table(root, s);
   read_tables(root, s);
   read_output_extras(root, s);
+  settle_sheet_element(root, path, s);
   if (const InputViolation v = cone_scene_error(s)) throw io::InputError(path, v.key, v.value, v.message);
   return s;
 }
@@ -240,6 +242,10 @@ InputViolation cone_scene_error(const ConeScene& s) {
     return {"sheet.core_radius", format_number(s.mesh.core_radius), "must lie in [0, clamp_radius) (0: automatic)"};
   if (!(s.mesh.ring_start < s.clamp_radius))
     return {"sheet.ring_start", format_number(s.mesh.ring_start), "must lie in [0, clamp_radius) (0: no circular layers)"};
+  if (InputViolation v = solid_sheet_violation(s)) return v;
+  if (s.element != "shell" && s.history_element)
+    return {"output.history_element", "", "the element history is the shell's (layer strains and curvatures of its mid-surface): "
+                                          "remove it with sheet.element = \"" + s.element + "\""};
   if (InputViolation v = stage_violation(s)) return v;
   if (InputViolation v = scheme_violation(s)) return v;
   if (InputViolation v = coarsening_violation(s)) return v;

@@ -36,6 +36,13 @@ struct ConeScene {
   bool clamp_rotations = false;    // thesis: translations only
   mesh::DiscOptions mesh;          // radius and angle follow clamp_radius and pie_angle
   int thickness_points = 5;
+  // The sheet's elements (model::sheet_element_names()): "shell", "brick" in `layers` layers (0
+  // until read: kDefaultBrickLayers) or "solid_shell"; the bricks' hourglass_scale. A solid rim
+  // is clamped column by column: clamp_rotations holds every node of it, otherwise its
+  // mid-surface alone is held (cone_run.cpp).
+  std::string element = "shell";
+  int layers = 0;
+  double hourglass_scale = 1.0;
   // > 0: each element carries its layers at its centre only, with this fraction of the elastic
   // section stiffness on the strains' variation over it (element::ShellOptions). 0: 2 x 2 points.
   double hourglass_stiffness = 0.0;
@@ -87,7 +94,8 @@ struct ConeScene {
   int checkpoint_every = 1;  // completed contours between checkpoints (DIR/checkpoint/state.bin); 0: none
   int checkpoint_increments = 0;  // increments between checkpoints besides; 0: none
   // [output] history_element = { r = 75.55, theta = 22.5 }: the element of the initial mesh whose
-  // centroid is nearest to this point writes DIR/history.csv (element_history.hpp; thesis §9.4).
+  // centroid is nearest to this point writes DIR/history.csv (element_history.hpp; thesis §9.4;
+  // shells only).
   struct HistoryPoint {
     double r = 0.0, theta_deg = 0.0;
   };
