@@ -123,8 +123,7 @@ ConeObservableLog::ConeObservableLog(const ConeScene& scene, const model::FeMode
   }
 }
 
-std::vector<SectionNode> ConeObservableLog::section_nodes() const {
-  const model::MidSurface mid = model_.family().mid_surface(model_);
+std::vector<SectionNode> ConeObservableLog::section_nodes(const model::MidSurface& mid) const {
   std::vector<SectionNode> nodes;
   for (int n : line_) {
     const std::size_t i = static_cast<std::size_t>(n);
@@ -133,20 +132,23 @@ std::vector<SectionNode> ConeObservableLog::section_nodes() const {
   return nodes;
 }
 
-double ConeObservableLog::centre_z() const {
-  if (centre_node_ < 0) return std::numeric_limits<double>::quiet_NaN();
-  return model_.family().mid_surface(model_).current[static_cast<std::size_t>(centre_node_)].z();
+double ConeObservableLog::centre_z(const model::MidSurface& mid) const {
+  return centre_node_ >= 0 ? mid.current[static_cast<std::size_t>(centre_node_)].z() : std::numeric_limits<double>::quiet_NaN();
 }
 
 void ConeObservableLog::after_increment(const IncrementView& v) {
   const double travel = v.travel;
-  if (history_element_ >= 0) history_rows_.add_row(element_history_values(travel, v.lambda, element_history_row(static_cast<const model::ShellModel&>(model_), history_element_, rule_)));
+  if (history_element_ >= 0) {
+    const auto& shell = static_cast<const model::ShellModel&>(model_);  // checked at construction
+    history_rows_.add_row(element_history_values(travel, v.lambda, element_history_row(shell, history_element_, rule_)));
+  }
   // Stage ends (the end of the stage's retract; the last stage ends with the path).
   while (stage_rows_.size() < stage_ends_.size() && travel >= stage_ends_[stage_rows_.size()] - 1e-9) {
     const int stage = static_cast<int>(stage_rows_.size()) + 1;
-    const double z = centre_z();
+    const model::MidSurface mid = model_.family().mid_surface(model_);
+    const double z = centre_z(mid);
     double max_ratio = 0.0;
-    for (const auto& e : radial_elongation(section_nodes())) max_ratio = std::max(max_ratio, e.ratio);
+    for (const auto& e : radial_elongation(section_nodes(mid))) max_ratio = std::max(max_ratio, e.ratio);
     stage_rows_.add_row({static_cast<double>(stage), stage_wall_angle(scene_, stage), travel, z, -z, max_ratio});
   }
 }
@@ -154,7 +156,8 @@ void ConeObservableLog::after_increment(const IncrementView& v) {
 void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
   (void)v;
   const ContourSpan& span = track_.contours()[static_cast<std::size_t>(m.index)];
-  const std::vector<SectionNode> nodes = section_nodes();
+  const model::MidSurface mid = model_.family().mid_surface(model_);
+  const std::vector<SectionNode> nodes = section_nodes(mid);
   const double theta0 = section_angle_deg(scene_.pie_angle);
   const std::vector<SectionPoint> points = radial_section(nodes, theta0, scene_.thickness);
   const std::vector<RadialEdge> edges = radial_elongation(nodes);
@@ -171,7 +174,7 @@ void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
                                      scene_.name.c_str(), span.stage, span.contour) +
                          elongation_csv(edges));
   profiles_.push_back({span.stage, span.contour, points});
-  const double z = centre_z();
+  const double z = centre_z(mid);
   section_rows_.add_row({static_cast<double>(span.stage), static_cast<double>(span.contour), wall, static_cast<double>(s.plateau_nodes),
                            s.plateau_thickness, s.sine_law_thickness, s.plateau_thickness / s.sine_law_thickness, s.min_thickness,
                            s.min_thickness_r0, s.min_thickness_depth, s.max_elongation, z, -z});

@@ -26,6 +26,7 @@ struct Mesh;
 
 namespace spifit::model {
 class FeModel;
+struct MidSurface;
 }  // namespace spifit::model
 
 namespace spifit::scene {
@@ -65,8 +66,9 @@ class ConeObservableLog : public RunObserver {
   void restore(io::BinaryReader& r) override;
 
  private:
-  std::vector<SectionNode> section_nodes() const;
-  double centre_z() const;
+  // The section line's nodes and the part centre's height on the sheet's mid-surface.
+  std::vector<SectionNode> section_nodes(const model::MidSurface& mid) const;
+  double centre_z(const model::MidSurface& mid) const;
 
   const ConeScene& scene_;
   const model::FeModel& model_;

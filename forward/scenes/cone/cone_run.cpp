@@ -16,6 +16,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 namespace spifit::scene {
 namespace {
@@ -30,6 +32,9 @@ bool is_pie(const ConeScene& s) { return s.pie_angle < 360.0; }
 // middle level is held, so that the column may turn about its middle and change its length.
 void clamp_solid_rim(const ConeScene& s, const model::FeModel& model, const std::vector<char>& slave, solver::DofConstraints* c) {
   const int levels = (s.element == "brick" ? s.layers : 1) + 1, n = model.num_nodes() / levels;
+  if (n * levels != model.num_nodes())
+    throw std::logic_error("cone rim: the model's " + std::to_string(model.num_nodes()) + " nodes are not " + std::to_string(levels) +
+                           " levels of a sheet");
   for (int node : model.mesh().node_sets.at("rim")) {
     if (slave[static_cast<std::size_t>(node)]) continue;
     const int k = node / n, mirror = (levels - 1 - k) * n + node % n;
