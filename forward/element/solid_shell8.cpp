@@ -140,23 +140,24 @@ SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const
 
 namespace {
 // The kinematics of one integration point: convective strain samples, interpolation weights,
-// d E / d x (material frame), and the log strain of E with d eps / d (x, alpha).
+// d e / d x of the convective strain e, and the log strain of E (material frame).
 struct PointKinematics {
   Sample e11, e22, e12, e33;
   double w13[2], w23[2];
-  Eigen::Matrix<double, 6, 24> B;
+  Eigen::Matrix<double, 6, 24> Bc;
   LogStrain3 ls;
-  Eigen::Matrix<double, 6, 24 + SolidShell8::kEnhanced> G;  // d eps / d (x, alpha)
 };
 const Voigt6 kTrace = (Voigt6() << 1, 1, 1, 0, 0, 0).finished();
 }  // namespace
 
-void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, Sums* sums, PointStatus* status) {
-  constexpr int kExt = 24 + kEnhanced;
+void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool with_kuu, Sums* sums,
+                             PointStatus* status) {
+  using RowU = Eigen::Matrix<double, 1, 24>;
+  using RowA = Eigen::Matrix<double, 1, kEnhanced>;
   *sums = Sums{};
   std::array<Sample, 4> shear;
   std::array<PointKinematics, 4> pk;
-  Eigen::Matrix<double, kExt, kExt> kext = Eigen::Matrix<double, kExt, kExt>::Zero(), klow = kext;
+  HexMatrix klow = HexMatrix::Zero(), geometric = HexMatrix::Zero();
   for (std::size_t level = 0; level < zeta_.size(); ++level) {
     const double zeta = zeta_[level];
     for (int m = 0; m < 4; ++m)
@@ -164,7 +165,8 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
                                                           m < 2 ? 0 : 1, 2, shear0_[level](m));
     // The level's four in-plane points: their log strains and the mean volumetric strain.
     double volume = 0.0, theta = 0.0;
-    Eigen::Matrix<double, 1, kExt> dtheta = Eigen::Matrix<double, 1, kExt>::Zero();
+    RowU dtheta_u = RowU::Zero();  // d theta / d x
+    RowA dtheta_a = RowA::Zero();  // d theta / d alpha
     for (std::size_t q = 0; q < 4; ++q) {
       const std::size_t p = 4 * level + q;
       const PointGeometry& pg = geometry_[p];
@@ -195,8 +197,7 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       e(2) = k.e33.value;
       e(4) = k.w13[0] * shear[0].value + k.w13[1] * shear[1].value;
       e(5) = k.w23[0] * shear[2].value + k.w23[1] * shear[3].value;
-      Eigen::Matrix<double, 6, 24> Bc;  // d e / d x (convective)
-      auto set_row = [&Bc](int r, const Grad& g) { Bc.row(r) = Eigen::Map<const Eigen::Matrix<double, 1, 24>>(g.data()); };
+      auto set_row = [&k](int r, const Grad& g) { k.Bc.row(r) = Eigen::Map<const RowU>(g.data()); };
       set_row(0, k.e11.grad);
       set_row(1, k.e22.grad);
       set_row(3, k.e12.grad);
@@ -209,16 +210,18 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
         *status = admissible;
         return;
       }
-      k.B = pg.T * Bc;
       k.ls = log_strain_3d(E);
-      k.G.leftCols<24>() = k.ls.first * k.B;
-      k.G.rightCols<kEnhanced>() = k.ls.first * pg.Gamma;
+      // d E / d x = T Bc and d E / d alpha = Gamma: the trace of d eps / d (x, alpha) without
+      // forming d E / d x.
+      const Eigen::Matrix<double, 1, 6> trace_first = kTrace.transpose() * k.ls.first;
       volume += pg.weight;
       theta += pg.weight * kTrace.dot(k.ls.value);
-      dtheta += pg.weight * kTrace.transpose() * k.G;
+      dtheta_u.noalias() += pg.weight * (trace_first * pg.T) * k.Bc;
+      dtheta_a.noalias() += pg.weight * trace_first * pg.Gamma;
     }
     theta /= volume;
-    dtheta /= volume;
+    dtheta_u /= volume;
+    dtheta_a /= volume;
     // Mean dilatation: each point takes its own deviatoric log strain and the level's mean
     // volumetric one, and the stresses their own deviator and the level's mean pressure.
     std::array<Voigt6, 4> T;
@@ -236,11 +239,13 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
     }
     pressure /= volume;
     // With A = (I - m m^T / 3) d eps / dE and Gbar = A BG + m dtheta / 3 the derivative of a point's
-    // modified log strain (BG = d E / d (x, alpha)):
+    // modified log strain (BG = d E / d (x, alpha) = [T Bc, Gamma]):
     //   Gbar^T D Gbar + BG^T L BG = BG^T (A^T D A + L) BG + (BG^T c dtheta + dtheta^T c^T BG) / 3
     //                               + (m^T D m / 9) dtheta^T dtheta,   c = A^T D m,
-    // L the log strain's second derivative contracted with the point's stress.
-    Eigen::Matrix<double, kExt, 1> u = Eigen::Matrix<double, kExt, 1>::Zero();
+    // L the log strain's second derivative contracted with the point's stress. The blocks in x
+    // are formed through the convective strain: (T Bc)^T M (T Bc) = Bc^T (T^T M T) Bc.
+    Eigen::Matrix<double, 24, 1> u_u = Eigen::Matrix<double, 24, 1>::Zero();
+    EnhancedVector u_a = EnhancedVector::Zero();
     double dmm = 0.0;
     for (std::size_t q = 0; q < 4; ++q) {
       const std::size_t p = 4 * level + q;
@@ -249,37 +254,43 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       const double w = pg.weight;
       const Voigt6 Te = T[q] + kTrace * ((pressure - kTrace.dot(T[q])) / 3.0);  // conjugate to eps of this point
       const Voigt6 S = k.ls.first.transpose() * Te;
-      sums->fu.noalias() += w * k.B.transpose() * S;
+      const Voigt6 s = w * pg.T.transpose() * S;  // convective stress times the weight
+      sums->fu.noalias() += k.Bc.transpose() * s;
       sums->ra.noalias() += w * pg.Gamma.transpose() * S;
-      Eigen::Matrix<double, 6, kExt> BG;  // d E / d (x, alpha)
-      BG.leftCols<24>() = k.B;
-      BG.rightCols<kEnhanced>() = pg.Gamma;
       const Voigt6x6 A = k.ls.first - kTrace * (kTrace.transpose() * k.ls.first) / 3.0;
       const Voigt6 Dm = D[q] * kTrace;
       const Voigt6x6 M = w * (A.transpose() * D[q] * A + log_strain_3d_second(k.ls, Te));
-      u.noalias() += w * BG.transpose() * (A.transpose() * Dm);
+      const Voigt6 c = w * (A.transpose() * Dm);
+      u_u.noalias() += k.Bc.transpose() * (pg.T.transpose() * c);
+      u_a.noalias() += pg.Gamma.transpose() * c;
       dmm += w * kTrace.dot(Dm);
-      const Eigen::Matrix<double, 6, kExt> MB = M * BG;
-      // BG^T M BG is symmetric: its lower triangle only, mirrored after the loop.
-      for (int j = 0; j < kExt; ++j)
-        for (int i = j; i < kExt; ++i) klow(i, j) += BG.col(i).dot(MB.col(j));
+      const Eigen::Matrix<double, 6, kEnhanced> MG = M * pg.Gamma;
+      sums->kua.noalias() += k.Bc.transpose() * (pg.T.transpose() * MG);
+      sums->kaa.noalias() += pg.Gamma.transpose() * MG;
+      if (!with_kuu) continue;
+      const Voigt6x6 Mc = pg.T.transpose() * M * pg.T;
+      const Eigen::Matrix<double, 6, 24> MB = Mc * k.Bc;
+      // Bc^T Mc Bc is symmetric: its lower triangle only, mirrored after the loop.
+      for (int j = 0; j < 24; ++j)
+        for (int i = j; i < 24; ++i) klow(i, j) += k.Bc.col(i).dot(MB.col(j));
       // Geometric part: the convective stress times the second derivatives of e.
-      const Voigt6 s = w * pg.T.transpose() * S;
       Eigen::Matrix<double, 8, 8> H = s(0) * second(k.e11, true) + s(1) * second(k.e22, true) + s(3) * second(k.e12, false);
       H += s(2) * second(k.e33, true);
       H += (s(4) * k.w13[0]) * second(shear[0], false) + (s(4) * k.w13[1]) * second(shear[1], false);
       H += (s(5) * k.w23[0]) * second(shear[2], false) + (s(5) * k.w23[1]) * second(shear[3], false);
       for (int I = 0; I < 8; ++I)
         for (int J = 0; J < 8; ++J)
-          for (int i = 0; i < 3; ++i) kext(3 * I + i, 3 * J + i) += H(I, J);
+          for (int i = 0; i < 3; ++i) geometric(3 * I + i, 3 * J + i) += H(I, J);
     }
-    const Eigen::Matrix<double, kExt, kExt> coupling = (u * dtheta) / 3.0;
-    kext.noalias() += coupling + coupling.transpose() + (dmm / 9.0) * dtheta.transpose() * dtheta;
+    const double d9 = dmm / 9.0;
+    sums->kua.noalias() += (u_u * dtheta_a + dtheta_u.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_u.transpose() * dtheta_a;
+    sums->kaa.noalias() += (u_a * dtheta_a + dtheta_a.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_a.transpose() * dtheta_a;
+    if (with_kuu) {
+      const HexMatrix coupling = (u_u * dtheta_u) / 3.0;
+      geometric.noalias() += coupling + coupling.transpose() + d9 * dtheta_u.transpose() * dtheta_u;
+    }
   }
-  kext += klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
-  sums->kaa = kext.bottomRightCorner<kEnhanced, kEnhanced>();
-  sums->kua = kext.topRightCorner<24, kEnhanced>();
-  sums->kuu = kext.topLeftCorner<24, 24>();
+  if (with_kuu) sums->kuu = geometric + klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
 }
 
 PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix* K) {
@@ -299,7 +310,7 @@ PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix*
   Eigen::PartialPivLU<Eigen::Matrix<double, kEnhanced, kEnhanced>> lu;
   int it = 0;
   for (;; ++it) {
-    accumulate(x, alpha, &sums, &status);
+    accumulate(x, alpha, K != nullptr, &sums, &status);
     if (!status.ok) return status;
     lu.compute(sums.kaa);
     step = lu.solve(sums.ra);

@@ -92,8 +92,9 @@ class SolidShell8 final : public SolidElement {
   };
   struct Sums;
   // Forces, enhanced residual and the blocks of the tangent in (x, alpha) at the corners x and
-  // the enhanced parameters alpha; the points' trial states follow.
-  void accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, Sums* sums, PointStatus* status);
+  // the enhanced parameters alpha (the block in x only with with_kuu: a residual alone needs the
+  // blocks in alpha for the condensation, not that one); the points' trial states follow.
+  void accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool with_kuu, Sums* sums, PointStatus* status);
 
   Eigen::Matrix3d axes_;
   Eigen::Matrix<double, 3, 8> X_;  // reference corners in the material frame
