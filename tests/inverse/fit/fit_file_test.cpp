@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <system_error>
@@ -128,6 +129,25 @@ TEST(FitFile, BundledFitClassicLoads) {
   ASSERT_EQ(fp.experiments.size(), 5u);  // the r-values are one table
   EXPECT_EQ(fp.experiments[0]->num_residuals(), 3);
   EXPECT_EQ(fp.experiments[0]->kind(), "scalar_table");
+}
+
+// The brick identification and its shell twin: the same five parameters, card and data files
+// (C.5 renormalised, the indent computed with bricks); only the indent's scene differs.
+TEST(FitFile, BundledBrickFitAndItsShellTwinShareTheirData) {
+  const auto brick = inverse::read_fit_file(src("experiments/aa3003o/fit_af_indent_brick.toml"));
+  const auto shell = inverse::read_fit_file(src("experiments/aa3003o/fit_af_indent_brick_as_shell.toml"));
+  EXPECT_EQ(brick.parameters->num_free(), 5);
+  EXPECT_EQ(shell.parameters->num_free(), 5);
+  ASSERT_EQ(brick.data_files.size(), 3u);
+  EXPECT_EQ(brick.data_files, shell.data_files);
+  EXPECT_NE(brick.data_files[2].find("indent_line_fz_c5n_brick_synthetic.csv"), std::string::npos);
+  auto reads = [](const inverse::FitProblem& fp, const std::string& name) {
+    return std::any_of(fp.input_files.begin(), fp.input_files.end(), [&](const std::string& f) { return f.find(name) != std::string::npos; });
+  };
+  EXPECT_TRUE(reads(brick, "indent_line_c5_af_brick.toml"));
+  EXPECT_FALSE(reads(brick, "indent_line_c7_af.toml"));
+  EXPECT_TRUE(reads(shell, "indent_line_c7_af.toml"));
+  EXPECT_TRUE(reads(brick, "aa3003o_c5n_af_brick.toml") && reads(shell, "aa3003o_c5n_af_brick.toml"));
 }
 
 // noise_relative: each point's standard deviation is that fraction of its |y|, so the residual is
