@@ -157,7 +157,8 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
   *sums = Sums{};
   std::array<Sample, 4> shear;
   std::array<PointKinematics, 4> pk;
-  HexMatrix klow = HexMatrix::Zero(), geometric = HexMatrix::Zero();
+  // The block in x: Bc^T Mc Bc (its lower triangle) and the rest (geometric and mean-dilatation parts).
+  HexMatrix klow = HexMatrix::Zero(), kuu_rest = HexMatrix::Zero();
   for (std::size_t level = 0; level < zeta_.size(); ++level) {
     const double zeta = zeta_[level];
     for (int m = 0; m < 4; ++m)
@@ -280,17 +281,17 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       H += (s(5) * k.w23[0]) * second(shear[2], false) + (s(5) * k.w23[1]) * second(shear[3], false);
       for (int I = 0; I < 8; ++I)
         for (int J = 0; J < 8; ++J)
-          for (int i = 0; i < 3; ++i) geometric(3 * I + i, 3 * J + i) += H(I, J);
+          for (int i = 0; i < 3; ++i) kuu_rest(3 * I + i, 3 * J + i) += H(I, J);
     }
     const double d9 = dmm / 9.0;
     sums->kua.noalias() += (u_u * dtheta_a + dtheta_u.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_u.transpose() * dtheta_a;
     sums->kaa.noalias() += (u_a * dtheta_a + dtheta_a.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_a.transpose() * dtheta_a;
     if (with_kuu) {
       const HexMatrix coupling = (u_u * dtheta_u) / 3.0;
-      geometric.noalias() += coupling + coupling.transpose() + d9 * dtheta_u.transpose() * dtheta_u;
+      kuu_rest.noalias() += coupling + coupling.transpose() + d9 * dtheta_u.transpose() * dtheta_u;
     }
   }
-  if (with_kuu) sums->kuu = geometric + klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
+  if (with_kuu) sums->kuu = kuu_rest + klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
 }
 
 PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix* K) {
