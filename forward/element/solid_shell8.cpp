@@ -85,11 +85,13 @@ struct SolidShell8::Sums {
   EnhancedVector ra = EnhancedVector::Zero();
   Eigen::Matrix<double, kEnhanced, kEnhanced> kaa = Eigen::Matrix<double, kEnhanced, kEnhanced>::Zero();
   Eigen::Matrix<double, 24, kEnhanced> kua = Eigen::Matrix<double, 24, kEnhanced>::Zero();
+  // d ra / d x: kua^T where the material tangent is symmetric (filled at the end).
+  Eigen::Matrix<double, kEnhanced, 24> kau = Eigen::Matrix<double, kEnhanced, 24>::Zero();
   HexMatrix kuu = HexMatrix::Zero();
 };
 
 SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const ThicknessRule& rule)
-    : axes_(axes), zeta_(rule.zeta) {
+    : axes_(axes), zeta_(rule.zeta), symmetric_(!law.params().kinematic.active()) {
   if (!((axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-10 && axes.determinant() > 0.0))
     throw std::invalid_argument("material axes of a solid-shell must be orthonormal and right-handed");
   if (rule.zeta.empty()) throw std::invalid_argument("a solid-shell needs at least one point through the thickness");
@@ -157,7 +159,8 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
   *sums = Sums{};
   std::array<Sample, 4> shear;
   std::array<PointKinematics, 4> pk;
-  // The block in x: Bc^T Mc Bc (its lower triangle) and the rest (geometric and mean-dilatation parts).
+  // The block in x: Bc^T Mc Bc (its lower triangle where the material tangent is symmetric, else
+  // all of it) and the rest (geometric and mean-dilatation parts).
   HexMatrix klow = HexMatrix::Zero(), kuu_rest = HexMatrix::Zero();
   for (std::size_t level = 0; level < zeta_.size(); ++level) {
     const double zeta = zeta_[level];
@@ -245,8 +248,10 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
     //                               + (m^T D m / 9) dtheta^T dtheta,   c = A^T D m,
     // L the log strain's second derivative contracted with the point's stress. The blocks in x
     // are formed through the convective strain: (T Bc)^T M (T Bc) = Bc^T (T^T M T) Bc.
-    Eigen::Matrix<double, 24, 1> u_u = Eigen::Matrix<double, 24, 1>::Zero();
-    EnhancedVector u_a = EnhancedVector::Zero();
+    // With a tangent D that is not symmetric (kinematic hardening) the second coupling term
+    // dtheta^T c'^T BG / 3 takes c' = A^T D^T m instead of c (the u_u2, u_a2 sums).
+    Eigen::Matrix<double, 24, 1> u_u = Eigen::Matrix<double, 24, 1>::Zero(), u_u2 = Eigen::Matrix<double, 24, 1>::Zero();
+    EnhancedVector u_a = EnhancedVector::Zero(), u_a2 = EnhancedVector::Zero();
     double dmm = 0.0;
     for (std::size_t q = 0; q < 4; ++q) {
       const std::size_t p = 4 * level + q;
@@ -268,12 +273,22 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       const Eigen::Matrix<double, 6, kEnhanced> MG = M * pg.Gamma;
       sums->kua.noalias() += k.Bc.transpose() * (pg.T.transpose() * MG);
       sums->kaa.noalias() += pg.Gamma.transpose() * MG;
+      if (!symmetric_) {
+        const Voigt6 c2 = w * (A.transpose() * (D[q].transpose() * kTrace));
+        u_u2.noalias() += k.Bc.transpose() * (pg.T.transpose() * c2);
+        u_a2.noalias() += pg.Gamma.transpose() * c2;
+        sums->kau.noalias() += (pg.Gamma.transpose() * M * pg.T) * k.Bc;
+      }
       if (!with_kuu) continue;
       const Voigt6x6 Mc = pg.T.transpose() * M * pg.T;
       const Eigen::Matrix<double, 6, 24> MB = Mc * k.Bc;
-      // Bc^T Mc Bc is symmetric: its lower triangle only, mirrored after the loop.
-      for (int j = 0; j < 24; ++j)
-        for (int i = j; i < 24; ++i) klow(i, j) += k.Bc.col(i).dot(MB.col(j));
+      if (symmetric_) {
+        // Bc^T Mc Bc is symmetric: its lower triangle only, mirrored after the loop.
+        for (int j = 0; j < 24; ++j)
+          for (int i = j; i < 24; ++i) klow(i, j) += k.Bc.col(i).dot(MB.col(j));
+      } else {
+        klow.noalias() += k.Bc.transpose() * MB;
+      }
       // Geometric part: the convective stress times the second derivatives of e.
       Eigen::Matrix<double, 8, 8> H = s(0) * second(k.e11, true) + s(1) * second(k.e22, true) + s(3) * second(k.e12, false);
       H += s(2) * second(k.e33, true);
@@ -284,14 +299,22 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
           for (int i = 0; i < 3; ++i) kuu_rest(3 * I + i, 3 * J + i) += H(I, J);
     }
     const double d9 = dmm / 9.0;
-    sums->kua.noalias() += (u_u * dtheta_a + dtheta_u.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_u.transpose() * dtheta_a;
-    sums->kaa.noalias() += (u_a * dtheta_a + dtheta_a.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_a.transpose() * dtheta_a;
-    if (with_kuu) {
-      const HexMatrix coupling = (u_u * dtheta_u) / 3.0;
-      kuu_rest.noalias() += coupling + coupling.transpose() + d9 * dtheta_u.transpose() * dtheta_u;
+    if (symmetric_) {
+      sums->kua.noalias() += (u_u * dtheta_a + dtheta_u.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_u.transpose() * dtheta_a;
+      sums->kaa.noalias() += (u_a * dtheta_a + dtheta_a.transpose() * u_a.transpose()) / 3.0 + d9 * dtheta_a.transpose() * dtheta_a;
+      if (with_kuu) {
+        const HexMatrix coupling = (u_u * dtheta_u) / 3.0;
+        kuu_rest.noalias() += coupling + coupling.transpose() + d9 * dtheta_u.transpose() * dtheta_u;
+      }
+    } else {
+      sums->kua.noalias() += (u_u * dtheta_a + dtheta_u.transpose() * u_a2.transpose()) / 3.0 + d9 * dtheta_u.transpose() * dtheta_a;
+      sums->kau.noalias() += (u_a * dtheta_u + dtheta_a.transpose() * u_u2.transpose()) / 3.0 + d9 * dtheta_a.transpose() * dtheta_u;
+      sums->kaa.noalias() += (u_a * dtheta_a + dtheta_a.transpose() * u_a2.transpose()) / 3.0 + d9 * dtheta_a.transpose() * dtheta_a;
+      if (with_kuu) kuu_rest.noalias() += (u_u * dtheta_u + dtheta_u.transpose() * u_u2.transpose()) / 3.0 + d9 * dtheta_u.transpose() * dtheta_u;
     }
   }
-  if (with_kuu) sums->kuu = kuu_rest + klow.selfadjointView<Eigen::Lower>().toDenseMatrix();
+  if (symmetric_) sums->kau = sums->kua.transpose();
+  if (with_kuu) sums->kuu = kuu_rest + (symmetric_ ? HexMatrix(klow.selfadjointView<Eigen::Lower>().toDenseMatrix()) : klow);
 }
 
 PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix* K) {
@@ -333,7 +356,7 @@ PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix*
   last_iterations_ = it + 1;
   // The residual left in the enhanced equations, removed to first order.
   if (f) *f = sums.fu - sums.kua * step;
-  const Eigen::Matrix<double, kEnhanced, 24> kaa_inv_kau = lu.solve(sums.kua.transpose());
+  const Eigen::Matrix<double, kEnhanced, 24> kaa_inv_kau = lu.solve(sums.kau);
   if (K) *K = sums.kuu - sums.kua * kaa_inv_kau;
   alpha_trial_ = alpha;
   x_trial_ = x;

@@ -99,6 +99,9 @@ class SolidShell8 final : public SolidElement {
   Eigen::Matrix3d axes_;
   Eigen::Matrix<double, 3, 8> X_;  // reference corners in the material frame
   std::vector<double> zeta_;       // thickness levels
+  // The law's consistent tangent is symmetric (no kinematic hardening): the tangent's blocks are
+  // formed from one triangle, d ra / d x as the transpose of d f / d alpha.
+  bool symmetric_ = true;
   std::vector<PointGeometry> geometry_;
   std::vector<SolidPoint> points_;
   double volume0_ = 0.0;

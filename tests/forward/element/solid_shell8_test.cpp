@@ -4,6 +4,7 @@
 // exact solution.
 #include "forward/element/brick8.hpp"
 #include "forward/element/solid_shell8.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 
 #include "tests/support/hex_elements.hpp"
 
@@ -136,8 +137,19 @@ TEST(SolidShell8, OnlyRigidBodyModesAreFreeOfEnergy) {
 
 // The condensed tangent against central differences of the forces, at a rotated, distorted,
 // plastically loaded state reached from a committed plastic state.
+// Card C.3 + C.4 with the back-stress of card C.7 (Armstrong-Frederick, App. C.3.2): its
+// consistent tangent is not symmetric.
+material::MaterialParams<double> aa3003_af() {
+  material::MaterialParams<double> p = aa3003();
+  p.kinematic = material::make_kinematic<material::ArmstrongFrederick>({51.4, 46.0});
+  return p;
+}
+
+// The exact tangent of a plastic state against central differences of the forces, with the
+// isotropic card (a symmetric tangent) and with kinematic hardening (not symmetric).
 TEST(SolidShell8, TangentMatchesCentralDifferences) {
-  const SolidPoint::Law law(aa3003());
+  for (const bool kinematic : {false, true}) {
+  const SolidPoint::Law law(kinematic ? aa3003_af() : aa3003());
   const HexCorners X = distorted();
   for (const Mat3& axes : {Mat3(Mat3::Identity()), rotation()}) {
     SolidShell8 shell(X, axes, law, five());
@@ -169,9 +181,13 @@ TEST(SolidShell8, TangentMatchesCentralDifferences) {
       ASSERT_TRUE(shell.evaluate(xm, &fm, nullptr).ok);
       worst = std::max(worst, ((fp - fm) / (2.0 * h) - K.col(j)).cwiseAbs().maxCoeff());
     }
-    std::printf("solid-shell tangent against central differences: %.1e of the largest entry\n", worst / K.cwiseAbs().maxCoeff());
+    std::printf("solid-shell tangent against central differences (%s): %.1e of the largest entry\n",
+                kinematic ? "Armstrong-Frederick" : "isotropic", worst / K.cwiseAbs().maxCoeff());
     EXPECT_LT(worst, 1e-6 * K.cwiseAbs().maxCoeff());
-    EXPECT_LT((K - K.transpose()).cwiseAbs().maxCoeff(), 1e-9 * K.cwiseAbs().maxCoeff());
+    const double asymmetry = (K - K.transpose()).cwiseAbs().maxCoeff() / K.cwiseAbs().maxCoeff();
+    if (kinematic) EXPECT_GT(asymmetry, 1e-6);
+    else EXPECT_LT(asymmetry, 1e-9);
+  }
   }
 }
 
