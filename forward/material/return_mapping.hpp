@@ -320,8 +320,15 @@ class ReturnMapping {
     const Mat dM = isotropic ? Mat(ev.dq * KP) : Mat(da * Mat::Identity() + ev.dq * KP + (ev.q * de) * (A_ * P_));
     const Vec b = sigma_tr - m * s0.back_stress;
     const Vec db = -dm * s0.back_stress;
-    if constexpr (Dim <= 4) ev.Minv = M.inverse();
-    else ev.Minv = M.partialPivLu().inverse();
+    if constexpr (Dim <= 4) {
+      ev.Minv = M.inverse();
+    } else {
+      // The elastic matrix, Hill's matrix (material frame) and the kinematic map leave the
+      // normal and the shear components uncoupled: M is a 3 x 3 block and a diagonal.
+      ev.Minv.setZero();
+      ev.Minv.template topLeftCorner<3, 3>() = M.template topLeftCorner<3, 3>().inverse();
+      for (int i = 3; i < Dim; ++i) ev.Minv(i, i) = 1.0 / M(i, i);
+    }
     if constexpr (Dim == 6) {
       // P h = 0 for the hydrostatic direction h, so M h = a h: solve the deviatoric part
       // only and add the hydrostatic part exactly (a large pressure would otherwise swamp
