@@ -2,6 +2,7 @@
 // What the hexahedral element tests share: the Hill card C.3 + C.4, boxes, homogeneous maps of
 // corners, a fixed rotation, and the count of zero eigenvalues of a stiffness.
 #include "forward/element/hex8_stiffness.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
 #include "forward/material/material_params.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -14,6 +15,14 @@ namespace spifit::element::test {
 inline material::MaterialParams<double> aa3003() {  // card C.3 + C.4 (Hill 1948 + Swift)
   material::MaterialParams<double> p;
   p.F = 1.224; p.G = 1.193; p.H = 0.807; p.N = p.L = p.M = 4.06;
+  return p;
+}
+
+// Card C.3 + C.4 with the back-stress of card C.7 (Armstrong-Frederick, App. C.3.2): a consistent
+// tangent that is not symmetric.
+inline material::MaterialParams<double> aa3003_af() {
+  material::MaterialParams<double> p = aa3003();
+  p.kinematic = material::make_kinematic<material::ArmstrongFrederick>({51.4, 46.0});
   return p;
 }
 

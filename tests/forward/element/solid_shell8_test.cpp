@@ -4,7 +4,6 @@
 // exact solution.
 #include "forward/element/brick8.hpp"
 #include "forward/element/solid_shell8.hpp"
-#include "forward/material/kinematic/kinematic_laws.hpp"
 
 #include "tests/support/hex_elements.hpp"
 
@@ -21,6 +20,7 @@ namespace spifit::element {
 namespace {
 
 using test::aa3003;
+using test::aa3003_af;
 using test::box;
 using test::map;
 using test::rotation;
@@ -136,17 +136,8 @@ TEST(SolidShell8, OnlyRigidBodyModesAreFreeOfEnergy) {
 }
 
 // The condensed tangent against central differences of the forces, at a rotated, distorted,
-// plastically loaded state reached from a committed plastic state.
-// Card C.3 + C.4 with the back-stress of card C.7 (Armstrong-Frederick, App. C.3.2): its
-// consistent tangent is not symmetric.
-material::MaterialParams<double> aa3003_af() {
-  material::MaterialParams<double> p = aa3003();
-  p.kinematic = material::make_kinematic<material::ArmstrongFrederick>({51.4, 46.0});
-  return p;
-}
-
-// The exact tangent of a plastic state against central differences of the forces, with the
-// isotropic card (a symmetric tangent) and with kinematic hardening (not symmetric).
+// plastically loaded state reached from a committed plastic state, with the isotropic card C.3 +
+// C.4 (a symmetric tangent) and with card C.7's back-stress (not symmetric).
 TEST(SolidShell8, TangentMatchesCentralDifferences) {
   for (const bool kinematic : {false, true}) {
   const SolidPoint::Law law(kinematic ? aa3003_af() : aa3003());
