@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace spifit::element {
 
@@ -86,6 +87,74 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
   return status;
 }
 
+void ShellSection::enable_sensitivities() {
+  sens_.assign(points_.size(), LayerSensitivity{});
+  sens_trial_ = sens_;
+  dh_.setZero();
+  sens_trial_set_ = false;
+}
+
+SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, Vec6S* resultant) {
+  using Outer = ceres::Jet<Sens, 3>;  // d / d green on top of d / d p: the log strain's first derivative
+  if (!sensitivities_enabled()) throw std::logic_error("ShellSection::update_sensitivities before enable_sensitivities");
+  SectionStatus status;
+  resultant->setZero();
+  const Sens h = material::with_derivatives(h_, dh_);
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    const Sens z = (rule_->zeta[l] * 0.5) * h;
+    const double w = rule_->weight[l] * 0.5 * h0_;
+    const Vec3S green = e + z * kappa;
+    Eigen::Matrix<Outer, 3, 1> g;
+    for (int i = 0; i < 3; ++i) g(i) = Outer(green(i), i);
+    const Eigen::Matrix<Outer, 3, 1> eo = log_strain_of_green(g);
+    Vec3S eps;
+    Eigen::Matrix<Sens, 3, 3> first;  // d eps_i / d E_j
+    for (int i = 0; i < 3; ++i) {
+      eps(i) = eo(i).a;
+      for (int j = 0; j < 3; ++j) first(i, j) = eo(i).v(j);
+    }
+    Vec3S eps0;
+    for (int i = 0; i < 3; ++i) eps0(i) = material::with_derivatives(eps_[l](i), material::derivatives_of(sens_[l].eps(i)));
+    const material::MaterialState<Sens, 3> s0 = material::seeded_state(points_[l].committed(), sens_[l].state);
+    material::MaterialState<Sens, 3> s1;
+    const material::UpdateResult r = law.integrate(s0, Vec3S(eps - eps0), s1, nullptr);
+    if (!r.ok()) {
+      status.ok = false;
+      status.layer = static_cast<int>(l);
+      status.reason = std::string("sensitivities: ") + r.reason;
+      status.suggested_scale = r.suggested_scale;
+      return status;
+    }
+    const Vec3S stress = first.transpose() * s1.stress;
+    resultant->head<3>() += w * stress;
+    resultant->tail<3>() += (w * z) * stress;
+    sens_trial_[l].state = s1;
+    sens_trial_[l].eps = eps;
+  }
+  e_sens_ = e;
+  kappa_sens_ = kappa;
+  sens_trial_set_ = true;
+  return status;
+}
+
+// The thickness at constant volume and the layers' reference log strains with its new lever
+// arm, as commit() computes their values, here with their derivatives.
+void ShellSection::commit_sensitivities() {
+  if (!sens_trial_set_) throw std::logic_error("a section with sensitivities committed without update_sensitivities");
+  using std::sqrt;
+  sens_ = sens_trial_;
+  const Sens c11 = 1.0 + 2.0 * e_sens_(0), c22 = 1.0 + 2.0 * e_sens_(1);
+  const Sens det = c11 * c22 - e_sens_(2) * e_sens_(2);
+  if (value_of(det) > 0.0) {
+    const Sens h = h0_ / sqrt(det);
+    dh_ = material::derivatives_of(h);
+    for (std::size_t l = 0; l < points_.size(); ++l)
+      sens_[l].eps = log_strain_of_green(Vec3S(e_sens_ + ((rule_->zeta[l] * 0.5) * h) * kappa_sens_));
+  }
+  sens_trial_ = sens_;
+  sens_trial_set_ = false;
+}
+
 SectionEnergy ShellSection::energy() const {
   SectionEnergy out;
   for (std::size_t l = 0; l < points_.size(); ++l) {
@@ -104,6 +173,7 @@ void ShellSection::commit() {
     tangent_[l] = tangent_trial_[l];
   }
   e_committed_ = e_trial_;
+  if (sensitivities_enabled()) commit_sensitivities();
   const double c11 = 1.0 + 2.0 * e_trial_(0), c22 = 1.0 + 2.0 * e_trial_(1);
   const double det = c11 * c22 - e_trial_(2) * e_trial_(2);
   const double h_new = det > 0.0 ? h0_ / std::sqrt(det) : h_;  // update() refused det <= 0
@@ -121,6 +191,10 @@ void ShellSection::revert() {
     tangent_trial_[l] = tangent_[l];
   }
   e_trial_ = e_committed_;
+  if (sensitivities_enabled()) {
+    sens_trial_ = sens_;
+    sens_trial_set_ = false;
+  }
 }
 
 void ShellSection::save_state(io::BinaryWriter& w) const {

@@ -15,6 +15,7 @@
 // thickness and the next increment starts without a spurious strain jump.
 #include "forward/element/thickness_rule.hpp"
 #include "forward/material/material_point.hpp"
+#include "forward/material/sensitivity_scalar.hpp"
 
 #include <Eigen/Core>
 
@@ -31,6 +32,10 @@ namespace spifit::element {
 using Vec3 = Eigen::Vector3d;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
+using Sens = material::SensitivityScalar;
+using SensLaw = material::ReturnMapping<Sens, 3>;
+using Vec3S = Eigen::Matrix<Sens, 3, 1>;
+using Vec6S = Eigen::Matrix<Sens, 6, 1>;
 
 // Energies per unit reference area of a section's committed state [N mm / mm^2].
 struct SectionEnergy {
@@ -64,6 +69,24 @@ class ShellSection {
   void save_state(io::BinaryWriter& w) const;
   void load_state(io::BinaryReader& r);
 
+  // Direct differentiation (docs/design/sensitivities.md). Once enabled, the section keeps
+  // beside its committed state that state's derivatives with respect to the parameters of a
+  // run (zero at the start: the initial state depends on none of them), and commit() advances
+  // them from the trial derivatives of the increment's last update_sensitivities() (a commit
+  // without one is a std::logic_error). revert() discards the trial derivatives.
+  void enable_sensitivities();
+  bool sensitivities_enabled() const { return !sens_.empty(); }
+  // The resultants (N, M) at the strains (e, kappa), whose derivatives are the strains' own,
+  // integrated from the committed state and its derivatives by `law`: the section's law with
+  // the parameters seeded (material::seeded_params). With constant strains the resultants'
+  // derivatives are the pseudo-resultants of the direct differentiation, d (N, M) / d p at
+  // fixed strains; with the strains' derivatives, the layers' trial derivatives follow. The
+  // section's double trial state is left as it is.
+  SectionStatus update_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, Vec6S* resultant);
+  // Derivatives of the committed thickness, and of a layer's committed state (values unused).
+  const material::SensitivityRow& thickness_sensitivity() const { return dh_; }
+  const material::MaterialState<Sens, 3>& layer_state_sensitivity(int l) const { return sens_[static_cast<std::size_t>(l)].state; }
+
   double reference_thickness() const { return h0_; }
   double thickness() const { return h_; }  // committed, constant-volume
   int layers() const { return static_cast<int>(points_.size()); }
@@ -86,6 +109,17 @@ class ShellSection {
   // elastic-plastic stiffness (as Abaqus does).
   std::vector<Eigen::Matrix3d> tangent_, tangent_trial_;
   Vec3 e_committed_ = Vec3::Zero(), e_trial_ = Vec3::Zero(), kappa_trial_ = Vec3::Zero();
+  // Direct differentiation: per layer the derivatives of the material state and of the log
+  // strain (committed, trial), of the thickness, and the trial strains with their derivatives.
+  struct LayerSensitivity {
+    material::MaterialState<Sens, 3> state;
+    Vec3S eps = Vec3S::Zero();
+  };
+  std::vector<LayerSensitivity> sens_, sens_trial_;
+  material::SensitivityRow dh_ = material::SensitivityRow::Zero();
+  Vec3S e_sens_ = Vec3S::Zero(), kappa_sens_ = Vec3S::Zero();
+  bool sens_trial_set_ = false;
+  void commit_sensitivities();
 };
 
 }  // namespace spifit::element

@@ -1,0 +1,68 @@
+#pragma once
+// The scalar of direct differentiation (docs/design/sensitivities.md): a ceres::Jet whose
+// derivative slots are the parameters a run differentiates with respect to, one slot each, so
+// that one pass through the return mapping (and the element above it) carries every
+// parameter's derivative. A value of this type is (value, d value / d p_1 .. p_slots).
+#include "forward/material/material_inputs.hpp"
+#include "forward/material/material_params.hpp"
+#include "forward/material/material_state.hpp"
+
+#include <ceres/jet.h>
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace spifit::material {
+
+constexpr int kSensitivitySlots = 8;  // parameters per run
+using SensitivityScalar = ceres::Jet<double, kSensitivitySlots>;
+using SensitivityRow = Eigen::Matrix<double, 1, kSensitivitySlots>;
+
+// The value v with derivatives d.
+inline SensitivityScalar with_derivatives(double v, const SensitivityRow& d) {
+  SensitivityScalar s(v);
+  s.v = d.transpose();
+  return s;
+}
+inline SensitivityRow derivatives_of(const SensitivityScalar& s) { return s.v.transpose(); }
+
+// A state whose values are those of `values` and whose derivatives are those of `sens` (the
+// committed state's sensitivities, kept beside the double state). The kept flow stress is
+// dropped (negative), so that the law recomputes it from eqps with its derivatives.
+template <int Dim>
+MaterialState<SensitivityScalar, Dim> seeded_state(const MaterialState<double, Dim>& values, const MaterialState<SensitivityScalar, Dim>& sens) {
+  const auto at = [](double v, const SensitivityScalar& d) {
+    SensitivityScalar out(v);
+    out.v = d.v;
+    return out;
+  };
+  MaterialState<SensitivityScalar, Dim> s;
+  for (int i = 0; i < Dim; ++i) {
+    s.stress(i) = at(values.stress(i), sens.stress(i));
+    s.plastic_strain(i) = at(values.plastic_strain(i), sens.plastic_strain(i));
+    s.back_stress(i) = at(values.back_stress(i), sens.back_stress(i));
+  }
+  s.back_stress_zz = at(values.back_stress_zz, sens.back_stress_zz);
+  s.eqps = at(values.eqps, sens.eqps);
+  s.plastic_work = at(values.plastic_work, sens.plastic_work);
+  s.flow_stress = SensitivityScalar(-1.0);
+  return s;
+}
+
+// A parameter's seed: the derivative slots of one field of MaterialParams (a parameter sets its
+// field and the fields tied to it with the same row; hill.G with normalise_hill also sets H = 2 - G
+// with the negated row).
+struct FieldSeed {
+  MaterialField field;
+  SensitivityRow d;
+};
+
+// The parameters p as sensitivity scalars with the seeds' derivatives (all others constant).
+inline MaterialParams<SensitivityScalar> seeded_params(const MaterialParams<double>& p, const std::vector<FieldSeed>& seeds) {
+  MaterialParams<SensitivityScalar> out = p.cast<SensitivityScalar>();
+  for (const FieldSeed& s : seeds) material_field(out, s.field).v += s.d.transpose();
+  return out;
+}
+
+}  // namespace spifit::material

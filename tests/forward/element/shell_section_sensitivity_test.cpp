@@ -1,0 +1,121 @@
+// Direct differentiation through a shell section: the derivatives of the resultants along a
+// path of strains against central differences of whole paths with perturbed parameters.
+#include "forward/element/shell_section.hpp"
+#include "forward/material/kinematic/kinematic_laws.hpp"
+#include "tests/support/hex_elements.hpp"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <vector>
+
+namespace spifit::element {
+namespace {
+
+using material::FieldSeed;
+using material::MaterialField;
+using material::SensitivityRow;
+
+// Swift K (slot 0), n (slot 1), Armstrong-Frederick CX (slot 2), E (slot 3); slot 4 is a
+// parameter the strains depend on (below), not the law.
+std::vector<FieldSeed> seeds(const material::MaterialParams<double>& p) {
+  auto row = [](int k) { SensitivityRow r = SensitivityRow::Zero(); r(k) = 1.0; return r; };
+  return {{{MaterialField::hardening, p.hardening.law, 0}, row(0)},
+          {{MaterialField::hardening, p.hardening.law, 2}, row(1)},
+          {{MaterialField::kinematic, p.kinematic.law, 0}, row(2)},
+          {{MaterialField::E, -1, 0}, row(3)}};
+}
+
+// A bending and stretching path into plasticity, then partly back: membrane strains e and
+// curvatures kappa per increment at s = 0, and their change per unit s.
+struct PathPoint {
+  Vec3 e, kappa, de, dkappa;
+};
+std::vector<PathPoint> path() {
+  std::vector<PathPoint> out;
+  for (int n = 1; n <= 6; ++n) {
+    const double t = n <= 4 ? n / 4.0 : 1.0 - 0.3 * (n - 4);
+    out.push_back({Vec3(0.03 * t, -0.01 * t, 0.004 * t), Vec3(0.08 * t, 0.01 * t, -0.02 * t), Vec3(0.01 * t, 0.002, 0.0),
+                   Vec3(0.02 * t, 0.0, 0.01)});
+  }
+  return out;
+}
+
+std::vector<Vec6> resultants(const material::MaterialParams<double>& p, double s) {
+  const material::ReturnMapping<double, 3> law(p);
+  const ThicknessRule rule = gauss_legendre_rule(5);
+  ShellSection sec(law, rule, 1.2);
+  std::vector<Vec6> out;
+  for (const PathPoint& q : path()) {
+    Vec6 r;
+    EXPECT_TRUE(sec.update(q.e + s * q.de, q.kappa + s * q.dkappa, &r, nullptr).ok);
+    sec.commit();
+    out.push_back(r);
+  }
+  return out;
+}
+
+TEST(ShellSectionSensitivity, ResultantsMatchCentralDifferencesAlongAPath) {
+  const material::MaterialParams<double> p = test::aa3003_af();
+  const material::ReturnMapping<double, 3> law(p);
+  const std::vector<FieldSeed> sd = seeds(p);
+  const SensLaw slaw(material::seeded_params(p, sd));
+  const ThicknessRule rule = gauss_legendre_rule(5);
+  ShellSection sec(law, rule, 1.2);
+  sec.enable_sensitivities();
+  std::vector<Eigen::Matrix<double, 6, 5>> ddm;
+  for (const PathPoint& q : path()) {
+    Vec6 r;
+    ASSERT_TRUE(sec.update(q.e, q.kappa, &r, nullptr).ok);
+    Vec3S e, kappa;
+    for (int i = 0; i < 3; ++i) {
+      SensitivityRow de = SensitivityRow::Zero(), dk = SensitivityRow::Zero();
+      de(4) = q.de(i);
+      dk(4) = q.dkappa(i);
+      e(i) = material::with_derivatives(q.e(i), de);
+      kappa(i) = material::with_derivatives(q.kappa(i), dk);
+    }
+    Vec6S rs;
+    ASSERT_TRUE(sec.update_sensitivities(slaw, e, kappa, &rs).ok);
+    Eigen::Matrix<double, 6, 5> d;
+    for (int i = 0; i < 6; ++i) {
+      EXPECT_NEAR(rs(i).a, r(i), 1e-9 * (1.0 + std::abs(r(i))));
+      d.row(i) = rs(i).v.head<5>().transpose();
+    }
+    ddm.push_back(d);
+    sec.commit();
+  }
+  EXPECT_GT(sec.layer_state(4).eqps, 0.01);
+  // Central differences with steps h and h/4: the exact derivative lies within their own
+  // spread (Richardson: error ~ h^2).
+  for (int k = 0; k < 5; ++k) {
+    const double h = k == 0 ? 0.5 : k == 1 ? 1e-4 : k == 2 ? 0.05 : k == 3 ? 50.0 : 1e-5;
+    std::vector<Eigen::Matrix<double, 6, 1>> cd(path().size()), cd4(path().size());
+    for (double step : {h, h / 4.0}) {
+      material::MaterialParams<double> pp = p, pm = p;
+      double sp = 0.0, sm = 0.0;
+      if (k < 4) {
+        material::material_field(pp, sd[static_cast<std::size_t>(k)].field) += step;
+        material::material_field(pm, sd[static_cast<std::size_t>(k)].field) -= step;
+      } else {
+        sp = step;
+        sm = -step;
+      }
+      const std::vector<Vec6> rp = resultants(pp, sp), rm = resultants(pm, sm);
+      for (std::size_t n = 0; n < rp.size(); ++n) (step == h ? cd : cd4)[n] = (rp[n] - rm[n]) / (2.0 * step);
+    }
+    double worst = 0.0;
+    for (std::size_t n = 0; n < cd.size(); ++n) {
+      const double scale = cd4[n].cwiseAbs().maxCoeff();
+      const double noise = (cd[n] - cd4[n]).cwiseAbs().maxCoeff();
+      const double err = (ddm[n].col(k) - cd4[n]).cwiseAbs().maxCoeff();
+      worst = std::max(worst, err / scale);
+      EXPECT_LE(err, noise + 1e-7 * scale) << "slot " << k << ", increment " << n;
+    }
+    std::printf("slot %d: largest relative difference to central differences (h/4) %.2e\n", k, worst);
+  }
+}
+
+}  // namespace
+}  // namespace spifit::element
