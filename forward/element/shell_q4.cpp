@@ -423,6 +423,64 @@ ElementStatus ShellQ4::compute_reduced(const NodeVectors& x, const NodeVectors& 
   return dof_results(d, rp, tangent ? &kp : nullptr, false, options_.drilling_factor, area_, residual, tangent);
 }
 
+void ShellQ4::enable_sensitivities() {
+  if (sections_.size() != 4) throw std::invalid_argument("the one-point shell (hourglass_stiffness > 0) has no parameter sensitivities; use the 2 x 2 element");
+  for (auto& s : sections_) s.enable_sensitivities();
+}
+
+ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load) {
+  using material::kSensitivitySlots;
+  using Slots = Eigen::Matrix<double, 6, kSensitivitySlots>;
+  // The DOFs' derivatives in the p-variables: dd_I = dpsi_I x d_I.
+  SensDofs dp = SensDofs::Zero();
+  if (du) {
+    dp = *du;
+    for (int I = 0; I < 4; ++I)
+      for (int k = 0; k < kSensitivitySlots; ++k)
+        dp.block<3, 1>(6 * I + 3, k) = Eigen::Vector3d(du->block<3, 1>(6 * I + 3, k)).cross(d[static_cast<std::size_t>(I)]);
+  }
+  const auto& lp = law.params();
+  const material::SensitivityRow dks = options_.shear_factor * h0_ * material::derivatives_of(lp.E / (2.0 * (1.0 + lp.nu)));
+  const TransverseShear shear = transverse_shear(x, d);
+  SensDofs rp = SensDofs::Zero();
+  for (std::size_t q = 0; q < 4; ++q) {
+    const PointGeometry& pg = points_[q];
+    const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
+    const PointKinematics k = point_kinematics(pg.dN, ps.dN, options_.centre_membrane_shear, x, d);
+    Vec3 e, kappa;
+    shell_strains(pg, ps, k, e, kappa);
+    const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
+    Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
+    strain_operator(pg, ps, tying_, k, c, shear.a_t, shear.d_t, B);
+    const Slots ds = B.topRows<6>() * dp;  // d (e, kappa) / d p, element frame
+    Vec3S em, km;
+    const Vec3 emv = pg.Q * e, kmv = pg.Q * kappa;
+    for (int i = 0; i < 3; ++i) {
+      em(i) = material::with_derivatives(emv(i), (pg.Q.row(i) * ds.topRows<3>()));
+      km(i) = material::with_derivatives(kmv(i), (pg.Q.row(i) * ds.bottomRows<3>()));
+    }
+    Vec6S s6m;
+    const SectionStatus ss = sections_[q].update_sensitivities(law, em, km, &s6m);
+    if (!ss.ok) return point_failure(static_cast<int>(q), ss);
+    if (!load) continue;
+    Slots dsm;
+    for (int i = 0; i < 6; ++i) dsm.row(i) = material::derivatives_of(s6m(i));
+    Slots ds6;
+    ds6.topRows<3>() = pg.Q.transpose() * dsm.topRows<3>();
+    ds6.bottomRows<3>() = pg.Q.transpose() * dsm.bottomRows<3>();
+    const Eigen::Matrix<double, 2, kSensitivitySlots> dQ = shear.gamma[q] * dks;
+    rp.noalias() += pg.weight * (B.topRows<6>().transpose() * ds6 + B.bottomRows<2>().transpose() * dQ);
+  }
+  if (load) {
+    for (int k = 0; k < kSensitivitySlots; ++k) {
+      Vec24 ru;
+      director_to_dofs(d, Vec24(rp.col(k)), nullptr, &ru, nullptr);
+      load->col(k) = ru;
+    }
+  }
+  return {};
+}
+
 void ShellQ4::commit() {
   for (auto& s : sections_) s.commit();
 }

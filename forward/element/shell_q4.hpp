@@ -58,6 +58,8 @@ struct PointKinematics;  // shell_q4.cpp
 
 using Vec24 = Eigen::Matrix<double, 24, 1>;
 using Mat24 = Eigen::Matrix<double, 24, 24>;
+// Derivatives of an element's 24 DOF values (or forces) with respect to the sensitivity slots.
+using SensDofs = Eigen::Matrix<double, 24, material::kSensitivitySlots>;
 
 // From derivatives with respect to p = (x_I, d_I) (positions and directors, 6 per node) to
 // the DOFs u = (translation, rotation increment): residual and exact tangent on the rotations
@@ -92,6 +94,16 @@ class ShellQ4 {
   ElementStatus compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent);
   void commit();
   void revert();
+  // Direct differentiation (docs/design/sensitivities.md): the sections keep their committed
+  // states' derivatives with respect to the parameters seeded in the law passed below.
+  // std::invalid_argument for the one-point element (hourglass_stiffness > 0), which has none.
+  void enable_sensitivities();
+  // At the nodes x, d of the converged iterate (compute() there first). du null: the
+  // pseudo-load, the derivative of the residual with respect to the parameters at fixed nodes
+  // (through the law's parameters and the committed state's derivatives), into *load (DOF
+  // order, rotations about x, y, z). du (the nodal DOFs' derivatives, rotations about x, y, z):
+  // the sections' trial derivatives, which commit() keeps; load may then be null.
+  ElementStatus sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load);
   // Committed state of the four sections (checkpoints; ShellSection::save_state).
   void save_state(io::BinaryWriter& w) const;
   void load_state(io::BinaryReader& r);
