@@ -43,6 +43,10 @@ class ElementContribution {
   // p-variables (positions and directors, element::director_to_dofs turns them into nodal
   // forces and moments). Returns false when it adds nothing. Called concurrently for distinct e.
   virtual bool add(int e, const ElementConfiguration& c, element::Vec24* rp, element::Mat24* kp) = 0;
+  // Why the contribution cannot take part in a run with parameter sensitivities
+  // (docs/design/sensitivities.md); empty when it can: its forces then depend on the parameters
+  // only through the nodes and the element's thickness (the offset of the tool-side surface).
+  virtual std::string sensitivity_refusal() const { return name() + " has no parameter sensitivities"; }
   // Committing an increment: before_commit sees the model still at its last committed state
   // (positions, element sections), after_commit sees the new one.
   virtual void before_commit(const FeModel& model) = 0;

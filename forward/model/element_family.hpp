@@ -5,6 +5,7 @@
 // evaluation. The model owns the nodal configurations and the bookkeeping the solver needs
 // (committed / iterate / trial), the family everything per element: adding an element family
 // means implementing this interface in the element's folder and registering it, nothing above.
+#include "forward/material/sensitivity_scalar.hpp"
 #include "forward/solver/nonlinear_problem.hpp"
 
 #include <Eigen/Core>
@@ -99,6 +100,21 @@ class ElementFamily {
   // The sections' view of the sheet. By default the model's nodes with their directors and
   // FeModel::nodal_thickness (a shell's nodes lie on its mid-surface).
   virtual MidSurface mid_surface(const FeModel& model) const;
+  // Direct differentiation (docs/design/sensitivities.md), at the trial configuration of the
+  // converged iterate. enable_sensitivities: the elements keep their committed states'
+  // derivatives with respect to the parameters seeded in `law` (the family's material with
+  // derivative slots); std::invalid_argument (the reason) where the family or its options have
+  // none. sensitivity_load: element e's pseudo-load, the residual's derivative with respect to
+  // each slot at fixed DOFs (through the law, the committed state's derivatives and the
+  // contributions' dependence on the element's thickness), in evaluate()'s DOF order, rotations
+  // about x, y, z. update_sensitivities: the elements' trial derivatives from the DOFs'
+  // derivatives du (same layout), kept by commit(); *contribution_force (if not null) receives
+  // the derivative of the sum of the contributions' forces on the element's nodes (rows x, y,
+  // z; the residual's sign: the force the sheet exerts on the tool).
+  virtual void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law);
+  virtual solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load);
+  virtual solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+                                                         Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force);
   // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;

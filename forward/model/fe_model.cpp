@@ -127,6 +127,7 @@ void FeModel::commit(double lambda) {
   x_ = xi_;
   d_ = di_;
   family_->commit();
+  force_sensitivity_ = force_sensitivity_trial_;
   for (auto& c : contributions_) c->after_commit(*this);
   increment_.setZero();
   increment_trial_.setZero();
@@ -167,6 +168,86 @@ std::vector<double> FeModel::nodal_thickness() const {
   }
   for (std::size_t i = 0; i < h.size(); ++i) h[i] /= w[i];
   return h;
+}
+
+void ElementFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law) {
+  (void)law;
+  throw std::invalid_argument(name() + " elements have no parameter sensitivities yet");
+}
+
+solver::ElementEvaluation ElementFamily::sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load) {
+  (void)e; (void)in; (void)load;
+  return {false, name() + " elements", "no parameter sensitivities", 1.0};
+}
+
+solver::ElementEvaluation ElementFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+                                                              Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) {
+  (void)e; (void)in; (void)du; (void)contribution_force;
+  return {false, name() + " elements", "no parameter sensitivities", 1.0};
+}
+
+void FeModel::enable_sensitivities(const std::vector<material::FieldSeed>& seeds, int count, const material::MaterialParams<double>& material) {
+  if (count < 1 || count > material::kSensitivitySlots)
+    throw std::invalid_argument("sensitivities: " + std::to_string(count) + " parameters; a run differentiates 1 to " +
+                                std::to_string(material::kSensitivitySlots));
+  for (const auto& c : contributions_) {
+    const std::string why = c->sensitivity_refusal();
+    if (!why.empty()) throw std::invalid_argument("sensitivities: " + why);
+  }
+  family_->enable_sensitivities(material::seeded_params(material, seeds));
+  sensitivity_count_ = count;
+  force_sensitivity_ = force_sensitivity_trial_ = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, count);
+}
+
+solver::ElementEvaluation FeModel::sensitivity_load(Eigen::MatrixXd* load) {
+  const ElementInputs in{xt_, dt_, x_, d_, contributions_, frames_};
+  const int ne = num_elements();
+  std::vector<Eigen::MatrixXd> le(static_cast<std::size_t>(ne));
+  std::vector<solver::ElementEvaluation> ev(static_cast<std::size_t>(ne));
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int e = 0; e < ne; ++e) ev[static_cast<std::size_t>(e)] = family_->sensitivity_load(e, in, &le[static_cast<std::size_t>(e)]);
+  *load = Eigen::MatrixXd::Zero(num_dofs_, sensitivity_count_);
+  for (int e = 0; e < ne; ++e) {  // in element order: the sums do not depend on the threads
+    const auto ue = static_cast<std::size_t>(e);
+    if (!ev[ue].ok) return ev[ue];
+    const std::vector<int>& dofs = element_dofs_[ue];
+    for (std::size_t a = 0; a < dofs.size(); ++a) load->row(dofs[a]) += le[ue].row(static_cast<Eigen::Index>(a)).head(sensitivity_count_);
+  }
+  for (int k = 0; k < sensitivity_count_; ++k) {  // moments at framed nodes in their frames, as the residual's
+    Eigen::VectorXd col = load->col(k);
+    frames_.rotate(dt_, true, &col);
+    load->col(k) = col;
+  }
+  return {};
+}
+
+solver::ElementEvaluation FeModel::update_sensitivities(const Eigen::MatrixXd& du) {
+  Eigen::MatrixXd global = du;  // rotations of framed nodes about x, y, z
+  for (Eigen::Index k = 0; k < du.cols(); ++k) {
+    Eigen::VectorXd col = du.col(k);
+    frames_.rotate(dt_, false, &col);
+    global.col(k) = col;
+  }
+  const ElementInputs in{xt_, dt_, x_, d_, contributions_, frames_};
+  const int ne = num_elements();
+  using Force = Eigen::Matrix<double, 3, material::kSensitivitySlots>;
+  std::vector<Force> fe(static_cast<std::size_t>(ne), Force::Zero());
+  std::vector<solver::ElementEvaluation> ev(static_cast<std::size_t>(ne));
+#pragma omp parallel for schedule(dynamic, 16)
+  for (int e = 0; e < ne; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    const std::vector<int>& dofs = element_dofs_[ue];
+    Eigen::MatrixXd due = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dofs.size()), material::kSensitivitySlots);
+    for (std::size_t a = 0; a < dofs.size(); ++a) due.row(static_cast<Eigen::Index>(a)).head(global.cols()) = global.row(dofs[a]);
+    ev[ue] = family_->update_sensitivities(e, in, due, &fe[ue]);
+  }
+  force_sensitivity_trial_.setZero();
+  for (int e = 0; e < ne; ++e) {
+    const auto ue = static_cast<std::size_t>(e);
+    if (!ev[ue].ok) return ev[ue];
+    force_sensitivity_trial_ += fe[ue].leftCols(sensitivity_count_);
+  }
+  return {};
 }
 
 MidSurface ElementFamily::mid_surface(const FeModel& model) const {

@@ -77,6 +77,20 @@ class FeModel : public solver::NonlinearProblem {
   void revert() override;
   Eigen::VectorXd increment_from_committed() const override;
 
+  // Direct differentiation (docs/design/sensitivities.md): from the next increment on, the
+  // model carries the derivatives of its state with respect to `count` parameters, those of
+  // `material` (the family's card) seeded by `seeds` in slots 0 .. count - 1; the Newton solver
+  // then solves for the DOFs' derivatives after every converged increment. Call before the
+  // first increment. std::invalid_argument (the reason) for a count outside 1 to
+  // material::kSensitivitySlots, a family or a contribution without sensitivities.
+  void enable_sensitivities(const std::vector<material::FieldSeed>& seeds, int count, const material::MaterialParams<double>& material);
+  int sensitivity_count() const override { return sensitivity_count_; }
+  solver::ElementEvaluation sensitivity_load(Eigen::MatrixXd* load) override;
+  solver::ElementEvaluation update_sensitivities(const Eigen::MatrixXd& du) override;
+  // Committed derivative of the contributions' total force (rows x, y, z; one column per
+  // parameter): with the tool's contact alone, of ToolContact::force(), the force on the tool.
+  const Eigen::Matrix<double, 3, Eigen::Dynamic>& contribution_force_sensitivity() const { return force_sensitivity_; }
+
   // Committed results. Directors are those of nodes with rotations (zero at the others).
   Eigen::Vector3d displacement(int node) const { return x_[static_cast<std::size_t>(node)] - mesh_->nodes[static_cast<std::size_t>(node)]; }
   const Eigen::Vector3d& position(int node) const { return x_[static_cast<std::size_t>(node)]; }
@@ -117,6 +131,8 @@ class FeModel : public solver::NonlinearProblem {
   double load_work_ = 0.0;                        // committed work of the nodal loads [N mm]
   std::vector<std::unique_ptr<ElementContribution>> contributions_;
   NodalRotationFrames frames_;
+  int sensitivity_count_ = 0;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> force_sensitivity_, force_sensitivity_trial_;
 };
 
 }  // namespace spifit::model

@@ -219,4 +219,93 @@ void ShellFamily::load_state(io::BinaryReader& r) {
   for (auto& el : elements_) el.load_state(r);
 }
 
+void ShellFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law) {
+  sensitivity_law_ = std::make_unique<element::SensLaw>(law);
+  for (auto& el : elements_) el.enable_sensitivities();
+}
+
+material::SensitivityRow ShellFamily::offset_sensitivity(int e) const {
+  const element::ShellQ4& el = elements_[static_cast<std::size_t>(e)];
+  material::SensitivityRow d = material::SensitivityRow::Zero();
+  for (int p = 0; p < el.points(); ++p) d += el.section(p).thickness_sensitivity();
+  return (0.5 / el.points()) * d;
+}
+
+// The tool-side surface point of a flat facet is sum N_I (x_I + o d_I) with o = h / 2, and a
+// contribution's forces on the p-variables are rp = (N_I f, o N_I f) over its points, f a
+// function of the surface point alone (frictionless contact). Hence
+// d rp / d o = sum_J (d rp / d x_J) d_J + (0, N_I f) = sum_J kc(:, x_J) d_J + (0, rp_d / o).
+bool ShellFamily::contribution_terms(int e, const ElementInputs& in, const element::NodeVectors& x, const element::NodeVectors& d,
+                                     ContributionTerms* t) const {
+  if (in.contributions.empty()) return false;
+  const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+  element::NodeVectors x0, d0;
+  corner_vectors(q, in.x0, in.d0, &x0, &d0);
+  const double offset = 0.5 * element_thickness(e);
+  const ElementConfiguration config{x, d, x0, d0, offset};
+  t->rc.setZero();
+  t->kc.setZero();
+  bool touched = false;
+  for (auto& c : in.contributions) touched |= c->add(e, config, &t->rc, &t->kc);
+  if (!touched) return false;
+  t->drc_doffset.setZero();
+  for (int J = 0; J < 4; ++J) t->drc_doffset.noalias() += t->kc.middleCols<3>(6 * J) * d[static_cast<std::size_t>(J)];
+  for (int I = 0; I < 4; ++I) t->drc_doffset.segment<3>(6 * I + 3) += t->rc.segment<3>(6 * I + 3) / offset;
+  return true;
+}
+
+solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load) {
+  const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+  element::NodeVectors x, d;
+  corner_vectors(q, in.x, in.d, &x, &d);
+  element::SensDofs l;
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, nullptr, &l);
+  solver::ElementEvaluation out;
+  if (!s.ok) {
+    out.ok = false;
+    out.reason = s.reason;
+    out.where = "element " + std::to_string(e) + ", in-plane point " + std::to_string(s.point) + ", layer " + std::to_string(s.layer);
+    return out;
+  }
+  ContributionTerms t;
+  if (contribution_terms(e, in, x, d, &t)) {
+    element::Vec24 ru;
+    element::director_to_dofs(d, t.drc_doffset, nullptr, &ru, nullptr);
+    l.noalias() += ru * offset_sensitivity(e);
+  }
+  *load = l;
+  return out;
+}
+
+solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+                                                            Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) {
+  const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
+  element::NodeVectors x, d;
+  corner_vectors(q, in.x, in.d, &x, &d);
+  const element::SensDofs dus = du;
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, &dus, nullptr);
+  solver::ElementEvaluation out;
+  if (!s.ok) {
+    out.ok = false;
+    out.reason = s.reason;
+    out.where = "element " + std::to_string(e) + ", in-plane point " + std::to_string(s.point) + ", layer " + std::to_string(s.layer);
+    return out;
+  }
+  ContributionTerms t;
+  if (contribution_force && contribution_terms(e, in, x, d, &t)) {
+    // d rc / d p = kc dp/dp + d rc / d o d o / d p, with the p-variables' derivatives
+    // dd_I = dpsi_I x d_I; the force on the element's nodes is the sum of rc's position rows.
+    element::SensDofs dp = dus;
+    for (int I = 0; I < 4; ++I)
+      for (int k = 0; k < material::kSensitivitySlots; ++k)
+        dp.block<3, 1>(6 * I + 3, k) = Eigen::Vector3d(dus.block<3, 1>(6 * I + 3, k)).cross(d[static_cast<std::size_t>(I)]);
+    const element::SensDofs drc = t.kc * dp + t.drc_doffset * offset_sensitivity(e);
+    contribution_force->setZero();
+    for (int I = 0; I < 4; ++I) *contribution_force += drc.middleRows<3>(6 * I);
+  } else if (contribution_force) {
+    contribution_force->setZero();
+  }
+  return out;
+}
+
 }  // namespace spifit::model

@@ -8,6 +8,7 @@
 #include "forward/mesh/mesh.hpp"
 #include "forward/model/element_family.hpp"
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,11 @@ class ShellFamily final : public ElementFamily {
   void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const override;
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
+  // The 2 x 2 element only (the one-point element refuses).
+  void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law) override;
+  solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load) override;
+  solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+                                                 Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
 
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
   element::ShellQ4& element(int e) { return elements_[static_cast<std::size_t>(e)]; }
@@ -77,6 +83,17 @@ class ShellFamily final : public ElementFamily {
   std::vector<Eigen::Vector3d> d0_;
   std::vector<std::string> warnings_;
   double max_t_over_l_ = 0.0;
+  std::unique_ptr<element::SensLaw> sensitivity_law_;  // the law with derivative slots
+  // The contributions' forces on element e (p-variables) and their derivatives with respect to
+  // the p-variables and to the tool-side offset h / 2; false if none touches it.
+  struct ContributionTerms {
+    element::Vec24 rc, drc_doffset;
+    element::Mat24 kc;
+  };
+  bool contribution_terms(int e, const ElementInputs& in, const element::NodeVectors& x, const element::NodeVectors& d,
+                          ContributionTerms* t) const;
+  // d (h / 2) / d p of element e's committed thickness.
+  material::SensitivityRow offset_sensitivity(int e) const;
   void check_geometry(const mesh::Mesh& mesh, double thickness);
   void build_directors_and_elements(const mesh::Mesh& mesh, double thickness);
 };

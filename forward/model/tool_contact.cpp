@@ -205,4 +205,13 @@ ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunctio
       std::make_unique<ToolContact>(model.mesh(), model.family().contact_surface(), radius, std::move(path), options, spin_per_load_factor));
 }
 
+std::string ToolContact::sensitivity_refusal() const {
+  const contact::ContactOptions& o = contact_->options();
+  if (passive_) return "";
+  if (o.friction > 0.0) return "contact.friction = " + std::to_string(o.friction) + ": friction has no parameter sensitivities yet (set it to 0)";
+  if (o.surface != contact::ContactOptions::Surface::flat) return "contact.surface = \"phong\": the curved contact surface has no parameter sensitivities yet";
+  if (!copies_deg_.empty()) return "the virtual tools of a pie have no parameter sensitivities yet";
+  return "";
+}
+
 }  // namespace spifit::model

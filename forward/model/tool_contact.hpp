@@ -62,6 +62,9 @@ class ToolContact final : public ElementContribution {
 
   // ElementContribution
   std::string name() const override { return "tool_contact"; }
+  // Frictionless contact with the real tool on flat facets only: friction's stick history, the
+  // curved surface and the virtual tools have no sensitivities yet.
+  std::string sensitivity_refusal() const override;
   void begin_increment(double lambda0, double lambda1) override;
   bool add(int e, const ElementConfiguration& c, element::Vec24* rp, element::Mat24* kp) override;
   void before_commit(const FeModel& model) override;

@@ -372,6 +372,46 @@ bool NewtonSolver::after_failure(double lambda0, double lambda1, const ElementEv
   return false;
 }
 
+bool NewtonSolver::sensitivity_step(double lambda1, std::string* message) {
+  const Assembly a = assemble(lambda1, true, nullptr);
+  if (!a.failure.ok) {
+    *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + a.failure.where + ": " + a.failure.reason;
+    return false;
+  }
+  // The exact tangent: UMFPACK unless it is symmetric (CHOLMOD), whatever Newton used.
+  const bool symmetric = k_->is_symmetric(1e-10);
+  const LinearSolverKind kind = symmetric ? LinearSolverKind::cholmod : LinearSolverKind::umfpack;
+  if (!sensitivity_solver_ || sensitivity_symmetric_ != symmetric) {
+    sensitivity_solver_ = make_linear_solver(kind);
+    sensitivity_symmetric_ = symmetric;
+  }
+  if (!sensitivity_solver_->factorize(*k_)) {
+    *message = "sensitivities at load factor " + std::to_string(lambda1) + ": the tangent: " + sensitivity_solver_->error();
+    return false;
+  }
+  Eigen::MatrixXd load;
+  const ElementEvaluation le = problem_.sensitivity_load(&load);
+  if (!le.ok) {
+    *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + le.where + ": " + le.reason;
+    return false;
+  }
+  Eigen::MatrixXd du(problem_.num_dofs(), load.cols());
+  for (Eigen::Index k = 0; k < load.cols(); ++k) {
+    Eigen::VectorXd x;
+    if (!sensitivity_solver_->solve(-constraints_.reduce(load.col(k)), &x)) {
+      *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + sensitivity_solver_->error();
+      return false;
+    }
+    du.col(k) = constraints_.expand(x);
+  }
+  const ElementEvaluation ue = problem_.update_sensitivities(du);
+  if (!ue.ok) {
+    *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + ue.where + ": " + ue.reason;
+    return false;
+  }
+  return true;
+}
+
 NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& callback) {
   NewtonSummary summary;
   control_.begin_run();
@@ -391,6 +431,7 @@ NewtonSummary NewtonSolver::run(double lambda_end, const IncrementCallback& call
       continue;
     }
     stabilisation_.converged(report, &counters_);
+    if (problem_.sensitivity_count() > 0 && !sensitivity_step(lambda1, &summary.message)) break;
     if (options_.extrapolate) predictor_.record(problem_, constraints_, lambda, lambda1);
     problem_.commit(lambda1);
     ++counters_.increments;

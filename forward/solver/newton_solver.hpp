@@ -89,6 +89,12 @@ class NewtonSolver {
   // correction's estimate. false if there is none or the solve fails.
   bool solve_with_last_factor(const Eigen::VectorXd& rhs, Eigen::VectorXd* x);
   LinearSolver* last_factor_ = nullptr;  // the solver holding the last successful factorisation
+  // Direct differentiation after a converged increment (NonlinearProblem::sensitivity_count):
+  // the tangent at the converged iterate, factorised by a solver of its own (Newton's last
+  // factor is left as it is), one solve per parameter. false (with the message) on failure.
+  bool sensitivity_step(double lambda1, std::string* message);
+  std::unique_ptr<LinearSolver> sensitivity_solver_;
+  bool sensitivity_symmetric_ = false;
   // The increment loop from the stepping state to lambda_end (solve and resume).
   NewtonSummary run(double lambda_end, const IncrementCallback& callback);
   // After a failed attempt: cut back, or at the minimum increment stabilise or give up (false,

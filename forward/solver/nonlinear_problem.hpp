@@ -39,6 +39,21 @@ class NonlinearProblem {
   // Displacement-like value of each DOF in the iterate relative to the committed state
   // (prescribed DOFs are driven to their targets through it).
   virtual Eigen::VectorXd increment_from_committed() const = 0;
+  // Direct differentiation (docs/design/sensitivities.md). The number of parameters whose
+  // derivatives the problem carries (0: none). After every converged increment, before
+  // commit(), the solver asks for the pseudo-load at the converged iterate (the residual's
+  // derivative with respect to each parameter at fixed DOFs: full DOF vectors, one column per
+  // parameter), solves with the tangent there, and hands back the DOFs' derivatives (full
+  // vectors, zero at prescribed DOFs), from which the problem's state derivatives follow.
+  virtual int sensitivity_count() const { return 0; }
+  virtual ElementEvaluation sensitivity_load(Eigen::MatrixXd* load) {
+    (void)load;
+    return {false, "sensitivity_load", "the problem has no parameter sensitivities", 1.0};
+  }
+  virtual ElementEvaluation update_sensitivities(const Eigen::MatrixXd& du) {
+    (void)du;
+    return {false, "update_sensitivities", "the problem has no parameter sensitivities", 1.0};
+  }
   // Names a DOF for messages (where a Newton correction was largest when an increment failed).
   virtual std::string describe_dof(int dof) const { return "DOF " + std::to_string(dof); }
 };

@@ -1,0 +1,145 @@
+// Direct differentiation through a shell model with a tool (FeModel::enable_sensitivities and
+// the Newton solver's sensitivity step): the derivatives of the tool force along a plastic
+// indentation against central differences of whole runs with perturbed parameters.
+#include "forward/material/material_card.hpp"
+#include "forward/material/material_inputs.hpp"
+#include "forward/mesh/square_sheet.hpp"
+#include "forward/model/shell_model.hpp"
+#include "forward/model/tool_contact.hpp"
+#include "forward/solver/newton_solver.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+namespace spifit::model {
+namespace {
+
+using material::FieldSeed;
+using material::SensitivityRow;
+
+constexpr int kCount = 4;  // swift.K, swift.n, E, hill.G (with H = 2 - G)
+
+SensitivityRow unit(int k) {
+  SensitivityRow r = SensitivityRow::Zero();
+  r(k) = 1.0;
+  return r;
+}
+
+const material::MaterialInput& input(const char* name) { return *material::find_material_input(name); }
+
+std::vector<FieldSeed> seeds() {
+  return {{input("swift.K").field, unit(0)}, {input("swift.n").field, unit(1)}, {input("elastic.E").field, unit(2)},
+          {input("hill.G").field, unit(3)}, {input("hill.H").field, -unit(3)}};
+}
+
+material::MaterialParams<double> card() {
+  return material::load_material_card(std::string(SPIFIT_SOURCE_DIR) + "/materials/aa3003o_c3c4.toml").params;
+}
+
+struct IndentRun {
+  std::vector<Eigen::Vector3d> force;  // on the tool, per increment
+  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> sensitivity;
+  std::string message;
+};
+
+// A clamped 10 x 10 x 0.5 mm sheet indented 1.2 mm by an R 3 tool in ten equal increments.
+IndentRun indent(const material::MaterialParams<double>& p, bool sensitivities) {
+  mesh::SquareSheetOptions so;
+  so.length_x = so.length_y = 10.0;
+  so.nx = so.ny = 8;
+  const mesh::Mesh mesh = mesh::square_sheet(so);
+  ShellModelOptions mo;
+  mo.shell.thickness_points = 3;
+  ShellModel model(mesh, 0.5, p, mo);
+  contact::ContactOptions co;
+  co.penalty = 1000.0;
+  const double R = 3.0;
+  ToolContact& tool = attach_tool(model, R, [=](double lambda) { return Eigen::Vector3d(0.3, -0.2, 0.25 + R - 1.2 * lambda); }, co);
+  solver::DofConstraints c(model.num_dofs());
+  for (int n : mesh.node_sets.at("boundary"))
+    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
+  c.finalize();
+  if (sensitivities) model.enable_sensitivities(seeds(), kCount, p);
+  solver::NewtonOptions o;
+  o.initial_increment = o.max_increment = o.min_increment = 0.1;
+  o.force_tolerance = o.displacement_tolerance = 1e-11;
+  solver::NewtonSolver s(model, c, o);
+  IndentRun run;
+  const solver::NewtonSummary sum = s.solve(1.0, [&](const solver::IncrementReport&) {
+    run.force.push_back(tool.force());
+    run.sensitivity.push_back(model.contribution_force_sensitivity());
+    return true;
+  });
+  run.message = sum.message;
+  EXPECT_TRUE(sum.converged) << sum.message;
+  return run;
+}
+
+TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
+  const material::MaterialParams<double> p = card();
+  const IndentRun ddm = indent(p, true);
+  ASSERT_EQ(ddm.force.size(), 10u);
+  const IndentRun plain = indent(p, false);
+  for (std::size_t n = 0; n < ddm.force.size(); ++n) EXPECT_EQ(ddm.force[n], plain.force[n]) << "increment " << n;
+  const std::vector<FieldSeed> sd = seeds();
+  const char* names[kCount] = {"swift.K", "swift.n", "elastic.E", "hill.G"};
+  // Steps small enough that no contact point or layer switches state between the runs + h
+  // and - h: with steps 64 times larger, central differences straddle such switches and lie up
+  // to 3e-4 (relative) off, and they converge to the exact values as the steps shrink.
+  const double steps[kCount] = {1.0 / 64.0, 2e-3 / 64.0, 100.0 / 64.0, 2e-3 / 64.0};
+  for (int k = 0; k < kCount; ++k) {
+    std::vector<Eigen::Vector3d> cd(10), cd4(10);
+    for (double step : {steps[k], steps[k] / 4.0}) {
+      material::MaterialParams<double> pp = p, pm = p;
+      material::set_material_input(pp, input(names[k]), material::material_field(p, input(names[k]).field) + step);
+      material::set_material_input(pm, input(names[k]), material::material_field(p, input(names[k]).field) - step);
+      if (k == 3) {
+        pp.H = 2.0 - pp.G;
+        pm.H = 2.0 - pm.G;
+      }
+      const IndentRun rp = indent(pp, false), rm = indent(pm, false);
+      for (std::size_t n = 0; n < 10; ++n) (step == steps[k] ? cd : cd4)[n] = (rp.force[n] - rm.force[n]) / (2.0 * step);
+    }
+    double worst = 0.0;
+    for (std::size_t n = 0; n < 10; ++n) {
+      const Eigen::Vector3d exact = ddm.sensitivity[n].col(k);
+      const double scale = cd4[n].cwiseAbs().maxCoeff();
+      const double noise = (cd[n] - cd4[n]).cwiseAbs().maxCoeff();
+      const double err = (exact - cd4[n]).cwiseAbs().maxCoeff();
+      worst = std::max(worst, err / scale);
+      EXPECT_LE(err, noise + 1e-6 * scale) << names[k] << ", increment " << n;
+    }
+    std::printf("%s: largest relative difference to central differences (h/4) %.2e\n", names[k], worst);
+  }
+}
+
+TEST(ShellModelSensitivity, RefusesWhatHasNoSensitivitiesYet) {
+  mesh::SquareSheetOptions so;
+  so.nx = so.ny = 2;
+  const mesh::Mesh mesh = mesh::square_sheet(so);
+  const material::MaterialParams<double> p = card();
+  auto refusal = [&](const ShellModelOptions& mo, const contact::ContactOptions& co, int count) {
+    ShellModel model(mesh, 0.5, p, mo);
+    attach_tool(model, 3.0, [](double) { return Eigen::Vector3d(0.0, 0.0, 10.0); }, co);
+    try {
+      model.enable_sensitivities(seeds(), count, p);
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  contact::ContactOptions friction;
+  friction.friction = 0.1;
+  EXPECT_NE(refusal({}, friction, kCount).find("contact.friction = 0.1"), std::string::npos);
+  ShellModelOptions one_point;
+  one_point.shell.hourglass_stiffness = 0.03;
+  EXPECT_NE(refusal(one_point, {}, kCount).find("one-point shell"), std::string::npos);
+  EXPECT_NE(refusal({}, {}, 9).find("1 to 8"), std::string::npos);
+  EXPECT_EQ(refusal({}, {}, kCount), "");
+}
+
+}  // namespace
+}  // namespace spifit::model
