@@ -1,10 +1,13 @@
 #include "cli/commands.hpp"
+
+#include "forward/material/sensitivity_seeds.hpp"
 #include "cli/cli_errors.hpp"
 #include "cli/progress_meter.hpp"
 #include "cli/run_signals.hpp"
 
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
+#include "forward/material/sensitivity_seeds.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/input_reference.hpp"
 #include "forward/scenes/scene_registry.hpp"
@@ -136,17 +139,41 @@ void write_run_report(const io::OutputDirectory& dir) {
   }
 }
 
+// What can be told before the output directory is touched: the kind, the names against the card,
+// and friction (the model's other refusals, e.g. the one-point shell, come when it is built).
+void check_sensitivities(const scene::Scene& scene, const scene::SceneKind& kind, const std::vector<std::string>& names) {
+  std::string joined;
+  for (const auto& n : names) joined += (joined.empty() ? "" : ",") + n;
+  if (!kind.sensitivities || !scene.card())
+    throw io::InputError(scene.file(), "--sensitivities", joined,
+                         kind.fe_run ? kind.name + " scenes have no parameter sensitivities yet (indent, indent_line and line scenes have)"
+                                     : "FE scenes only (a material-point scene's parameter derivatives are exact Jets in fits already)");
+  if (const double mu = scene.input("contact.friction"); mu > 0.0)
+    throw io::InputError(scene.file(), "contact.friction", io::format_number(mu),
+                         "--sensitivities: friction has no parameter sensitivities yet (set it to 0)");
+  try {
+    (void)material::sensitivity_seeds(scene.card()->params, names);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(scene.file(), "--sensitivities", joined, e.what());
+  }
+}
+
 }  // namespace
 
 void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
-  struct Opts { std::string scene, out; bool force = false, resume = false; };
+  struct Opts { std::string scene, out; bool force = false, resume = false; std::vector<std::string> sensitivities; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("run", "Run a scene file and write DIR/summary.json and the scene's outputs (curve.csv for material points; "
                                         "increments.csv and vtu/ for shell benchmarks; force.csv, energies.csv, sections and vtu/ for FE scenes)");
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
   auto* force = cmd->add_flag("--force", o->force, "replace an existing output directory");
-  cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
+  auto* resume = cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
+  cmd->add_option("--sensitivities", o->sensitivities,
+                  "material parameters, comma-separated (e.g. swift.K,elastic.E): write the tool force's exact derivatives with respect to "
+                  "them to DIR/sensitivities.csv (implicit indent, indent_line and line scenes)")
+      ->delimiter(',')
+      ->excludes(resume);
   cmd->callback([o, &g, &exit_code] {
     const auto scene = scene::read_scene(o->scene);  // input errors before touching --out
     if (!g.quiet)
@@ -154,9 +181,11 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const scene::SceneKind* kind = scene::find_scene_kind(scene->kind());
     if (o->resume && !kind->resumable)
       throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + scene->kind() + " (it writes no checkpoints)");
+    if (!o->sensitivities.empty()) check_sensitivities(*scene, *kind, o->sensitivities);
     const auto dir = o->resume ? existing_output(o->out, o->scene, g.quiet) : prepare_output(o->out, o->force, scene->input_files(), g.quiet);
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
+    control.sensitivities = o->sensitivities;
     std::shared_ptr<ProgressMeter> meter;
     control.progress = progress_sink(g, &meter);
     // SIGINT/SIGTERM end an FE run at the end of an increment, with a checkpoint to resume from;

@@ -95,7 +95,6 @@ void ShellSection::enable_sensitivities() {
 }
 
 SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, Vec6S* resultant) {
-  using Outer = ceres::Jet<Sens, 3>;  // d / d green on top of d / d p: the log strain's first derivative
   if (!sensitivities_enabled()) throw std::logic_error("ShellSection::update_sensitivities before enable_sensitivities");
   SectionStatus status;
   resultant->setZero();
@@ -104,14 +103,20 @@ SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S
     const Sens z = (rule_->zeta[l] * 0.5) * h;
     const double w = rule_->weight[l] * 0.5 * h0_;
     const Vec3S green = e + z * kappa;
-    Eigen::Matrix<Outer, 3, 1> g;
-    for (int i = 0; i < 3; ++i) g(i) = Outer(green(i), i);
-    const Eigen::Matrix<Outer, 3, 1> eo = log_strain_of_green(g);
+    // eps and d eps / d E with their derivatives by the chain rule through the closed-form first
+    // and second derivatives of the logarithm.
+    Vec3 gv;
+    Eigen::Matrix<double, 3, material::kSensitivitySlots> gd;
+    for (int i = 0; i < 3; ++i) {
+      gv(i) = green(i).a;
+      gd.row(i) = material::derivatives_of(green(i));
+    }
+    const LogStrain ls = log_strain_with_derivatives(gv, true);
     Vec3S eps;
     Eigen::Matrix<Sens, 3, 3> first;  // d eps_i / d E_j
     for (int i = 0; i < 3; ++i) {
-      eps(i) = eo(i).a;
-      for (int j = 0; j < 3; ++j) first(i, j) = eo(i).v(j);
+      eps(i) = material::with_derivatives(ls.value(i), ls.first.row(i) * gd);
+      for (int j = 0; j < 3; ++j) first(i, j) = material::with_derivatives(ls.first(i, j), ls.second[static_cast<std::size_t>(i)].row(j) * gd);
     }
     Vec3S eps0;
     for (int i = 0; i < 3; ++i) eps0(i) = material::with_derivatives(eps_[l](i), material::derivatives_of(sens_[l].eps(i)));

@@ -1,6 +1,8 @@
 #include "forward/scenes/common/fe_run.hpp"
 
 #include "forward/io/input_error.hpp"
+#include "forward/material/material_inputs.hpp"
+#include "forward/material/sensitivity_seeds.hpp"
 #include "forward/scenes/common/fe_run_stepper.hpp"
 #include "forward/scenes/common/run_checkpoint.hpp"
 
@@ -33,6 +35,31 @@ FeRun::FeRun(FeRunSetup setup, RunFiles files, RunControl control)
   if (!setup_.tool_copies_deg.empty()) tool_->set_copies(setup_.tool_copies_deg);
   constraints_ = std::make_unique<solver::DofConstraints>(setup_.constraints(*model_));
   solver_ = std::make_unique<solver::NewtonSolver>(*model_, *constraints_, setup_.newton);
+  if (!control_.sensitivities.empty()) enable_sensitivities();
+}
+
+// Refusals name the scene file, the option and its value.
+void FeRun::enable_sensitivities() {
+  std::string file, names;
+  for (const auto& [role, path] : setup_.input_files)
+    if (role == "scene") file = path;
+  for (const std::string& n : control_.sensitivities) names += (names.empty() ? "" : ",") + n;
+  auto refuse = [&](const std::string& why) { throw io::InputError(file, "--sensitivities", names, why); };
+  if (setup_.explicit_scheme) refuse("the explicit scheme has no exact sensitivities; run the implicit scheme, or differentiate by central differences (a sweep)");
+  if (control_.resume) refuse("a run with sensitivities cannot be resumed (checkpoints do not hold the state's derivatives)");
+  try {
+    const std::vector<material::FieldSeed> seeds = material::sensitivity_seeds(setup_.material, control_.sensitivities);
+    model_->enable_sensitivities(seeds, static_cast<int>(control_.sensitivities.size()), setup_.material);
+  } catch (const std::invalid_argument& e) {
+    refuse(e.what());
+  }
+}
+
+std::vector<double> FeRun::sensitivity_values() const {
+  std::vector<double> v;
+  for (const std::string& n : control_.sensitivities)
+    v.push_back(material::material_field(setup_.material, material::find_material_input(n)->field));
+  return v;
 }
 
 FeRun::~FeRun() = default;

@@ -94,6 +94,9 @@ struct RunControl {
   const std::atomic<int>* interrupt = nullptr;
   // Seconds between heartbeats of the running summary.json (run_heartbeat.hpp).
   double heartbeat_seconds = kHeartbeatSeconds;
+  // Material parameters ("swift.K") to differentiate the run with respect to, by direct
+  // differentiation (docs/design/sensitivities.md): implicit runs only, not resumed.
+  std::vector<std::string> sensitivities;
 };
 
 struct CheckpointRecord {
@@ -135,6 +138,10 @@ class FeRun {
   // The model as a shell model; null for other families.
   model::ShellModel* shell_model() { return dynamic_cast<model::ShellModel*>(model_.get()); }
   const model::ToolContact& tool() const { return *tool_; }
+  // The material parameters the run differentiates with respect to (RunControl::sensitivities)
+  // and their values.
+  const std::vector<std::string>& sensitivity_names() const { return control_.sensitivities; }
+  std::vector<double> sensitivity_values() const;
 
   // Observers are called in the order added; add them all before run().
   template <typename O>
@@ -162,6 +169,7 @@ class FeRun {
   std::vector<std::unique_ptr<RunObserver>> observers_;
   class Stepper;  // the per-increment bookkeeping (fe_run_stepper.hpp)
   FeRunOutcome run_explicit(const nlohmann::json& head);
+  void enable_sensitivities();
 };
 
 }  // namespace spifit::scene

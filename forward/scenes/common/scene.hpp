@@ -94,6 +94,7 @@ struct SceneKind {
   std::string doc;     // one line
   bool resumable = false;        // checkpoints and --resume
   bool fe_run = false;           // an FE run with a tool: force.csv, energies.csv, vtu/ and the run report
+  bool sensitivities = false;    // exact parameter derivatives of the tool force (spifit run --sensitivities)
   bool jets = false;             // runs on ceres::Jet scalars (material points): fits evaluate it in process with exact derivatives
   bool parallel_sweeps = false;  // sweep points run side by side (each run serial)
   std::function<std::unique_ptr<Scene>(const std::string& file)> read;  // io::InputError naming file, key, value

@@ -7,6 +7,7 @@
 #include "forward/model/hanging_nodes.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
+#include "forward/io/input_error.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
 #include "forward/scenes/common/vtu_log.hpp"
 #include "forward/scenes/cone/cone_contour_log.hpp"
@@ -202,6 +203,8 @@ ForceLogFormat force_format(const ConeScene& s, const ConeTrack& track) {
 }  // namespace
 
 ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const RunControl& control) {
+  if (!control.sensitivities.empty())
+    throw io::InputError(scene.file, "--sensitivities", control.sensitivities.front(), "cone scenes have no parameter sensitivities yet (indent, indent_line and line scenes have)");
   const ConeTrack track(cone_scene_path(scene));
   FeRun run(cone_setup(scene, track), files, control);
   auto& force = run.add_observer(std::make_unique<ForceLog>(force_format(scene, track), run.files()));

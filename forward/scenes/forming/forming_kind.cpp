@@ -91,6 +91,7 @@ SceneKind forming_kind(const char* name, const char* doc) {
   k.doc = doc;
   k.resumable = true;
   k.fe_run = true;
+  k.sensitivities = true;
   k.read = [](const std::string& file) -> std::unique_ptr<Scene> {
     FormingScene s = read_forming_scene(file);
     std::string kind = s.kind;

@@ -4,6 +4,8 @@
 #include "forward/model/hanging_nodes.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
+#include "forward/scenes/common/sensitivity_log.hpp"
+#include "forward/material/material_inputs.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
 #include "forward/scenes/common/vtu_log.hpp"
 #include "forward/scenes/forming/forming_path.hpp"
@@ -138,7 +140,17 @@ nlohmann::json forming_inputs(const FormingScene& s, const model::FeModel& model
 FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files, const RunControl& control) {
   FeRun run(forming_setup(scene), files, control);
   const double length = run.setup().load_map.length();
-  auto& force = run.add_observer(std::make_unique<ForceLog>(force_format(scene), run.files()));
+  const ForceLogFormat format = force_format(scene);
+  auto& force = run.add_observer(std::make_unique<ForceLog>(format, run.files()));
+  if (!run.sensitivity_names().empty()) {
+    std::vector<std::string> units;
+    for (const std::string& n : run.sensitivity_names()) units.push_back(material::find_material_input(n)->info.unit);
+    run.add_observer(std::make_unique<SensitivityLog>(
+        run.sensitivity_names(), units, run.sensitivity_values(),
+        "# spifit " + scene.kind + " scene " + scene.name + ": derivatives of the force BY the sheet ON the tool with respect to the card's parameters "
+        "(direct differentiation), and each scaled by the parameter's value" + (scene.half ? "; half model, mirrored to the full sheet" : ""),
+        format.whole, run.files()));
+  }
   auto& energy = run.add_observer(std::make_unique<EnergyLog>(
       "# spifit " + scene.kind + " scene " + scene.name + ": energy account of the model after each increment (model::ModelEnergies), N mm; "
       "external work = the tool's work on the sheet (trapezoidal rule; a half model: on the half); " +
@@ -149,6 +161,7 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
 
   FormingResult r;
   r.inputs = forming_inputs(scene, run.model(), length);
+  if (!run.sensitivity_names().empty()) r.inputs["sensitivities"] = run.sensitivity_names();
   r.name = scene.name;
   r.kind = scene.kind;
   r.elements = run.model().num_elements();

@@ -1,0 +1,18 @@
+#pragma once
+// The seeds of a run's parameter sensitivities (docs/design/sensitivities.md): each named
+// material parameter ("swift.K", material_inputs.hpp) gets the next derivative slot, set on its
+// field and on the fields tied to it (hill.N sets L and M). Unlike a fit with normalise_hill,
+// hill.H stays a parameter of its own.
+#include "forward/material/material_params.hpp"
+#include "forward/material/sensitivity_scalar.hpp"
+
+#include <string>
+#include <vector>
+
+namespace spifit::material {
+
+// The seeds of `names` in that order; std::invalid_argument with the reason for an unknown name,
+// a parameter the card does not hold, a repeated name, or more than kSensitivitySlots names.
+std::vector<FieldSeed> sensitivity_seeds(const MaterialParams<double>& card, const std::vector<std::string>& names);
+
+}  // namespace spifit::material

@@ -1,0 +1,42 @@
+#include "forward/scenes/common/sensitivity_log.hpp"
+
+#include "forward/model/fe_model.hpp"
+
+namespace spifit::scene {
+namespace {
+
+std::vector<io::Column> columns(const std::vector<std::string>& names, const std::vector<std::string>& units) {
+  std::vector<io::Column> c{{"time", "s"}, {"lambda", ""}};
+  for (std::size_t k = 0; k < names.size(); ++k) {
+    const std::string per = units[k].empty() ? "N" : "N/" + units[k];
+    for (const char* f : {"Fx", "Fy", "Fz"}) c.push_back({"d" + std::string(f) + "/d(" + names[k] + ")", per});
+    for (const char* f : {"Fx", "Fy", "Fz"}) c.push_back({names[k] + "*d" + std::string(f) + "/d(" + names[k] + ")", "N"});
+  }
+  return c;
+}
+
+}  // namespace
+
+SensitivityLog::SensitivityLog(std::vector<std::string> names, const std::vector<std::string>& units, std::vector<double> values,
+                               std::string comment, std::function<Eigen::Vector3d(const Eigen::Vector3d&)> whole, const RunFiles& files)
+    : names_(std::move(names)), values_(std::move(values)), comment_(std::move(comment)), whole_(std::move(whole)), files_(files),
+      table_(columns(names_, units)) {}
+
+void SensitivityLog::after_increment(const IncrementView& v) {
+  const auto& d = v.model.contribution_force_sensitivity();
+  std::vector<double> row{v.time, v.lambda};
+  for (std::size_t k = 0; k < names_.size(); ++k) {
+    const Eigen::Vector3d raw = d.col(static_cast<Eigen::Index>(k));
+    const Eigen::Vector3d f = whole_ ? whole_(raw) : raw;
+    row.insert(row.end(), {f.x(), f.y(), f.z()});
+    row.insert(row.end(), {values_[k] * f.x(), values_[k] * f.y(), values_[k] * f.z()});
+  }
+  table_.add_row(std::move(row));
+}
+
+void SensitivityLog::write(WriteReason reason) {
+  if (reason == WriteReason::increment) return;
+  files_.write("sensitivities.csv", comment_ + "\n" + table_.csv());
+}
+
+}  // namespace spifit::scene

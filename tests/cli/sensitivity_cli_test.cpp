@@ -1,0 +1,83 @@
+// spifit run --sensitivities: the tool force's exact parameter derivatives beside force.csv, and
+// the refusals (unknown or absent parameters, kinds and options without sensitivities), which
+// exit 2 naming the file, the option and its value, before the output directory is touched.
+#include "tests/cli/cli_support.hpp"
+#include "tests/support/temp_files.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using Result = spifit::test::CliResult;
+Result run(const std::string& args) { return spifit::test::run_spifit(args); }
+using spifit::test::temp_path;
+
+const std::string kScenes = std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/";
+
+std::vector<std::string> split(const std::string& line) {
+  std::vector<std::string> out;
+  std::stringstream ss(line);
+  for (std::string cell; std::getline(ss, cell, ',');) out.push_back(cell);
+  return out;
+}
+
+TEST(SensitivityCli, IndentWritesDerivativesBesideUnchangedForces) {
+  const fs::path out = temp_path("indent_sens");
+  fs::remove_all(out);
+  const Result r = run("run " + kScenes + "indent.toml --out " + out.string() + " --sensitivities swift.K,elastic.E");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto s = nlohmann::json::parse(std::ifstream(out / "summary.json"));
+  EXPECT_NEAR(s["final_force"][2].get<double>(), 289.40, 0.05);  // as without sensitivities
+  EXPECT_EQ(s["sensitivities"], nlohmann::json::array({"swift.K", "elastic.E"}));
+  std::ifstream f(out / "sensitivities.csv");
+  std::vector<std::string> lines;
+  for (std::string l; std::getline(f, l);) lines.push_back(l);
+  ASSERT_EQ(lines.size(), 2u + s["increments"].get<std::size_t>());
+  const std::vector<std::string> header = split(lines[1]), last = split(lines.back());
+  ASSERT_EQ(header.size(), 14u);
+  EXPECT_EQ(header[4], "dFz/d(swift.K) [N/MPa]");
+  EXPECT_EQ(header[7], "swift.K*dFz/d(swift.K) [N]");
+  // Swift's stress scales with K, so K dFz/dK lies just below Fz (289.40 N) at the end: 282.82 N
+  // by direct differentiation (checked against central differences in shell_model_sensitivity_test).
+  EXPECT_NEAR(std::stod(last[7]), 282.82, 0.01);
+  EXPECT_NEAR(std::stod(last[4]) * 180.0, std::stod(last[7]), 1e-9 * std::stod(last[7]));  // K = 180 MPa (card C.4)
+  fs::remove_all(out);
+}
+
+TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
+  const fs::path out = temp_path("sens_refused");
+  const fs::path friction = spifit::test::bundled_scene_with("indent.toml", "indent_friction.toml", "friction = 0.0", "friction = 0.1");
+  struct Case {
+    std::string scene, names, expect;
+  } cases[] = {
+      {kScenes + "indent.toml", "swift.X", "swift.X is not a material parameter"},
+      {kScenes + "indent.toml", "af.CX", "no kinematic hardening"},
+      {kScenes + "indent.toml", "swift.K,swift.K", "named twice"},
+      {kScenes + "tensile_00.toml", "swift.K", "FE scenes only"},
+      {kScenes + "cone70_pie45_short.toml", "swift.K", "cone scenes have no parameter sensitivities yet"},
+      {friction.string(), "swift.K", "contact.friction = 0.1"},
+  };
+  for (const Case& c : cases) {
+    fs::remove_all(out);
+    const Result r = run("run " + c.scene + " --out " + out.string() + " --sensitivities " + c.names);
+    EXPECT_EQ(r.code, 2) << c.names << ": " << r.err;
+    EXPECT_NE(r.err.find(c.scene), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out)) << c.scene;
+  }
+  const Result both = run("run " + kScenes + "indent.toml --out " + out.string() + " --resume --sensitivities swift.K");
+  EXPECT_NE(both.code, 0);
+  EXPECT_NE(both.err.find("--sensitivities"), std::string::npos) << both.err;
+  fs::remove(friction);
+}
+
+}  // namespace
