@@ -9,6 +9,7 @@
 #include "forward/material/material_card.hpp"
 #include "forward/material/sensitivity_seeds.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/common/sensitivity_check.hpp"
 #include "forward/scenes/input_reference.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "reports/card_export.hpp"
@@ -141,7 +142,7 @@ void write_run_report(const io::OutputDirectory& dir) {
 
 // What can be told before the output directory is touched: the kind, the names against the card,
 // and friction (the model's other refusals, e.g. the one-point shell, come when it is built).
-void check_sensitivities(const scene::Scene& scene, const scene::SceneKind& kind, const std::vector<std::string>& names) {
+void refuse_sensitivities_early(const scene::Scene& scene, const scene::SceneKind& kind, const std::vector<std::string>& names) {
   std::string joined;
   for (const auto& n : names) joined += (joined.empty() ? "" : ",") + n;
   if (!kind.sensitivities || !scene.card())
@@ -181,7 +182,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const scene::SceneKind* kind = scene::find_scene_kind(scene->kind());
     if (o->resume && !kind->resumable)
       throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + scene->kind() + " (it writes no checkpoints)");
-    if (!o->sensitivities.empty()) check_sensitivities(*scene, *kind, o->sensitivities);
+    if (!o->sensitivities.empty()) refuse_sensitivities_early(*scene, *kind, o->sensitivities);
     const auto dir = o->resume ? existing_output(o->out, o->scene, g.quiet) : prepare_output(o->out, o->force, scene->input_files(), g.quiet);
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
@@ -217,6 +218,33 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       for (const auto& w : result->warnings) std::printf("  warning: %s\n", w.c_str());
     }
     exit_code = 0;
+  });
+}
+
+void add_check_sensitivities_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
+  struct Opts { std::string scene; std::vector<std::string> names; double relative_step = 1e-4; };
+  auto o = std::make_shared<Opts>();
+  auto* cmd = app.add_subcommand("check-sensitivities",
+                                 "Compare a scene's exact tool-force derivatives (run --sensitivities) with central differences of whole runs "
+                                 "(steps h and h/4); exit 1 when one lies outside the central differences' own spread");
+  cmd->add_option("SCENE", o->scene, "scene file (TOML): an implicit indent, indent_line or line scene")->required();
+  cmd->add_option("--sensitivities", o->names, "material parameters, comma-separated (e.g. swift.K,elastic.E)")->delimiter(',')->required();
+  cmd->add_option("--relative-step", o->relative_step, "h as a fraction of each parameter's value (default 1e-4)")->check(CLI::Range(1e-12, 0.1));
+  cmd->callback([o, &g, &exit_code] {
+    const auto scene = scene::read_scene(o->scene);
+    refuse_sensitivities_early(*scene, *scene::find_scene_kind(scene->kind()), o->names);
+    std::string joined;
+    for (const auto& n : o->names) joined += (joined.empty() ? "" : ",") + n;
+    scene::SensitivityCheck c;
+    try {
+      c = scene::check_sensitivities(*scene, o->names, o->relative_step, [&g](const std::string& what) {
+        if (!g.quiet) std::cerr << "spifit: running " << what << "\n";
+      });
+    } catch (const std::invalid_argument& e) {
+      throw io::InputError(o->scene, "--sensitivities", joined, e.what());
+    }
+    std::printf("%s", scene::format_sensitivity_check(c).c_str());
+    exit_code = c.agrees() ? 0 : 1;
   });
 }
 

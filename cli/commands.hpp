@@ -18,6 +18,8 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_sweep_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_report_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_inputs_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
+// `spifit check-sensitivities SCENE --sensitivities P,...`: exact against central differences.
+void add_check_sensitivities_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 // `spifit status DIR` (status_command.cpp).
 void add_status_command(CLI::App& app, const GlobalOptions& g, int& exit_code);
 void add_job_command(CLI::App& app, const GlobalOptions& g, int& exit_code);

@@ -107,6 +107,7 @@ int main(int argc, char** argv) {
   spifit::cli::add_lankford_command(app, g, exit_code);
   spifit::cli::add_material_command(app, g, exit_code);
   spifit::cli::add_run_command(app, g, exit_code);
+  spifit::cli::add_check_sensitivities_command(app, g, exit_code);
   spifit::cli::add_fit_command(app, g, exit_code);
   spifit::cli::add_sweep_command(app, g, exit_code);
   spifit::cli::add_report_command(app, g, exit_code);

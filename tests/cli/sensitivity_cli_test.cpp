@@ -80,4 +80,24 @@ TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
   fs::remove(friction);
 }
 
+TEST(SensitivityCli, CheckerFindsExactAndCentralDifferencesAgreeOnTheIndent) {
+  const Result r = run("-q check-sensitivities " + kScenes + "indent.toml --sensitivities swift.n");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  std::stringstream ss(r.out);
+  std::string line;
+  std::getline(ss, line);  // header
+  std::getline(ss, line);
+  std::stringstream row(line);
+  std::string name;
+  double value, step, increments, difference, spread;
+  row >> name >> value >> step >> increments >> difference >> spread;
+  EXPECT_EQ(name, "swift.n");
+  EXPECT_DOUBLE_EQ(value, 0.21);
+  EXPECT_EQ(increments, 40);
+  // Measured 1.0e-8 (exact against central differences with h / 4 = 5.25e-6) and a spread of the
+  // central differences of 1.0e-9: the difference is the central differences' error.
+  EXPECT_LT(difference, 1e-6);
+  EXPECT_NE(r.out.find("agree within"), std::string::npos) << r.out;
+}
+
 }  // namespace

@@ -26,8 +26,10 @@ class FeSceneResult : public SceneResult {
   io::Series energies;
   model::ModelEnergies final_energies;
   ForceRipple ripple;  // over one element length (element_size of take)
+  io::Series sensitivities;  // the SensitivityLog's rows; empty without RunControl::sensitivities
 
   const ToolForceHistory* tool_force() const override { return &force; }
+  const io::Series* force_sensitivities() const override { return sensitivities.empty() ? nullptr : &sensitivities; }
 
   // After the run: its outcome (status, message, wall time), the force and energy logs, the
   // force ripple, and warnings when the tool sank deeper into the tool-side surface than its

@@ -3,6 +3,7 @@
 // series and values of the run in memory, with names and units, a JSON view (summary.json) and
 // a one-line report for people (as Ceres's Summary::BriefReport). Files are one consumer of the
 // result; the CLI, sweeps and fits read the typed result (scene_registry.hpp).
+#include "forward/io/series.hpp"
 #include "forward/scenes/common/run_status.hpp"
 
 #include <nlohmann/json.hpp>
@@ -42,6 +43,9 @@ class SceneResult {
   // than by its scene kind (null or empty when the result holds none):
   // the tool force history of an FE run;
   virtual const ToolForceHistory* tool_force() const { return nullptr; }
+  // the tool force's parameter sensitivities after every increment of a run with
+  // RunControl::sensitivities (the rows of sensitivities.csv, sensitivity_log.hpp);
+  virtual const io::Series* force_sensitivities() const { return nullptr; }
   // the section at a named path point (Scene::section_points()), x in {x, x0}, y in {z, thickness},
   // sorted by x; empty too when two nodes share an x (the section folds over);
   virtual ResultCurve path_section(const std::string& /*point*/, const std::string& /*x*/, const std::string& /*y*/) const { return {}; }

@@ -142,10 +142,11 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   const double length = run.setup().load_map.length();
   const ForceLogFormat format = force_format(scene);
   auto& force = run.add_observer(std::make_unique<ForceLog>(format, run.files()));
+  const SensitivityLog* sensitivity = nullptr;
   if (!run.sensitivity_names().empty()) {
     std::vector<std::string> units;
     for (const std::string& n : run.sensitivity_names()) units.push_back(material::find_material_input(n)->info.unit);
-    run.add_observer(std::make_unique<SensitivityLog>(
+    sensitivity = &run.add_observer(std::make_unique<SensitivityLog>(
         run.sensitivity_names(), units, run.sensitivity_values(),
         "# spifit " + scene.kind + " scene " + scene.name + ": derivatives of the force BY the sheet ON the tool with respect to the card's parameters "
         "(direct differentiation), and each scaled by the parameter's value" + (scene.half ? "; half model, mirrored to the full sheet" : ""),
@@ -172,6 +173,7 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   if (const std::string w = path_edge_warning(run.setup().tool_path, scene); !w.empty()) r.warnings.push_back(w);
   r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.setup().mesh));
   r.sections = sections.sections();
+  if (sensitivity) r.sensitivities = sensitivity->table();
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;
 }
