@@ -46,6 +46,10 @@ namespace spifit::material {
 struct ReturnMappingOptions {
   double tolerance = 1e-13;  // |phi| <= tolerance * sigma_F
   int max_iterations = 80;
+  // Jets without a tangent (direct differentiation of FE runs): the implicit derivatives from one
+  // Jet evaluation at the converged multiplier, moved to first order along d/d dl, instead of a
+  // Newton step and a second evaluation. The derivatives agree to the multiplier's residual.
+  bool single_jet_evaluation = false;
 };
 
 template <typename T, int Dim>
@@ -275,6 +279,19 @@ class ReturnMapping {
     T dl = T(v1.eqps - v0.eqps);
     evaluate(s0, sigma_tr, dl, ev);
     if (!ev.valid) return fail(result, "invalid state at the converged plastic multiplier");
+    if (options_.single_jet_evaluation && !general_ && !tangent) {
+      // Every quantity assemble() reads, moved by delta along its derivative in dl: delta's value
+      // is the multiplier's residual (round-off), its derivatives the implicit ones.
+      const T delta = -ev.phi / ev.dphi;
+      dl = dl + delta;
+      ev.xi = ev.xi + ev.dxi * delta;
+      ev.s = ev.s + ev.ds * delta;
+      ev.q = ev.q + ev.dq * delta;
+      ev.k.a = ev.k.a + ev.k.da * delta;
+      ev.k.e = ev.k.e + ev.k.de * delta;
+      ev.k.m = ev.k.m + ev.k.dm * delta;
+      return assemble(s0, sigma_tr, dl, ev, s1, tangent, result);
+    }
     dl = dl - ev.phi / ev.dphi;
     evaluate(s0, sigma_tr, dl, ev);
     if (!ev.valid) return fail(result, "invalid state at the converged plastic multiplier");

@@ -220,7 +220,9 @@ void ShellFamily::load_state(io::BinaryReader& r) {
 }
 
 void ShellFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law) {
-  sensitivity_law_ = std::make_unique<element::SensLaw>(law);
+  material::ReturnMappingOptions o;
+  o.single_jet_evaluation = true;
+  sensitivity_law_ = std::make_unique<element::SensLaw>(law, o);
   for (auto& el : elements_) el.enable_sensitivities();
 }
 

@@ -77,5 +77,40 @@ TEST_P(JetDerivatives, TensileCurveMatchesCentralDifferences) {
   }
 }
 
+// The DDM's single Jet evaluation (ReturnMappingOptions::single_jet_evaluation) against the
+// Newton step and second evaluation: the same derivatives of the whole state, to round-off.
+TEST_P(JetDerivatives, SingleEvaluationGivesTheSameDerivatives) {
+  const auto card = test::card(GetParam());
+  const material::ReturnMapping<double, 3> law(card.params);
+  material::MaterialState<double, 3> s0, s1;
+  ASSERT_TRUE(law.integrate(s0, Eigen::Vector3d(0.004, -0.001, 0.002), s1, nullptr).ok());  // plastic: a back-stress to start from
+  material::ReturnMappingOptions single;
+  single.single_jet_evaluation = true;
+  const material::ReturnMapping<Jet, 3> two(seeded(card.params)), one(seeded(card.params), single);
+  material::MaterialState<Jet, 3> j0, a, b;
+  for (int i = 0; i < 3; ++i) {
+    j0.stress(i) = Jet(s1.stress(i));
+    j0.plastic_strain(i) = Jet(s1.plastic_strain(i));
+    j0.back_stress(i) = Jet(s1.back_stress(i));
+  }
+  j0.back_stress_zz = Jet(s1.back_stress_zz);
+  j0.eqps = Jet(s1.eqps);
+  const Eigen::Matrix<Jet, 3, 1> d_eps(Jet(-0.002), Jet(0.003), Jet(0.001));
+  const auto ra = two.integrate(j0, d_eps, a, nullptr), rb = one.integrate(j0, d_eps, b, nullptr);
+  ASSERT_TRUE(ra.ok() && rb.ok() && ra.plastic);
+  auto close = [](const Jet& x, const Jet& y) {
+    const double scale = std::max(1.0, x.v.cwiseAbs().maxCoeff());
+    EXPECT_LT((x.v - y.v).cwiseAbs().maxCoeff(), 1e-10 * scale) << x.v.transpose() << " | " << y.v.transpose();
+  };
+  for (int i = 0; i < 3; ++i) {
+    close(a.stress(i), b.stress(i));
+    close(a.back_stress(i), b.back_stress(i));
+    close(a.plastic_strain(i), b.plastic_strain(i));
+  }
+  close(a.eqps, b.eqps);
+  close(a.back_stress_zz, b.back_stress_zz);
+  EXPECT_GT(a.eqps.v.cwiseAbs().maxCoeff(), 1e-6);  // the derivatives are not zero
+}
+
 INSTANTIATE_TEST_SUITE_P(Cards, JetDerivatives,
                          ::testing::Values("aa3003o_c3c4", "aa3003o_c7_af_shell", "aa3003o_c8_ziegler_shell"));
