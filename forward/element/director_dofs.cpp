@@ -64,6 +64,14 @@ void director_to_dofs(const NodeVectors& d, const Vec24& rp, const Mat24* kp, Ve
   }
 }
 
+SensDofs director_variable_derivatives(const NodeVectors& d, const SensDofs& du) {
+  SensDofs dp = du;
+  for (int I = 0; I < 4; ++I)
+    for (int k = 0; k < material::kSensitivitySlots; ++k)
+      dp.block<3, 1>(6 * I + 3, k) = Eigen::Vector3d(du.block<3, 1>(6 * I + 3, k)).cross(d[static_cast<std::size_t>(I)]);
+  return dp;
+}
+
 ElementStatus dof_results(const NodeVectors& d, const Vec24& rp, const Mat24* kp, bool symmetric, double drilling_factor, double area,
                           Vec24* residual, Mat24* tangent) {
   Vec24 ru;

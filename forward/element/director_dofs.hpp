@@ -9,6 +9,10 @@ namespace spifit::element {
 // The node blocks (J, I), J > I, of a symmetric 24 x 24 matrix from its blocks (I, J).
 void mirror_upper_blocks(Mat24& k);
 
+// Derivatives of the DOFs (translations, rotation increments about x, y, z; a column per
+// sensitivity slot) as derivatives of the positions and directors: dd_I = dpsi_I x d_I.
+SensDofs director_variable_derivatives(const NodeVectors& d, const SensDofs& du);
+
 // The element's residual and tangent on its DOFs from their derivatives rp and kp (kp null:
 // the residual alone) with respect to the positions and directors (director_to_dofs), the
 // drilling stiffness added; a failure if the forces are not finite.

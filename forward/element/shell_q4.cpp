@@ -68,6 +68,26 @@ Vec6 centre_strains(const Point& pc, const NodeVectors& x, const NodeVectors& d,
   return out;
 }
 
+// One Gauss point at the nodes x, d: its in-plane shear point ps (the centre with
+// centre_membrane_shear), kinematics, strains and the tying points' interpolation weights c.
+template <class Point>
+struct PointStrains {
+  const Point& pg;
+  const Point& ps;
+  PointKinematics k;
+  Vec3 e, kappa;
+  double c[4];
+};
+
+template <class Point>
+PointStrains<Point> point_strains(const Point& pg, const Point& centre, bool centre_shear, const NodeVectors& x, const NodeVectors& d) {
+  const Point& ps = centre_shear ? centre : pg;
+  PointStrains<Point> s{pg, ps, point_kinematics(pg.dN, ps.dN, centre_shear, x, d), Vec3(), Vec3(),
+                        {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)}};
+  shell_strains(pg, ps, s.k, s.e, s.kappa);
+  return s;
+}
+
 ElementStatus point_failure(int point, const SectionStatus& ss) {
   ElementStatus status;
   status.ok = false;
@@ -332,14 +352,13 @@ ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24
   const TransverseShear shear = transverse_shear(x, d);
 
   for (std::size_t q = 0; q < 4; ++q) {
-    const PointGeometry& pg = points_[q];
-    // In-plane shear from the centre (or from this point).
-    const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
-    const PointKinematics k = point_kinematics(pg.dN, ps.dN, options_.centre_membrane_shear, x, d);
-    Vec3 e, kappa;
-    shell_strains(pg, ps, k, e, kappa);
-    // Interpolation weights of the tying points at this Gauss point.
-    const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
+    // In-plane shear from the centre (or from this point); c: the tying points' weights here.
+    const auto p = point_strains(points_[q], centre_, options_.centre_membrane_shear, x, d);
+    const PointGeometry& pg = p.pg;
+    const PointGeometry& ps = p.ps;
+    const PointKinematics& k = p.k;
+    const Vec3 &e = p.e, &kappa = p.kappa;
+    const double(&c)[4] = p.c;
     const Eigen::Vector2d& gamma = shear.gamma[q];
 
     // The layers work in the material frame: e_m = Q e, (N, M) = Q^T (N_m, M_m).
@@ -431,27 +450,17 @@ void ShellQ4::enable_sensitivities() {
 ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load) {
   using material::kSensitivitySlots;
   using Slots = Eigen::Matrix<double, 6, kSensitivitySlots>;
-  // The DOFs' derivatives in the p-variables: dd_I = dpsi_I x d_I.
-  SensDofs dp = SensDofs::Zero();
-  if (du) {
-    dp = *du;
-    for (int I = 0; I < 4; ++I)
-      for (int k = 0; k < kSensitivitySlots; ++k)
-        dp.block<3, 1>(6 * I + 3, k) = Eigen::Vector3d(du->block<3, 1>(6 * I + 3, k)).cross(d[static_cast<std::size_t>(I)]);
-  }
+  const SensDofs dp = du ? director_variable_derivatives(d, *du) : SensDofs::Zero();
   const auto& lp = law.params();
   const material::SensitivityRow dks = options_.shear_factor * h0_ * material::derivatives_of(lp.E / (2.0 * (1.0 + lp.nu)));
   const TransverseShear shear = transverse_shear(x, d);
   SensDofs rp = SensDofs::Zero();
   for (std::size_t q = 0; q < 4; ++q) {
-    const PointGeometry& pg = points_[q];
-    const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
-    const PointKinematics k = point_kinematics(pg.dN, ps.dN, options_.centre_membrane_shear, x, d);
-    Vec3 e, kappa;
-    shell_strains(pg, ps, k, e, kappa);
-    const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
+    const auto p = point_strains(points_[q], centre_, options_.centre_membrane_shear, x, d);
+    const PointGeometry& pg = p.pg;
+    const Vec3 &e = p.e, &kappa = p.kappa;
     Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
-    strain_operator(pg, ps, tying_, k, c, shear.a_t, shear.d_t, B);
+    strain_operator(pg, p.ps, tying_, p.k, p.c, shear.a_t, shear.d_t, B);
     const Slots ds = B.topRows<6>() * dp;  // d (e, kappa) / d p, element frame
     Vec3S em, km;
     const Vec3 emv = pg.Q * e, kmv = pg.Q * kappa;

@@ -109,6 +109,22 @@ double ShellFamily::element_thickness(int e) const {
   return h / el.points();
 }
 
+namespace {
+
+// An element's failure as the solver reports it: where (element, in-plane point, layer) and why.
+solver::ElementEvaluation element_failure(int e, const element::ElementStatus& s) {
+  solver::ElementEvaluation out;
+  out.ok = false;
+  out.reason = s.reason;
+  out.suggested_scale = s.suggested_scale;
+  out.where = "element " + std::to_string(e);
+  if (s.point >= 0) out.where += ", in-plane point " + std::to_string(s.point);
+  if (s.layer >= 0) out.where += ", layer " + std::to_string(s.layer);
+  return out;
+}
+
+}  // namespace
+
 solver::ElementEvaluation ShellFamily::evaluate(int e, const ElementInputs& in, Eigen::VectorXd* re, Eigen::MatrixXd* ke) {
   const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
   element::NodeVectors x, d;
@@ -117,15 +133,7 @@ solver::ElementEvaluation ShellFamily::evaluate(int e, const ElementInputs& in, 
   element::Mat24 k;
   const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].compute(x, d, &r, ke ? &k : nullptr);
   solver::ElementEvaluation out;
-  if (!s.ok) {
-    out.ok = false;
-    out.reason = s.reason;
-    out.suggested_scale = s.suggested_scale;
-    out.where = "element " + std::to_string(e);
-    if (s.point >= 0) out.where += ", in-plane point " + std::to_string(s.point);
-    if (s.layer >= 0) out.where += ", layer " + std::to_string(s.layer);
-    return out;
-  }
+  if (!s.ok) return element_failure(e, s);
   if (!in.contributions.empty()) {
     // The contributions add in the p-variables (positions and directors), turned into nodal
     // forces and moments once.
@@ -262,13 +270,7 @@ solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInpu
   corner_vectors(q, in.x, in.d, &x, &d);
   element::SensDofs l;
   const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, nullptr, &l);
-  solver::ElementEvaluation out;
-  if (!s.ok) {
-    out.ok = false;
-    out.reason = s.reason;
-    out.where = "element " + std::to_string(e) + ", in-plane point " + std::to_string(s.point) + ", layer " + std::to_string(s.layer);
-    return out;
-  }
+  if (!s.ok) return element_failure(e, s);
   ContributionTerms t;
   if (contribution_terms(e, in, x, d, &t)) {
     element::Vec24 ru;
@@ -276,7 +278,7 @@ solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInpu
     l.noalias() += ru * offset_sensitivity(e);
   }
   *load = l;
-  return out;
+  return {};
 }
 
 solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
@@ -286,28 +288,18 @@ solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const Element
   corner_vectors(q, in.x, in.d, &x, &d);
   const element::SensDofs dus = du;
   const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, &dus, nullptr);
-  solver::ElementEvaluation out;
-  if (!s.ok) {
-    out.ok = false;
-    out.reason = s.reason;
-    out.where = "element " + std::to_string(e) + ", in-plane point " + std::to_string(s.point) + ", layer " + std::to_string(s.layer);
-    return out;
-  }
+  if (!s.ok) return element_failure(e, s);
   ContributionTerms t;
   if (contribution_force && contribution_terms(e, in, x, d, &t)) {
-    // d rc / d p = kc dp/dp + d rc / d o d o / d p, with the p-variables' derivatives
-    // dd_I = dpsi_I x d_I; the force on the element's nodes is the sum of rc's position rows.
-    element::SensDofs dp = dus;
-    for (int I = 0; I < 4; ++I)
-      for (int k = 0; k < material::kSensitivitySlots; ++k)
-        dp.block<3, 1>(6 * I + 3, k) = Eigen::Vector3d(dus.block<3, 1>(6 * I + 3, k)).cross(d[static_cast<std::size_t>(I)]);
-    const element::SensDofs drc = t.kc * dp + t.drc_doffset * offset_sensitivity(e);
+    // d rc / d p = kc (the p-variables' derivatives) + d rc / d o d o / d p; the force on the
+    // element's nodes is the sum of rc's position rows.
+    const element::SensDofs drc = t.kc * element::director_variable_derivatives(d, dus) + t.drc_doffset * offset_sensitivity(e);
     contribution_force->setZero();
     for (int I = 0; I < 4; ++I) *contribution_force += drc.middleRows<3>(6 * I);
   } else if (contribution_force) {
     contribution_force->setZero();
   }
-  return out;
+  return {};
 }
 
 }  // namespace spifit::model

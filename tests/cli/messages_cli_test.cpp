@@ -71,7 +71,7 @@ TEST(MessagesCli, SynthSaysWhatTheSceneLacks) {
 TEST(MessagesCli, AnUnknownSubcommandIsNamed) {
   auto r = run_spifit("foo");
   EXPECT_EQ(r.code, 2);
-  EXPECT_EQ(r.err, "spifit: unknown subcommand foo (subcommands: lankford, material, run, fit, sweep, report, status, scan, inputs, synth) (see --help)\n");
+  EXPECT_EQ(r.err, "spifit: unknown subcommand foo (subcommands: lankford, material, run, check-sensitivities, fit, sweep, report, status, scan, inputs, synth) (see --help)\n");
   r = run_spifit("-q --threads 2 foo --out x");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("unknown subcommand foo"), std::string::npos) << r.err;
