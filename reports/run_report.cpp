@@ -60,7 +60,7 @@ std::string force_text(const json& j) {
 // What the report shows of one run, and the plots it rendered.
 struct RunContent {
   json summary;
-  OutputTable force, energies, contours, cone_sections;
+  OutputTable force, energies, contours, cone_sections, sensitivities;
   std::vector<std::pair<std::string, OutputTable>> sections;  // forming: path point, section
   std::vector<std::pair<std::string, std::string>> figures;   // image, caption
 };
@@ -149,6 +149,23 @@ PlotSpec cone_depth_plot(const RunContent& c) {
                           {{"centre_depth", "centre depth"}, {"min_thickness", "thinnest wall"}});
 }
 
+// The scaled sensitivities of Fz (sensitivities.csv: "P*dFz/d(P)" per parameter P) along the
+// travel of force.csv's rows (the two files have a row per increment each).
+PlotSpec sensitivity_plot(const RunContent& c) {
+  PlotSpec p = titled("run_sensitivities", "Scaled sensitivities of Fz: P dFz/dP", "tool travel [mm]", "P dFz/dP [N]");
+  std::vector<double> x = travel(c);
+  x.resize(std::min(x.size(), c.sensitivities.rows()));
+  const std::string marker = "*dFz/d(";
+  for (const std::string& name : c.sensitivities.names) {
+    const auto at = name.find(marker);
+    if (at == std::string::npos) continue;
+    std::vector<double> y = c.sensitivities.column(name);
+    y.resize(x.size());
+    p.series.push_back({name.substr(0, at), x, y, Series::Style::line, ""});
+  }
+  return p;
+}
+
 PlotSpec energy_plot(const RunContent& c) {
   PlotSpec p = titled("run_energies", "Energy account", "tool travel [mm]", "energy [N mm]");
   const std::vector<double> x = c.energies.column("travel");
@@ -185,6 +202,7 @@ void read_tables(const fs::path& dir, RunContent& c, std::vector<std::string>* w
   optional_table("energies.csv", &c.energies);
   optional_table("contours.csv", &c.contours);
   optional_table("sections.csv", &c.cone_sections);
+  optional_table("sensitivities.csv", &c.sensitivities);
   std::error_code ec;
   // An axisymmetric run's sections/ holds its radial sections after each contour (sections.csv
   // lists them); the sections at named path points are the others'.
@@ -218,6 +236,9 @@ void render_plots(const fs::path& dir, const ReportOptions& options, RunContent&
     add(section_plot(c, "z", "z", "run_section_shape"), "Sections at the named path points: shape");
     add(section_plot(c, "thickness", "thickness", "run_section_thickness"), "Sections at the named path points: thickness");
   }
+  if (c.sensitivities.rows() > 0 && c.force.rows() > 0)
+    add(sensitivity_plot(c), "Sensitivities of Fz to the card's parameters (direct differentiation), each scaled by the parameter's value: "
+                             "the change of Fz a 100 % change of the parameter would make, to first order (sensitivities.csv)");
   if (c.energies.rows() > 0) add(energy_plot(c), "Energy account (balance error: external work minus the stored and dissipated parts)");
   if (c.force.has("iterations"))
     add(iterations_plot(c), explicit_run(c) ? "Time steps of each output interval" : "Newton iterations of each increment");

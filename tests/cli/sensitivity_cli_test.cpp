@@ -50,6 +50,7 @@ TEST(SensitivityCli, IndentWritesDerivativesBesideUnchangedForces) {
   // by direct differentiation (checked against central differences in shell_model_sensitivity_test).
   EXPECT_NEAR(std::stod(last[7]), 282.82, 0.01);
   EXPECT_NEAR(std::stod(last[4]) * 180.0, std::stod(last[7]), 1e-9 * std::stod(last[7]));  // K = 180 MPa (card C.4)
+  EXPECT_TRUE(fs::exists(out / "plots" / "run_sensitivities.svg"));  // the run report's plot
   fs::remove_all(out);
 }
 
