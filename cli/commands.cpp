@@ -1,6 +1,5 @@
 #include "cli/commands.hpp"
 
-#include "forward/material/sensitivity_seeds.hpp"
 #include "cli/cli_errors.hpp"
 #include "cli/progress_meter.hpp"
 #include "cli/run_signals.hpp"
@@ -153,7 +152,7 @@ void refuse_sensitivities_early(const scene::Scene& scene, const scene::SceneKin
     throw io::InputError(scene.file(), "contact.friction", io::format_number(mu),
                          "--sensitivities: friction has no parameter sensitivities yet (set it to 0)");
   try {
-    (void)material::sensitivity_seeds(scene.card()->params, names);
+    (void)material::sensitivity_seeds(scene.card()->params, scene::card_sensitivity_names(names));
   } catch (const std::invalid_argument& e) {
     throw io::InputError(scene.file(), "--sensitivities", joined, e.what());
   }
@@ -171,8 +170,8 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   auto* force = cmd->add_flag("--force", o->force, "replace an existing output directory");
   auto* resume = cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
   cmd->add_option("--sensitivities", o->sensitivities,
-                  "material parameters, comma-separated (e.g. swift.K,elastic.E): write the tool force's exact derivatives with respect to "
-                  "them to DIR/sensitivities.csv (implicit indent, indent_line and line scenes)")
+                  "material parameters and contact.penalty, comma-separated (e.g. swift.K,elastic.E): write the tool force's exact derivatives "
+                  "with respect to them to DIR/sensitivities.csv (implicit indent, indent_line and line scenes)")
       ->delimiter(',')
       ->excludes(resume);
   cmd->callback([o, &g, &exit_code] {
@@ -228,7 +227,7 @@ void add_check_sensitivities_command(CLI::App& app, const GlobalOptions& g, int&
                                  "Compare a scene's exact tool-force derivatives (run --sensitivities) with central differences of whole runs "
                                  "(steps h and h/4); exit 1 when one lies outside the central differences' own spread");
   cmd->add_option("SCENE", o->scene, "scene file (TOML): an implicit indent, indent_line or line scene")->required();
-  cmd->add_option("--sensitivities", o->names, "material parameters, comma-separated (e.g. swift.K,elastic.E)")->delimiter(',')->required();
+  cmd->add_option("--sensitivities", o->names, "material parameters and contact.penalty, comma-separated (e.g. swift.K,elastic.E)")->delimiter(',')->required();
   cmd->add_option("--relative-step", o->relative_step, "h as a fraction of each parameter's value (default 1e-4)")->check(CLI::Range(1e-12, 0.1));
   cmd->callback([o, &g, &exit_code] {
     const auto scene = scene::read_scene(o->scene);

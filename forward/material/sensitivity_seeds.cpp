@@ -14,6 +14,7 @@ std::vector<FieldSeed> sensitivity_seeds(const MaterialParams<double>& card, con
   std::vector<FieldSeed> seeds;
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string& name = names[k];
+    if (name.empty()) continue;
     if (std::find(names.begin(), names.begin() + static_cast<std::ptrdiff_t>(k), name) != names.begin() + static_cast<std::ptrdiff_t>(k))
       throw std::invalid_argument(name + " is named twice");
     const MaterialInput* in = find_material_input(name);

@@ -11,7 +11,8 @@
 
 namespace spifit::material {
 
-// The seeds of `names` in that order; std::invalid_argument with the reason for an unknown name,
+// The seeds of `names` in that order (an empty name keeps its slot for a parameter outside the
+// card, e.g. the contact's penalty); std::invalid_argument with the reason for an unknown name,
 // a parameter the card does not hold, a repeated name, or more than kSensitivitySlots names.
 std::vector<FieldSeed> sensitivity_seeds(const MaterialParams<double>& card, const std::vector<std::string>& names);
 

@@ -47,6 +47,13 @@ class ElementContribution {
   // (docs/design/sensitivities.md); empty when it can: its forces then depend on the parameters
   // only through the nodes and the element's thickness (the offset of the tool-side surface).
   virtual std::string sensitivity_refusal() const { return name() + " has no parameter sensitivities"; }
+  // Adds to d the derivatives of this contribution's forces rp on an element (as add() returned
+  // them, at fixed nodes and thickness) with respect to its own parameters, in their sensitivity
+  // slots; nothing when it has none.
+  virtual void add_own_parameter_derivatives(const element::Vec24& rp, element::SensDofs* d) const {
+    (void)rp;
+    (void)d;
+  }
   // Committing an increment: before_commit sees the model still at its last committed state
   // (positions, element sections), after_commit sees the new one.
   virtual void before_commit(const FeModel& model) = 0;

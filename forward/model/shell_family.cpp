@@ -255,8 +255,17 @@ bool ShellFamily::contribution_terms(int e, const ElementInputs& in, const eleme
   const ElementConfiguration config{x, d, x0, d0, offset};
   t->rc.setZero();
   t->kc.setZero();
+  t->own.setZero();
   bool touched = false;
-  for (auto& c : in.contributions) touched |= c->add(e, config, &t->rc, &t->kc);
+  for (auto& c : in.contributions) {
+    element::Vec24 rc = element::Vec24::Zero();
+    element::Mat24 kc = element::Mat24::Zero();
+    if (!c->add(e, config, &rc, &kc)) continue;
+    touched = true;
+    t->rc += rc;
+    t->kc += kc;
+    c->add_own_parameter_derivatives(rc, &t->own);
+  }
   if (!touched) return false;
   t->drc_doffset.setZero();
   for (int J = 0; J < 4; ++J) t->drc_doffset.noalias() += t->kc.middleCols<3>(6 * J) * d[static_cast<std::size_t>(J)];
@@ -276,6 +285,11 @@ solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInpu
     element::Vec24 ru;
     element::director_to_dofs(d, t.drc_doffset, nullptr, &ru, nullptr);
     l.noalias() += ru * offset_sensitivity(e);
+    for (int k = 0; k < material::kSensitivitySlots; ++k) {
+      if (t.own.col(k).isZero(0.0)) continue;
+      element::director_to_dofs(d, element::Vec24(t.own.col(k)), nullptr, &ru, nullptr);
+      l.col(k) += ru;
+    }
   }
   *load = l;
   return {};
@@ -293,7 +307,7 @@ solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const Element
   if (contribution_force && contribution_terms(e, in, x, d, &t)) {
     // d rc / d p = kc (the p-variables' derivatives) + d rc / d o d o / d p; the force on the
     // element's nodes is the sum of rc's position rows.
-    const element::SensDofs drc = t.kc * element::director_variable_derivatives(d, dus) + t.drc_doffset * offset_sensitivity(e);
+    const element::SensDofs drc = t.kc * element::director_variable_derivatives(d, dus) + t.drc_doffset * offset_sensitivity(e) + t.own;
     contribution_force->setZero();
     for (int I = 0; I < 4; ++I) *contribution_force += drc.middleRows<3>(6 * I);
   } else if (contribution_force) {

@@ -85,10 +85,12 @@ class ShellFamily final : public ElementFamily {
   double max_t_over_l_ = 0.0;
   std::unique_ptr<element::SensLaw> sensitivity_law_;  // the law with derivative slots
   // The contributions' forces on element e (p-variables) and their derivatives with respect to
-  // the p-variables and to the tool-side offset h / 2; false if none touches it.
+  // the p-variables, to the tool-side offset h / 2 and to their own parameters; false if none
+  // touches it.
   struct ContributionTerms {
     element::Vec24 rc, drc_doffset;
     element::Mat24 kc;
+    element::SensDofs own;  // d rc / d (the contributions' own parameters), at fixed nodes
   };
   bool contribution_terms(int e, const ElementInputs& in, const element::NodeVectors& x, const element::NodeVectors& d,
                           ContributionTerms* t) const;

@@ -205,6 +205,10 @@ ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunctio
       std::make_unique<ToolContact>(model.mesh(), model.family().contact_surface(), radius, std::move(path), options, spin_per_load_factor));
 }
 
+void ToolContact::add_own_parameter_derivatives(const element::Vec24& rp, element::SensDofs* d) const {
+  if (penalty_slot_ >= 0) d->col(penalty_slot_) += rp / contact_->options().penalty;
+}
+
 std::string ToolContact::sensitivity_refusal() const {
   const contact::ContactOptions& o = contact_->options();
   if (passive_) return "";

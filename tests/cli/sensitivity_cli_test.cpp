@@ -63,6 +63,7 @@ TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
       {kScenes + "indent.toml", "swift.X", "swift.X is not a material parameter"},
       {kScenes + "indent.toml", "af.CX", "no kinematic hardening"},
       {kScenes + "indent.toml", "swift.K,swift.K", "named twice"},
+      {kScenes + "indent.toml", "contact.penalty,contact.penalty", "contact.penalty is named twice"},
       {kScenes + "tensile_00.toml", "swift.K", "FE scenes only"},
       {kScenes + "cone70_pie45_short.toml", "swift.K", "cone scenes have no parameter sensitivities yet"},
       {friction.string(), "swift.K", "contact.friction = 0.1"},
@@ -82,7 +83,7 @@ TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
 }
 
 TEST(SensitivityCli, CheckerFindsExactAndCentralDifferencesAgreeOnTheIndent) {
-  const Result r = run("-q check-sensitivities " + kScenes + "indent.toml --sensitivities swift.n");
+  const Result r = run("-q check-sensitivities " + kScenes + "indent.toml --sensitivities swift.n,contact.penalty");
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   std::stringstream ss(r.out);
   std::string line;
@@ -97,6 +98,12 @@ TEST(SensitivityCli, CheckerFindsExactAndCentralDifferencesAgreeOnTheIndent) {
   EXPECT_EQ(increments, 40);
   // Measured 1.0e-8 (exact against central differences with h / 4 = 5.25e-6) and a spread of the
   // central differences of 1.0e-9: the difference is the central differences' error.
+  EXPECT_LT(difference, 1e-6);
+  std::getline(ss, line);  // the penalty: measured 2.5e-7 against a spread of 2.4e-8
+  std::stringstream penalty(line);
+  penalty >> name >> value >> step >> increments >> difference >> spread;
+  EXPECT_EQ(name, "contact.penalty");
+  EXPECT_DOUBLE_EQ(value, 1000.0);
   EXPECT_LT(difference, 1e-6);
   EXPECT_NE(r.out.find("agree within"), std::string::npos) << r.out;
 }

@@ -38,6 +38,18 @@ FeRun::FeRun(FeRunSetup setup, RunFiles files, RunControl control)
   if (!control_.sensitivities.empty()) enable_sensitivities();
 }
 
+std::vector<std::string> card_sensitivity_names(const std::vector<std::string>& names) {
+  std::vector<std::string> out = names;
+  int penalties = 0;
+  for (std::string& n : out)
+    if (n == kPenaltySensitivity) {
+      n.clear();
+      ++penalties;
+    }
+  if (penalties > 1) throw std::invalid_argument(std::string(kPenaltySensitivity) + " is named twice");
+  return out;
+}
+
 // Refusals name the scene file, the option and its value.
 void FeRun::enable_sensitivities() {
   std::string file, names;
@@ -48,7 +60,9 @@ void FeRun::enable_sensitivities() {
   if (setup_.explicit_scheme) refuse("the explicit scheme has no exact sensitivities; run the implicit scheme, or differentiate by central differences (a sweep)");
   if (control_.resume) refuse("a run with sensitivities cannot be resumed (checkpoints do not hold the state's derivatives)");
   try {
-    const std::vector<material::FieldSeed> seeds = material::sensitivity_seeds(setup_.material, control_.sensitivities);
+    const std::vector<material::FieldSeed> seeds = material::sensitivity_seeds(setup_.material, card_sensitivity_names(control_.sensitivities));
+    for (std::size_t k = 0; k < control_.sensitivities.size(); ++k)
+      if (control_.sensitivities[k] == kPenaltySensitivity) tool_->set_penalty_sensitivity(static_cast<int>(k));
     model_->enable_sensitivities(seeds, static_cast<int>(control_.sensitivities.size()), setup_.material);
   } catch (const std::invalid_argument& e) {
     refuse(e.what());
@@ -58,7 +72,7 @@ void FeRun::enable_sensitivities() {
 std::vector<double> FeRun::sensitivity_values() const {
   std::vector<double> v;
   for (const std::string& n : control_.sensitivities)
-    v.push_back(material::material_field(setup_.material, material::find_material_input(n)->field));
+    v.push_back(n == kPenaltySensitivity ? setup_.contact.penalty : material::material_field(setup_.material, material::find_material_input(n)->field));
   return v;
 }
 

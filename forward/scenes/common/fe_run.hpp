@@ -75,6 +75,13 @@ struct FeRunSetup {
   bool progress_every_increment = false;  // a progress line per increment (else marks only)
 };
 
+// Besides the card's parameters, a run differentiates with respect to the tool contact's penalty
+// K_p under this name (RunControl::sensitivities).
+inline constexpr const char* kPenaltySensitivity = "contact.penalty";
+// The names with kPenaltySensitivity blanked: what material::sensitivity_seeds takes;
+// std::invalid_argument when it is named twice.
+std::vector<std::string> card_sensitivity_names(const std::vector<std::string>& names);
+
 struct RunControl {
   ProgressSink progress;  // may be empty
   // Continue from DIR/checkpoint/state.bin: the outputs written after the checkpoint are
@@ -94,8 +101,9 @@ struct RunControl {
   const std::atomic<int>* interrupt = nullptr;
   // Seconds between heartbeats of the running summary.json (run_heartbeat.hpp).
   double heartbeat_seconds = kHeartbeatSeconds;
-  // Material parameters ("swift.K") to differentiate the run with respect to, by direct
-  // differentiation (docs/design/sensitivities.md): implicit runs only, not resumed.
+  // Material parameters ("swift.K") and kPenaltySensitivity to differentiate the run with
+  // respect to, by direct differentiation (docs/design/sensitivities.md): implicit runs only, not
+  // resumed.
   std::vector<std::string> sensitivities;
 };
 

@@ -8,7 +8,8 @@ namespace {
 std::vector<io::Column> columns(const std::vector<std::string>& names, const std::vector<std::string>& units) {
   std::vector<io::Column> c{{"time", "s"}, {"lambda", ""}};
   for (std::size_t k = 0; k < names.size(); ++k) {
-    const std::string per = units[k].empty() ? "N" : "N/" + units[k];
+    const std::string& u = units[k];
+    const std::string per = u.empty() ? "N" : u.find('/') != std::string::npos ? "N/(" + u + ")" : "N/" + u;
     for (const char* f : {"Fx", "Fy", "Fz"}) c.push_back({"d" + std::string(f) + "/d(" + names[k] + ")", per});
     for (const char* f : {"Fx", "Fy", "Fz"}) c.push_back({names[k] + "*d" + std::string(f) + "/d(" + names[k] + ")", "N"});
   }

@@ -21,7 +21,7 @@ namespace {
 using material::FieldSeed;
 using material::SensitivityRow;
 
-constexpr int kCount = 4;  // swift.K, swift.n, E, hill.G (with H = 2 - G)
+constexpr int kCount = 5;  // swift.K, swift.n, E, hill.G (with H = 2 - G), the contact penalty
 
 SensitivityRow unit(int k) {
   SensitivityRow r = SensitivityRow::Zero();
@@ -47,7 +47,7 @@ struct IndentRun {
 };
 
 // A clamped 10 x 10 x 0.5 mm sheet indented 1.2 mm by an R 3 tool in ten equal increments.
-IndentRun indent(const material::MaterialParams<double>& p, bool sensitivities) {
+IndentRun indent(const material::MaterialParams<double>& p, bool sensitivities, double penalty = 1000.0) {
   mesh::SquareSheetOptions so;
   so.length_x = so.length_y = 10.0;
   so.nx = so.ny = 8;
@@ -56,14 +56,17 @@ IndentRun indent(const material::MaterialParams<double>& p, bool sensitivities) 
   mo.shell.thickness_points = 3;
   ShellModel model(mesh, 0.5, p, mo);
   contact::ContactOptions co;
-  co.penalty = 1000.0;
+  co.penalty = penalty;
   const double R = 3.0;
   ToolContact& tool = attach_tool(model, R, [=](double lambda) { return Eigen::Vector3d(0.3, -0.2, 0.25 + R - 1.2 * lambda); }, co);
   solver::DofConstraints c(model.num_dofs());
   for (int n : mesh.node_sets.at("boundary"))
     for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
   c.finalize();
-  if (sensitivities) model.enable_sensitivities(seeds(), kCount, p);
+  if (sensitivities) {
+    tool.set_penalty_sensitivity(4);
+    model.enable_sensitivities(seeds(), kCount, p);
+  }
   solver::NewtonOptions o;
   o.initial_increment = o.max_increment = o.min_increment = 0.1;
   o.force_tolerance = o.displacement_tolerance = 1e-11;
@@ -86,22 +89,28 @@ TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
   const IndentRun plain = indent(p, false);
   for (std::size_t n = 0; n < ddm.force.size(); ++n) EXPECT_EQ(ddm.force[n], plain.force[n]) << "increment " << n;
   const std::vector<FieldSeed> sd = seeds();
-  const char* names[kCount] = {"swift.K", "swift.n", "elastic.E", "hill.G"};
+  const char* names[kCount] = {"swift.K", "swift.n", "elastic.E", "hill.G", "contact.penalty"};
   // Steps small enough that no contact point or layer switches state between the runs + h
   // and - h: with steps 64 times larger, central differences straddle such switches and lie up
   // to 3e-4 (relative) off, and they converge to the exact values as the steps shrink.
-  const double steps[kCount] = {1.0 / 64.0, 2e-3 / 64.0, 100.0 / 64.0, 2e-3 / 64.0};
+  const double steps[kCount] = {1.0 / 64.0, 2e-3 / 64.0, 100.0 / 64.0, 2e-3 / 64.0, 1000.0 / 6400.0};
   for (int k = 0; k < kCount; ++k) {
     std::vector<Eigen::Vector3d> cd(10), cd4(10);
     for (double step : {steps[k], steps[k] / 4.0}) {
       material::MaterialParams<double> pp = p, pm = p;
-      material::set_material_input(pp, input(names[k]), material::material_field(p, input(names[k]).field) + step);
-      material::set_material_input(pm, input(names[k]), material::material_field(p, input(names[k]).field) - step);
+      double kp = 1000.0, km = 1000.0;
+      if (k == 4) {
+        kp += step;
+        km -= step;
+      } else {
+        material::set_material_input(pp, input(names[k]), material::material_field(p, input(names[k]).field) + step);
+        material::set_material_input(pm, input(names[k]), material::material_field(p, input(names[k]).field) - step);
+      }
       if (k == 3) {
         pp.H = 2.0 - pp.G;
         pm.H = 2.0 - pm.G;
       }
-      const IndentRun rp = indent(pp, false), rm = indent(pm, false);
+      const IndentRun rp = indent(pp, false, kp), rm = indent(pm, false, km);
       for (std::size_t n = 0; n < 10; ++n) (step == steps[k] ? cd : cd4)[n] = (rp.force[n] - rm.force[n]) / (2.0 * step);
     }
     std::vector<Eigen::Vector3d> exact;
