@@ -447,7 +447,7 @@ void ShellQ4::enable_sensitivities() {
   for (auto& s : sections_) s.enable_sensitivities();
 }
 
-ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load) {
+ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load, int count) {
   using material::kSensitivitySlots;
   using Slots = Eigen::Matrix<double, 6, kSensitivitySlots>;
   const SensDofs dp = du ? director_variable_derivatives(d, *du) : SensDofs::Zero();
@@ -469,8 +469,17 @@ ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d,
       km(i) = material::with_derivatives(kmv(i), (pg.Q.row(i) * ds.bottomRows<3>()));
     }
     Vec6S s6m;
-    const SectionStatus ss = sections_[q].update_sensitivities(law, em, km, &s6m);
-    if (!ss.ok) return point_failure(static_cast<int>(q), ss);
+    ShellSection& section = sections_[q];
+    if (!du && count + 3 <= kSensitivitySlots) {
+      const SectionStatus ss = section.pseudo_resultants(law, emv, kmv, count, &s6m);
+      if (!ss.ok) return point_failure(static_cast<int>(q), ss);
+    } else if (du && !load && section.linearised()) {
+      section.advance_sensitivities(em, km);
+      continue;
+    } else {
+      const SectionStatus ss = section.update_sensitivities(law, em, km, &s6m);
+      if (!ss.ok) return point_failure(static_cast<int>(q), ss);
+    }
     if (!load) continue;
     Slots dsm;
     for (int i = 0; i < 6; ++i) dsm.row(i) = material::derivatives_of(s6m(i));

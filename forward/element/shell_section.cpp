@@ -95,6 +95,58 @@ void ShellSection::enable_sensitivities() {
 }
 
 SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, Vec6S* resultant) {
+  const SectionStatus status = integrate_sensitivities(law, e, kappa, -1, resultant);
+  if (!status.ok) return status;
+  e_sens_ = e;
+  kappa_sens_ = kappa;
+  sens_trial_set_ = true;
+  linear_count_ = -1;
+  return status;
+}
+
+SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant) {
+  if (count < 0 || count + 3 > material::kSensitivitySlots) throw std::logic_error("ShellSection::pseudo_resultants: no room for the strain's slots");
+  const SectionStatus status = integrate_sensitivities(law, e.cast<Sens>(), kappa.cast<Sens>(), count, resultant);
+  sens_trial_set_ = false;  // the linearisation is not a trial state: advance_sensitivities() makes one
+  linear_count_ = status.ok ? count : -1;
+  for (int i = 0; i < 6; ++i) (*resultant)(i).v.tail(material::kSensitivitySlots - count).setZero();
+  return status;
+}
+
+void ShellSection::advance_sensitivities(const Vec3S& e, const Vec3S& kappa) {
+  if (linear_count_ < 0) throw std::logic_error("ShellSection::advance_sensitivities without pseudo_resultants");
+  const auto q = static_cast<Eigen::Index>(linear_count_);
+  for (std::size_t l = 0; l < points_.size(); ++l) {
+    // The strain's derivatives beyond the explicit part the Jets already carry (the lever arm's).
+    const double z = rule_->zeta[l] * 0.5 * h_;
+    Eigen::Matrix<double, 3, material::kSensitivitySlots> de;
+    for (int i = 0; i < 3; ++i) de.row(i) = material::derivatives_of(e(i)) + z * material::derivatives_of(kappa(i));
+    auto advance = [&](Sens& x) {
+      const material::SensitivityRow d = material::derivatives_of(x);
+      material::SensitivityRow out = d;
+      out.segment(q, 3).setZero();
+      for (int i = 0; i < 3; ++i) out += d(q + i) * de.row(i);
+      x.v = out.transpose();
+    };
+    material::MaterialState<Sens, 3>& s = sens_trial_[l].state;
+    for (int i = 0; i < 3; ++i) {
+      advance(s.stress(i));
+      advance(s.plastic_strain(i));
+      advance(s.back_stress(i));
+      advance(sens_trial_[l].eps(i));
+    }
+    advance(s.back_stress_zz);
+    advance(s.eqps);
+    advance(s.plastic_work);
+    advance(s.flow_stress);
+  }
+  e_sens_ = e;
+  kappa_sens_ = kappa;
+  sens_trial_set_ = true;
+  linear_count_ = -1;
+}
+
+SectionStatus ShellSection::integrate_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, int strain_slot, Vec6S* resultant) {
   if (!sensitivities_enabled()) throw std::logic_error("ShellSection::update_sensitivities before enable_sensitivities");
   SectionStatus status;
   resultant->setZero();
@@ -102,7 +154,9 @@ SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S
   for (std::size_t l = 0; l < points_.size(); ++l) {
     const Sens z = (rule_->zeta[l] * 0.5) * h;
     const double w = rule_->weight[l] * 0.5 * h0_;
-    const Vec3S green = e + z * kappa;
+    Vec3S green = e + z * kappa;
+    if (strain_slot >= 0)
+      for (int i = 0; i < 3; ++i) green(i).v(strain_slot + i) += 1.0;
     // eps and d eps / d E with their derivatives by the chain rule through the closed-form first
     // and second derivatives of the logarithm.
     Vec3 gv;
@@ -136,9 +190,6 @@ SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S
     sens_trial_[l].state = s1;
     sens_trial_[l].eps = eps;
   }
-  e_sens_ = e;
-  kappa_sens_ = kappa;
-  sens_trial_set_ = true;
   return status;
 }
 
@@ -147,7 +198,7 @@ SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S
 void ShellSection::commit_sensitivities() {
   if (!sens_trial_set_) throw std::logic_error("a section with sensitivities committed without update_sensitivities");
   using std::sqrt;
-  sens_ = sens_trial_;
+  sens_.swap(sens_trial_);  // the next increment's Jet pass writes every layer's trial derivatives anew
   const Sens c11 = 1.0 + 2.0 * e_sens_(0), c22 = 1.0 + 2.0 * e_sens_(1);
   const Sens det = c11 * c22 - e_sens_(2) * e_sens_(2);
   if (value_of(det) > 0.0) {
@@ -156,7 +207,6 @@ void ShellSection::commit_sensitivities() {
     for (std::size_t l = 0; l < points_.size(); ++l)
       sens_[l].eps = log_strain_of_green(Vec3S(e_sens_ + ((rule_->zeta[l] * 0.5) * h) * kappa_sens_));
   }
-  sens_trial_ = sens_;
   sens_trial_set_ = false;
 }
 
@@ -196,9 +246,9 @@ void ShellSection::revert() {
     tangent_trial_[l] = tangent_[l];
   }
   e_trial_ = e_committed_;
-  if (sensitivities_enabled()) {
-    sens_trial_ = sens_;
+  if (sensitivities_enabled()) {  // the trial derivatives are written anew before a commit uses them
     sens_trial_set_ = false;
+    linear_count_ = -1;
   }
 }
 

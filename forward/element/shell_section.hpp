@@ -83,6 +83,18 @@ class ShellSection {
   // fixed strains; with the strains' derivatives, the layers' trial derivatives follow. The
   // section's double trial state is left as it is.
   SectionStatus update_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, Vec6S* resultant);
+  // The pseudo-resultants (update_sensitivities at constant strains), with `count` parameters in
+  // slots 0 .. count - 1 and each layer linearised in its strain: slots count .. count + 2 carry
+  // the derivatives with respect to the layer's Green-Lagrange strain (count + 3 <=
+  // kSensitivitySlots), so that advance_sensitivities() gives the layers' trial derivatives for
+  // any strain derivatives without integrating again. The resultant's slots from count on are
+  // zero.
+  SectionStatus pseudo_resultants(const SensLaw& law, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant);
+  // After pseudo_resultants() at the same strains: the layers' trial derivatives for strains with
+  // the derivatives of e and kappa (what update_sensitivities(law, e, kappa, ...) gives, to
+  // round-off: the Jet pass is linear in its seeds).
+  void advance_sensitivities(const Vec3S& e, const Vec3S& kappa);
+  bool linearised() const { return linear_count_ >= 0; }
   // Derivatives of the committed thickness, and of a layer's committed state (values unused).
   const material::SensitivityRow& thickness_sensitivity() const { return dh_; }
   const material::MaterialState<Sens, 3>& layer_state_sensitivity(int l) const { return sens_[static_cast<std::size_t>(l)].state; }
@@ -119,7 +131,10 @@ class ShellSection {
   material::SensitivityRow dh_ = material::SensitivityRow::Zero();
   Vec3S e_sens_ = Vec3S::Zero(), kappa_sens_ = Vec3S::Zero();
   bool sens_trial_set_ = false;
+  int linear_count_ = -1;  // >= 0: the trial derivatives hold pseudo_resultants()'s linearisation
   void commit_sensitivities();
+  // update_sensitivities' pass over the layers; strain_slot >= 0 seeds each layer's strain there.
+  SectionStatus integrate_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, int strain_slot, Vec6S* resultant);
 };
 
 }  // namespace spifit::element

@@ -111,7 +111,7 @@ class ElementFamily {
   // derivatives du (same layout), kept by commit(); *contribution_force (if not null) receives
   // the derivative of the sum of the contributions' forces on the element's nodes (rows x, y,
   // z; the residual's sign: the force the sheet exerts on the tool).
-  virtual void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law);
+  virtual void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count);
   virtual solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load);
   virtual solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
                                                          Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force);

@@ -128,6 +128,7 @@ void FeModel::commit(double lambda) {
   d_ = di_;
   family_->commit();
   force_sensitivity_ = force_sensitivity_trial_;
+  position_sensitivity_ = position_sensitivity_trial_;
   for (auto& c : contributions_) c->after_commit(*this);
   increment_.setZero();
   increment_trial_.setZero();
@@ -170,8 +171,8 @@ std::vector<double> FeModel::nodal_thickness() const {
   return h;
 }
 
-void ElementFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law) {
-  (void)law;
+void ElementFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) {
+  (void)law, (void)count;
   throw std::invalid_argument(name() + " elements have no parameter sensitivities yet");
 }
 
@@ -194,9 +195,10 @@ void FeModel::enable_sensitivities(const std::vector<material::FieldSeed>& seeds
     const std::string why = c->sensitivity_refusal();
     if (!why.empty()) throw std::invalid_argument("sensitivities: " + why);
   }
-  family_->enable_sensitivities(material::seeded_params(material, seeds));
+  family_->enable_sensitivities(material::seeded_params(material, seeds), count);
   sensitivity_count_ = count;
   force_sensitivity_ = force_sensitivity_trial_ = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, count);
+  position_sensitivity_ = position_sensitivity_trial_ = Eigen::MatrixXd::Zero(num_dofs_, count);
 }
 
 solver::ElementEvaluation FeModel::sensitivity_load(Eigen::MatrixXd* load) {
@@ -241,6 +243,7 @@ solver::ElementEvaluation FeModel::update_sensitivities(const Eigen::MatrixXd& d
     for (std::size_t a = 0; a < dofs.size(); ++a) due.row(static_cast<Eigen::Index>(a)).head(global.cols()) = global.row(dofs[a]);
     ev[ue] = family_->update_sensitivities(e, in, due, &fe[ue]);
   }
+  position_sensitivity_trial_ = global;
   force_sensitivity_trial_.setZero();
   for (int e = 0; e < ne; ++e) {
     const auto ue = static_cast<std::size_t>(e);

@@ -90,6 +90,12 @@ class FeModel : public solver::NonlinearProblem {
   // Committed derivative of the contributions' total force (rows x, y, z; one column per
   // parameter): with the tool's contact alone, of ToolContact::force(), the force on the tool.
   const Eigen::Matrix<double, 3, Eigen::Dynamic>& contribution_force_sensitivity() const { return force_sensitivity_; }
+  // Committed derivative of node n's position (rows x, y, z; one column per parameter); zero
+  // before the first increment with sensitivities.
+  Eigen::Matrix<double, 3, Eigen::Dynamic> position_sensitivity(int node) const {
+    if (position_sensitivity_.size() == 0) return Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, sensitivity_count_);
+    return position_sensitivity_.middleRows(dof_offset_[static_cast<std::size_t>(node)], 3);
+  }
 
   // Committed results. Directors are those of nodes with rotations (zero at the others).
   Eigen::Vector3d displacement(int node) const { return x_[static_cast<std::size_t>(node)] - mesh_->nodes[static_cast<std::size_t>(node)]; }
@@ -133,6 +139,7 @@ class FeModel : public solver::NonlinearProblem {
   NodalRotationFrames frames_;
   int sensitivity_count_ = 0;
   Eigen::Matrix<double, 3, Eigen::Dynamic> force_sensitivity_, force_sensitivity_trial_;
+  Eigen::MatrixXd position_sensitivity_, position_sensitivity_trial_;  // DOFs x parameters, rotations about x, y, z
 };
 
 }  // namespace spifit::model

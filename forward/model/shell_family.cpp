@@ -227,7 +227,8 @@ void ShellFamily::load_state(io::BinaryReader& r) {
   for (auto& el : elements_) el.load_state(r);
 }
 
-void ShellFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law) {
+void ShellFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) {
+  sensitivity_count_ = count;
   material::ReturnMappingOptions o;
   o.single_jet_evaluation = true;
   sensitivity_law_ = std::make_unique<element::SensLaw>(law, o);
@@ -278,7 +279,7 @@ solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInpu
   element::NodeVectors x, d;
   corner_vectors(q, in.x, in.d, &x, &d);
   element::SensDofs l;
-  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, nullptr, &l);
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, nullptr, &l, sensitivity_count_);
   if (!s.ok) return element_failure(e, s);
   ContributionTerms t;
   if (contribution_terms(e, in, x, d, &t)) {
@@ -301,7 +302,7 @@ solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const Element
   element::NodeVectors x, d;
   corner_vectors(q, in.x, in.d, &x, &d);
   const element::SensDofs dus = du;
-  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, &dus, nullptr);
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, &dus, nullptr, sensitivity_count_);
   if (!s.ok) return element_failure(e, s);
   ContributionTerms t;
   if (contribution_force && contribution_terms(e, in, x, d, &t)) {

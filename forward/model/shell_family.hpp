@@ -62,7 +62,7 @@ class ShellFamily final : public ElementFamily {
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
   // The 2 x 2 element only (the one-point element refuses).
-  void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law) override;
+  void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) override;
   solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load) override;
   solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
                                                  Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
@@ -84,6 +84,7 @@ class ShellFamily final : public ElementFamily {
   std::vector<std::string> warnings_;
   double max_t_over_l_ = 0.0;
   std::unique_ptr<element::SensLaw> sensitivity_law_;  // the law with derivative slots
+  int sensitivity_count_ = 0;                          // the slots in use
   // The contributions' forces on element e (p-variables) and their derivatives with respect to
   // the p-variables, to the tool-side offset h / 2 and to their own parameters; false if none
   // touches it.

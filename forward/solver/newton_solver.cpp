@@ -56,6 +56,7 @@ NewtonSolver::~NewtonSolver() = default;
 
 NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, const Eigen::VectorXd* dg_full) {
   Assembly out;
+  tangent_at_iterate_ = false;
   const auto& dofs = problem_.element_dofs();
   const int ne = static_cast<int>(dofs.size());
   Eigen::VectorXd full = -problem_.external_forces(lambda);
@@ -119,6 +120,7 @@ NewtonSolver::Assembly NewtonSolver::assemble(double lambda, bool with_tangent, 
   }
   out.residual = constraints_.reduce(full);
   out.reaction_norm = reactions.norm();
+  tangent_at_iterate_ = with_tangent;
   return out;
 }
 
@@ -247,7 +249,8 @@ bool NewtonSolver::increment(const Attempt& at, IncrementReport* report, Element
     const Eigen::VectorXd dfree = constraints_.expand(du);
     // An iterate likely to end the increment gets its residual alone (about 440 of 2 550 tangents
     // of line_half were assembled there and never used); the tangent follows if it does not.
-    const bool likely_final = !first && ends_increment_likely(test, *report, du.norm());
+    // (Not with sensitivities: their step needs the tangent at the converged iterate.)
+    const bool likely_final = !first && problem_.sensitivity_count() == 0 && ends_increment_likely(test, *report, du.norm());
     // Step length: halved where an element fails, optionally the energy line search. A
     // stabilised increment's trial residual includes the viscous forces.
     Assembly trial;
@@ -373,10 +376,14 @@ bool NewtonSolver::after_failure(double lambda0, double lambda1, const ElementEv
 }
 
 bool NewtonSolver::sensitivity_step(double lambda1, std::string* message) {
-  const Assembly a = assemble(lambda1, true, nullptr);
-  if (!a.failure.ok) {
-    *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + a.failure.where + ": " + a.failure.reason;
-    return false;
+  // The tangent at the converged iterate: the last assembly's when it had one (a run with
+  // sensitivities assembles it at every iterate), else assembled now.
+  if (!tangent_at_iterate_) {
+    const Assembly a = assemble(lambda1, true, nullptr);
+    if (!a.failure.ok) {
+      *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + a.failure.where + ": " + a.failure.reason;
+      return false;
+    }
   }
   // The exact tangent: UMFPACK unless it is symmetric (CHOLMOD), whatever Newton used.
   const bool symmetric = k_->is_symmetric(1e-10);

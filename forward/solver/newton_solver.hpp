@@ -94,6 +94,7 @@ class NewtonSolver {
   // factor is left as it is), one solve per parameter. false (with the message) on failure.
   bool sensitivity_step(double lambda1, std::string* message);
   std::unique_ptr<LinearSolver> sensitivity_solver_;
+  bool tangent_at_iterate_ = false;  // the last assembly's tangent is k_ (its iterate's)
   bool sensitivity_symmetric_ = false;
   // The increment loop from the stepping state to lambda_end (solve and resume).
   NewtonSummary run(double lambda_end, const IncrementCallback& callback);

@@ -113,5 +113,63 @@ TEST(ShellSectionSensitivity, ResultantsMatchCentralDifferencesAlongAPath) {
   }
 }
 
+// The one Jet pass of a run with few parameters (pseudo_resultants linearises each layer in its
+// strain, advance_sensitivities applies the strains' derivatives) against the two passes of
+// update_sensitivities, along the same path: the same pseudo-resultants and committed
+// derivatives to round-off, since forward differentiation is linear in its seeds.
+TEST(ShellSectionSensitivity, OnePassLinearisationEqualsTwoPasses) {
+  const material::MaterialParams<double> p = test::aa3003_af();
+  const material::ReturnMapping<double, 3> law(p);
+  const SensLaw slaw(material::seeded_params(p, seeds(p)));
+  const ThicknessRule rule = gauss_legendre_rule(5);
+  ShellSection one(law, rule, 1.2), two(law, rule, 1.2);
+  one.enable_sensitivities();
+  two.enable_sensitivities();
+  constexpr int kCount = 5;  // slots 5 .. 7 carry the layers' strains
+  double worst = 0.0;
+  for (const PathPoint& q : path()) {
+    Vec6 r;
+    ASSERT_TRUE(one.update(q.e, q.kappa, &r, nullptr).ok);
+    ASSERT_TRUE(two.update(q.e, q.kappa, &r, nullptr).ok);
+    Vec6S a, b;
+    ASSERT_TRUE(one.pseudo_resultants(slaw, q.e, q.kappa, kCount, &a).ok);
+    EXPECT_TRUE(one.linearised());
+    ASSERT_TRUE(two.update_sensitivities(slaw, q.e.cast<Sens>(), q.kappa.cast<Sens>(), &b).ok);
+    for (int i = 0; i < 6; ++i) {
+      EXPECT_TRUE(a(i).v.tail<3>().isZero(0.0));  // the strain's slots are not handed on
+      for (int k = 0; k < kCount; ++k) worst = std::max(worst, std::abs(a(i).v(k) - b(i).v(k)) / (1.0 + std::abs(b(i).v(k))));
+    }
+    Vec3S e, kappa;
+    for (int i = 0; i < 3; ++i) {
+      SensitivityRow de = SensitivityRow::Zero(), dk = SensitivityRow::Zero();
+      de(4) = q.de(i);
+      dk(4) = q.dkappa(i);
+      de(0) = 0.001 * q.de(i);  // a parameter that moves both the law and the strains
+      e(i) = material::with_derivatives(q.e(i), de);
+      kappa(i) = material::with_derivatives(q.kappa(i), dk);
+    }
+    one.advance_sensitivities(e, kappa);
+    EXPECT_FALSE(one.linearised());
+    ASSERT_TRUE(two.update_sensitivities(slaw, e, kappa, &b).ok);
+    one.commit();
+    two.commit();
+    EXPECT_NEAR(one.thickness_sensitivity()(4), two.thickness_sensitivity()(4), 1e-12);
+    for (int l = 0; l < one.layers(); ++l) {
+      const auto &x = one.layer_state_sensitivity(l), &y = two.layer_state_sensitivity(l);
+      for (int k = 0; k < kCount; ++k) {
+        for (int i = 0; i < 3; ++i) {
+          worst = std::max(worst, std::abs(x.stress(i).v(k) - y.stress(i).v(k)) / (1.0 + std::abs(y.stress(i).v(k))));
+          worst = std::max(worst, std::abs(x.back_stress(i).v(k) - y.back_stress(i).v(k)) / (1.0 + std::abs(y.back_stress(i).v(k))));
+        }
+        worst = std::max(worst, std::abs(x.eqps.v(k) - y.eqps.v(k)) / (1.0 + std::abs(y.eqps.v(k))));
+      }
+    }
+  }
+  std::printf("one pass against two: largest relative difference %.2e\n", worst);
+  EXPECT_LT(worst, 1e-11);
+  EXPECT_GT(one.layer_state(4).eqps, 0.01);
+  EXPECT_THROW(one.advance_sensitivities(Vec3S::Zero(), Vec3S::Zero()), std::logic_error);  // only after pseudo_resultants
+}
+
 }  // namespace
 }  // namespace spifit::element
