@@ -6,9 +6,9 @@
 
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
-#include "forward/material/sensitivity_seeds.hpp"
 #include "forward/io/output_directory.hpp"
 #include "forward/scenes/common/sensitivity_check.hpp"
+#include "forward/scenes/sensitivity_refusal.hpp"
 #include "forward/scenes/input_reference.hpp"
 #include "forward/scenes/scene_registry.hpp"
 #include "reports/card_export.hpp"
@@ -139,22 +139,12 @@ void write_run_report(const io::OutputDirectory& dir) {
   }
 }
 
-// What can be told before the output directory is touched: the kind, the names against the card,
-// and friction (the model's other refusals, e.g. the one-point shell, come when it is built).
-void refuse_sensitivities_early(const scene::Scene& scene, const scene::SceneKind& kind, const std::vector<std::string>& names) {
-  std::string joined;
-  for (const auto& n : names) joined += (joined.empty() ? "" : ",") + n;
-  if (!kind.sensitivities || !scene.card())
-    throw io::InputError(scene.file(), "--sensitivities", joined,
-                         kind.fe_run ? kind.name + " scenes have no parameter sensitivities yet (indent, indent_line and line scenes have)"
-                                     : "FE scenes only (a material-point scene's parameter derivatives are exact Jets in fits already)");
-  if (const double mu = scene.input("contact.friction"); mu > 0.0)
-    throw io::InputError(scene.file(), "contact.friction", io::format_number(mu),
-                         "--sensitivities: friction has no parameter sensitivities yet (set it to 0)");
-  try {
-    (void)material::sensitivity_seeds(scene.card()->params, scene::card_sensitivity_names(names));
-  } catch (const std::invalid_argument& e) {
-    throw io::InputError(scene.file(), "--sensitivities", joined, e.what());
+// Before the output directory is touched: the kind, friction, the names against the card, and the
+// model's own refusals (sensitivity_refusal.hpp).
+void refuse_sensitivities_early(const scene::Scene& scene, const std::vector<std::string>& names) {
+  if (const auto r = scene::sensitivity_refusal(scene, names)) {
+    const std::string why = r->key == "--sensitivities" ? r->why : "--sensitivities: " + r->why;
+    throw io::InputError(scene.file(), r->key, r->value, why);
   }
 }
 
@@ -181,7 +171,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     const scene::SceneKind* kind = scene::find_scene_kind(scene->kind());
     if (o->resume && !kind->resumable)
       throw io::InputError(o->scene, "--resume", "", "not supported for scene kind " + scene->kind() + " (it writes no checkpoints)");
-    if (!o->sensitivities.empty()) refuse_sensitivities_early(*scene, *kind, o->sensitivities);
+    if (!o->sensitivities.empty()) refuse_sensitivities_early(*scene, o->sensitivities);
     const auto dir = o->resume ? existing_output(o->out, o->scene, g.quiet) : prepare_output(o->out, o->force, scene->input_files(), g.quiet);
     scene::RunControl control;
     control.resume = o->resume;  // the checkpoint is checked before any output is rewritten
@@ -231,7 +221,7 @@ void add_check_sensitivities_command(CLI::App& app, const GlobalOptions& g, int&
   cmd->add_option("--relative-step", o->relative_step, "h as a fraction of each parameter's value (default 1e-4)")->check(CLI::Range(1e-12, 0.1));
   cmd->callback([o, &g, &exit_code] {
     const auto scene = scene::read_scene(o->scene);
-    refuse_sensitivities_early(*scene, *scene::find_scene_kind(scene->kind()), o->names);
+    refuse_sensitivities_early(*scene, o->names);
     std::string joined;
     for (const auto& n : o->names) joined += (joined.empty() ? "" : ",") + n;
     scene::SensitivityCheck c;

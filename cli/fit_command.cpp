@@ -71,10 +71,12 @@ void prepare_fe_runs(const inverse::FitProblem& problem, const io::OutputDirecto
 // A worker rank of an MPI fit: answers FE evaluations, each in a process of its own, until rank
 // 0 stops it. A job may hold a run and its retry with half the increment: its process is stopped
 // after 2.5 run time limits and a minute.
-void serve_fit_jobs(const inverse::FitProblem& problem, const GlobalOptions& g, const std::string& fit_file) {
+void serve_fit_jobs(const inverse::FitProblem& problem, const GlobalOptions& g, const std::string& fit_file, const std::string& jacobian) {
   if (!problem.scene_runs) return;
   const double limit = problem.settings.run_time_limit;
-  mpi::serve(jobs_in_child_processes(job_args(g, {"job", "--fit", fit_file}), limit > 0 ? 2.5 * limit + 60.0 : 0.0,
+  std::vector<std::string> args{"job", "--fit", fit_file};
+  if (!jacobian.empty()) args.insert(args.end(), {"--jacobian", jacobian});
+  mpi::serve(jobs_in_child_processes(job_args(g, args), limit > 0 ? 2.5 * limit + 60.0 : 0.0,
                                      [](const std::string&, const std::string& why) { return inverse::failed_fe_answer(why); },
                                      note_on_stderr));
 }
@@ -82,7 +84,7 @@ void serve_fit_jobs(const inverse::FitProblem& problem, const GlobalOptions& g, 
 }  // namespace
 
 void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
-  struct Opts { std::string file, out, algorithm; bool force = false, resume = false; unsigned seed = 42; int multistart = 0; };
+  struct Opts { std::string file, out, algorithm, jacobian; bool force = false, resume = false; unsigned seed = 42; int multistart = 0; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("fit", "Identify material parameters: fit a card to the experiments of a fit file (Ceres)");
   cmd->add_option("FIT", o->file, "fit file (TOML)")->required();
@@ -93,13 +95,16 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       ->excludes("--force");
   cmd->add_option("--seed", o->seed, "seed of NLopt's stochastic algorithms and of multi-start draws (default 42)");
   cmd->add_option("--multistart", o->multistart, "number of starts (overrides [fit] multistart)")->check(CLI::Range(1, 10000));
+  cmd->add_option("--jacobian", o->jacobian,
+                  "FE experiments' Jacobian, overriding [fit] jacobian: exact (through runs with sensitivities) or central (differences of whole runs)")
+      ->check(CLI::IsMember({"exact", "central"}));
   cmd->callback([o, &g, &exit_code] {
     if (!o->algorithm.empty() && !inverse::is_fit_algorithm(o->algorithm)) {
       throw io::InputError("", "--algorithm", o->algorithm, "unknown algorithm (known: " + inverse::fit_algorithm_names() + ")");
     }
-    const auto problem = inverse::read_fit_file(o->file);
+    const auto problem = inverse::read_fit_file(o->file, o->jacobian);
     if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out
-      serve_fit_jobs(problem, g, o->file);
+      serve_fit_jobs(problem, g, o->file, o->jacobian);
       exit_code = 0;
       return;
     }

@@ -65,6 +65,15 @@ void add_information_shares(Document& d, const FitRecord& rec) {
            "n/a: no experiment responds to the parameter."}});
 }
 
+namespace {
+std::string jacobian_words(const std::string& j) {
+  if (j == "jets") return "exact (Jets)";
+  if (j == "exact") return "exact (FE run)";
+  if (j == "central") return "central differences";
+  return "–";  // a fit.json of an older spifit
+}
+}  // namespace
+
 void add_forward_runs(Document& d, const FitRecord& rec) {
   d.heading(2, "Forward runs", "forward-runs");
   const auto& exps = rec.experiments;
@@ -76,14 +85,14 @@ void add_forward_runs(Document& d, const FitRecord& rec) {
   const bool fe = std::any_of(exps.begin(), exps.end(), [](const FitRecord::Experiment& x) { return x.scene_runs.has_value(); });
   Table t;
   t.id = "forward-runs";
-  t.header = {"experiment", "kind", "evaluations"};
-  t.right = {false, false, true};
+  t.header = {"experiment", "kind", "evaluations", "Jacobian"};
+  t.right = {false, false, true, false};
   if (fe) {
     t.header.insert(t.header.end(), {"scene runs", "wall time of its runs [s]"});
     t.right.insert(t.right.end(), {true, true});
   }
   for (const auto& x : exps) {
-    std::vector<Cell> row{cell(x.name), cell(x.kind), cell(count(x.evaluations))};
+    std::vector<Cell> row{cell(x.name), cell(x.kind), cell(count(x.evaluations)), cell(jacobian_words(x.jacobian))};
     if (fe) {
       row.push_back(cell(x.scene_runs ? std::to_string(*x.scene_runs) : "–"));
       row.push_back(cell(x.scene_runs ? seconds(x.run_seconds) : "–"));
@@ -92,9 +101,10 @@ void add_forward_runs(Document& d, const FitRecord& rec) {
   }
   d.table(t);
   std::string text =
-      "Evaluations: how often the fit computed the experiment's residuals: its steps, its Jacobians (one evaluation with exact "
-      "derivatives for a material point, 1 + 2 per free parameter by central differences for an FE scene) and the analysis at "
-      "the solution.";
+      "Evaluations: how often the fit computed the experiment's residuals: its steps, its Jacobians and the analysis at the "
+      "solution. Jacobian: exact through Jets (a material point: one evaluation), exact through the FE run (direct "
+      "differentiation: one run with sensitivities, residuals and Jacobian from it) or central differences (1 + 2 runs per "
+      "free parameter).";
   if (fe) {
     text += " Experiments on the same scene file share its runs, one per parameter point: a run counts for the experiment that "
             "asked for the point first. Material-point experiments run in memory within their evaluations (–).";

@@ -7,7 +7,7 @@
 
 namespace spifit::material {
 
-std::vector<FieldSeed> sensitivity_seeds(const MaterialParams<double>& card, const std::vector<std::string>& names) {
+std::vector<FieldSeed> sensitivity_seeds(const MaterialParams<double>& card, const std::vector<std::string>& names, bool h_follows_g) {
   if (names.empty()) throw std::invalid_argument("no parameter named");
   if (names.size() > static_cast<std::size_t>(kSensitivitySlots))
     throw std::invalid_argument(std::to_string(names.size()) + " parameters; a run differentiates at most " + std::to_string(kSensitivitySlots));
@@ -29,6 +29,7 @@ std::vector<FieldSeed> sensitivity_seeds(const MaterialParams<double>& card, con
     d(static_cast<Eigen::Index>(k)) = 1.0;
     seeds.push_back({in->field, d});
     for (const MaterialField& t : in->tied) seeds.push_back({t, d});
+    if (h_follows_g && in->field.kind == MaterialField::G) seeds.push_back({MaterialField{MaterialField::H, -1, 0}, -d});
   }
   return seeds;
 }

@@ -60,8 +60,7 @@ bool is_cone_section_response(const std::string& y) { return y == "z" || y == "t
 
 
 ForceCurve cone_section_curve(const scene::SceneResult& r, int contour, const std::string& x, const std::string& y) {
-  scene::ResultCurve c = r.contour_section(contour, x, y);
-  return {std::move(c.x), std::move(c.y)};
+  return r.contour_section(contour, x, y);
 }
 
 std::unique_ptr<Experiment> make_cone_section_experiment(ConeSectionSpec s) {

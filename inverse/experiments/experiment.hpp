@@ -3,7 +3,7 @@
 // The identification sees the forward model only through this interface: parameter values
 // in, conditioned residuals out. Material-point experiments evaluate with Jets (exact
 // derivatives); FE experiments (fe_experiment.hpp) report supports_jets() = false and are
-// differentiated by central differences (numeric_cost.hpp).
+// differentiated through their runs (exact_columns()) or by central differences (numeric_cost.hpp).
 #include "forward/material/material_params.hpp"
 #include "forward/scenes/material_point/material_point_file.hpp"
 #include "inverse/runs/parameter_point.hpp"
@@ -12,6 +12,7 @@
 
 #include <atomic>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -55,6 +56,28 @@ class Experiment {
   // With Jets (material parameters only); an experiment without supports_jets() returns false.
   virtual bool residuals(const material::MaterialParams<Jet>& m, Jet* r) const = 0;
   virtual bool supports_jets() const { return true; }
+  // FE experiments whose runs carry exact derivatives (direct differentiation,
+  // docs/design/sensitivities.md): the number of fit parameters they are taken with respect to,
+  // the fit's free ones in its order (0: none; Jets or central differences).
+  virtual int exact_columns() const { return 0; }
+  // The residuals and their derivatives with respect to the free parameters' physical values,
+  // drdp row-major (num_residuals() x exact_columns()). False: the forward run failed, or the
+  // experiment has no exact derivatives.
+  virtual bool residuals_and_derivatives(const ParameterPoint& p, double* r, double* drdp) const {
+    (void)p, (void)r, (void)drdp;
+    return false;
+  }
+  // FE experiments: whether its residuals can take exact derivatives from runs with
+  // sensitivities (a force curve, a section's z), and to take them from now on with respect to
+  // `columns` parameters (the runs of its scene file must carry them: SceneRuns::differentiate).
+  virtual bool differentiable() const { return false; }
+  virtual void set_exact_columns(int columns) {
+    (void)columns;
+    throw std::logic_error("experiment " + name_ + " has no exact derivatives");
+  }
+  // How a fit differentiates it: "jets", "exact" (through the FE run) or "central" (differences
+  // of whole runs).
+  std::string jacobian() const { return supports_jets() ? "jets" : exact_columns() > 0 ? "exact" : "central"; }
   // How many evaluations of this experiment may usefully run at once beyond this process's
   // threads: the workers of the FE runs' pool (0: none).
   virtual int parallel_evaluations() const { return 0; }

@@ -31,18 +31,30 @@ double component(const std::string& y, const Eigen::Vector3d& centre, const Eige
 }
 
 // Residuals of measured (xs, ys) against the simulated curve c, interpolated linearly at xs;
-// false when an xs lies outside c (never extrapolate).
+// false when an xs lies outside c (never extrapolate). With drdp (row-major, `columns` per
+// residual) also their derivatives from c's: at a fixed measured x, y = y_a + (y_b - y_a) u with
+// u = (x - x_a) / (x_b - x_a), so dy = dy_a + (dy_b - dy_a) u - (y_b - y_a) ((1 - u) dx_a + u dx_b) / (x_b - x_a)
+// (no dx: the abscissa does not move, as a force curve's depth); false when c has none.
 bool curve_residuals(const ForceCurve& c, const std::vector<double>& xs, const std::vector<double>& ys, const std::vector<double>& sqrt_w,
-                     double scale, double* r, std::vector<double>* simulated) {
+                     double scale, double* r, std::vector<double>* simulated, int columns = 0, double* drdp = nullptr) {
+  const auto n = static_cast<Eigen::Index>(c.x.size());
+  if (drdp && (c.dy.rows() != n || c.dy.cols() != columns || (c.dx.rows() != 0 && c.dx.rows() != n))) return false;
   std::size_t seg = 0;
   for (std::size_t i = 0; i < xs.size(); ++i) {
     const double x = xs[i];
     if (c.x.size() < 2 || x < c.x.front() - 1e-9 || x > c.x.back() + 1e-9) return false;
     while (seg + 2 < c.x.size() && c.x[seg + 1] < x) ++seg;
-    const double u = std::clamp((x - c.x[seg]) / (c.x[seg + 1] - c.x[seg]), 0.0, 1.0);
+    const double raw = (x - c.x[seg]) / (c.x[seg + 1] - c.x[seg]);
+    const double u = std::clamp(raw, 0.0, 1.0);
     const double y = c.y[seg] + (c.y[seg + 1] - c.y[seg]) * u;
     r[i] = sqrt_w[i] * (y - ys[i]) / scale;
     if (simulated) (*simulated)[i] = y;
+    if (!drdp) continue;
+    const auto a = static_cast<Eigen::Index>(seg), b = a + 1;
+    Eigen::RowVectorXd dy = c.dy.row(a) + (c.dy.row(b) - c.dy.row(a)) * u;
+    if (c.dx.rows() == n && raw == u)  // inside the segment: u moves with its ends
+      dy -= (c.y[seg + 1] - c.y[seg]) * ((1.0 - u) * c.dx.row(a) + u * c.dx.row(b)) / (c.x[seg + 1] - c.x[seg]);
+    for (int k = 0; k < columns; ++k) drdp[i * static_cast<std::size_t>(columns) + static_cast<std::size_t>(k)] = sqrt_w[i] * dy(k) / scale;
   }
   return true;
 }
@@ -64,24 +76,46 @@ class FeExperiment : public Experiment {
     const ExperimentCurve a = axes();
     return fe_magnitudes(a.y_name, a.y_unit, measured_values(), *scene_, start.material);
   }
-  // The residuals at p: kept from an earlier (killed) fit when the runs keep evaluations, else
-  // computed (and kept).
+  int exact_columns() const final { return columns_; }
+  void set_exact_columns(int columns) final {
+    if (!differentiable()) Experiment::set_exact_columns(columns);
+    columns_ = columns;
+  }
   bool residuals(const ParameterPoint& p, double* r) const final {
-    count_evaluation();
-    EvaluationCache* cache = runs_->evaluations();
-    const std::string key = cache ? point_key(p) : std::string();
-    if (cache) {
-      if (const auto e = cache->find(name_, key); e && (!e->ok || static_cast<int>(e->residuals.size()) == num_residuals())) {
-        std::copy(e->residuals.begin(), e->residuals.end(), r);
-        return e->ok;
-      }
-    }
-    const bool ok = runs_->pool() ? compute_elsewhere(p, r) : compute(p, r);
-    if (cache) cache->add(name_, key, {ok, ok ? std::vector<double>(r, r + num_residuals()) : std::vector<double>{}});
-    return ok;
+    std::vector<double> v;
+    if (!evaluate(p, &v)) return false;
+    std::copy_n(v.begin(), num_residuals(), r);
+    return true;
+  }
+  bool residuals_and_derivatives(const ParameterPoint& p, double* r, double* drdp) const final {
+    std::vector<double> v;
+    if (columns_ == 0 || !evaluate(p, &v)) return false;
+    const auto m = static_cast<std::ptrdiff_t>(num_residuals());
+    std::copy(v.begin(), v.begin() + m, r);
+    std::copy(v.begin() + m, v.end(), drdp);
+    return true;
   }
 
  protected:
+  // The residuals at p, followed by their derivatives (row-major) when the experiment takes exact
+  // ones: kept from an earlier (killed) fit when the runs keep evaluations, else computed (and kept).
+  bool evaluate(const ParameterPoint& p, std::vector<double>* v) const {
+    count_evaluation();
+    const std::size_t size = static_cast<std::size_t>(num_residuals()) * static_cast<std::size_t>(1 + columns_);
+    EvaluationCache* cache = runs_->evaluations();
+    const std::string key = cache ? point_key(p) : std::string();
+    if (cache) {
+      if (const auto e = cache->find(name_, key); e && (!e->ok || e->residuals.size() == size)) {
+        *v = e->residuals;
+        return e->ok;
+      }
+    }
+    v->assign(size, 0.0);
+    const bool ok = runs_->pool() ? compute_elsewhere(p, v->data()) : compute(p, v->data());
+    if (cache) cache->add(name_, key, {ok, ok ? *v : std::vector<double>{}});
+    return ok;
+  }
+  // The residuals, then (exact_columns() > 0) their derivatives, row-major.
   virtual bool compute(const ParameterPoint& p, double* r) const = 0;
   virtual std::vector<double> measured_values() const = 0;
   // On a worker of the runs' pool: the same numbers compute() gives, computed there, with those
@@ -106,7 +140,7 @@ class FeExperiment : public Experiment {
       runs_->add_remote({}, {{scene_->file(), describe_point(p, runs_->base()), "a worker could not evaluate " + name_ + ": " + why, false}});
       return false;
     }
-    if (!mine->ok || static_cast<int>(mine->values.size()) != num_residuals()) return false;
+    if (!mine->ok || mine->values.size() != static_cast<std::size_t>(num_residuals()) * static_cast<std::size_t>(1 + columns_)) return false;
     std::copy(mine->values.begin(), mine->values.end(), r);
     return true;
   }
@@ -116,6 +150,7 @@ class FeExperiment : public Experiment {
   }
   std::shared_ptr<const scene::Scene> scene_;
   std::shared_ptr<SceneRuns> runs_;
+  int columns_ = 0;
 };
 
 class FeScalarExperiment final : public FeExperiment {
@@ -133,9 +168,12 @@ class FeScalarExperiment final : public FeExperiment {
     return c;
   }
 
+  bool differentiable() const override { return static_cast<bool>(s_.observable->derivatives); }
+
  private:
   bool compute(const ParameterPoint& p, double* r) const override { return eval(p, r, nullptr); }
   std::vector<double> measured_values() const override { return {s_.value}; }
+  // r[0], then (exact_columns() > 0) its derivatives r[1 ..].
   bool eval(const ParameterPoint& p, double* r, double* simulated) const {
     const auto res = run_at(p);
     if (!res) return false;
@@ -143,6 +181,11 @@ class FeScalarExperiment final : public FeExperiment {
     if (!std::isfinite(v)) return false;
     r[0] = std::sqrt(s_.weight) * (v - s_.value) / scale_;
     if (simulated) *simulated = v;
+    if (columns_ > 0 && !simulated) {
+      const std::vector<double> d = s_.observable->derivatives(*res, s_.options);
+      if (static_cast<int>(d.size()) != columns_) return false;
+      for (int k = 0; k < columns_; ++k) r[1 + k] = std::sqrt(s_.weight) * d[static_cast<std::size_t>(k)] / scale_;
+    }
     return true;
   }
   FeScalarSpec s_;
@@ -181,7 +224,8 @@ class CurveFeExperiment : public FeExperiment {
   std::vector<double> measured_values() const override { return c_.ys; }
   bool eval(const ParameterPoint& p, double* r, std::vector<double>* sim) const {
     const auto res = run_at(p);
-    return res && curve_residuals(simulated(*res, p), c_.xs, c_.ys, sqrt_w_, scale_, r, sim);
+    return res && curve_residuals(simulated(*res, p), c_.xs, c_.ys, sqrt_w_, scale_, r, sim, columns_,
+                                  columns_ > 0 && !sim ? r + c_.xs.size() : nullptr);
   }
   Curve c_;
   std::vector<double> sqrt_w_;
@@ -216,8 +260,11 @@ class ForceCurveExperiment final : public CurveFeExperiment {
     // tool path lifts the tip by t/2 + R, so its start moves with them.
     const double t = input_at(p, "sheet.thickness", thickness_), radius = input_at(p, "tool.radius", radius_);
     const Eigen::Vector3d start = start_ + Eigen::Vector3d(0.0, 0.0, 0.5 * (t - thickness_) + (radius - radius_));
-    return force_curve(*force, start, t, radius, x_, y_);
+    ForceCurve c = force_curve(*force, start, t, radius, x_, y_);
+    if (exact_columns() > 0 && !add_force_curve_derivatives(r, y_, &c)) return {};
+    return c;
   }
+  bool differentiable() const override { return true; }
   static double input_at(const ParameterPoint& p, const char* name, double fallback) {
     for (const auto& [n, v] : p.scene)
       if (n == name) return v;
@@ -235,6 +282,7 @@ class SectionExperiment final : public CurveFeExperiment {
 
  private:
   ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint&) const override { return section_curve(r, point_, x_, y_); }
+  bool differentiable() const override { return y_ == "z"; }  // the thickness: no derivatives yet
   std::string point_, x_, y_;
 };
 
@@ -253,7 +301,7 @@ class ContourMeansExperiment final : public CurveFeExperiment {
     scene::ResultCurve m = r.contour_means(y_);
     for (double v : m.y)
       if (!std::isfinite(v)) return {};  // a contour without samples: nothing to compare
-    return {std::move(m.x), std::move(m.y)};
+    return m;
   }
   std::string y_;
 };
@@ -271,8 +319,7 @@ bool is_section_abscissa(const std::string& x) { return x == "x" || x == "x0"; }
 bool is_section_response(const std::string& y) { return y == "z" || y == "thickness"; }
 
 ForceCurve section_curve(const scene::SceneResult& r, const std::string& point, const std::string& x, const std::string& y) {
-  scene::ResultCurve c = r.path_section(point, x, y);
-  return {std::move(c.x), std::move(c.y)};
+  return r.path_section(point, x, y);
 }
 
 std::unique_ptr<Experiment> make_fe_scalar_experiment(FeScalarSpec spec) { return std::make_unique<FeScalarExperiment>(std::move(spec)); }
@@ -302,6 +349,25 @@ ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& 
     c.y.push_back(component(y, s.centre, s.force));
   }
   return c;
+}
+
+bool add_force_curve_derivatives(const scene::SceneResult& r, const std::string& y, ForceCurve* c) {
+  const io::Series* table = r.force_sensitivities();
+  const scene::ToolForceHistory* force = r.tool_force();
+  if (!table || !force || table->size() != force->samples().size() || table->columns().size() < 8 || (table->columns().size() - 2) % 6 != 0) return false;
+  const auto columns = static_cast<Eigen::Index>((table->columns().size() - 2) / 6);  // time, lambda; per parameter dF and p dF
+  const auto n = static_cast<Eigen::Index>(c->x.size());
+  if (n < 1 || static_cast<std::size_t>(n - 1) > force->samples().size()) return false;
+  c->dy = Eigen::MatrixXd::Zero(n, columns);  // row 0: the path's start, zero force
+  for (Eigen::Index j = 1; j < n; ++j) {
+    const auto sample = static_cast<std::size_t>(j - 1);
+    const std::vector<double>& row = table->row(sample);
+    for (Eigen::Index k = 0; k < columns; ++k) {
+      const auto at = static_cast<std::size_t>(2 + 6 * k);
+      c->dy(j, k) = component(y, force->samples()[sample].centre, Eigen::Vector3d(row[at], row[at + 1], row[at + 2]));
+    }
+  }
+  return true;
 }
 
 std::pair<double, double> force_curve_range(const toolpath::ToolPath& centre, double thickness, double tool_radius, const std::string& x) {

@@ -3,7 +3,8 @@
 // on FE scenes"): a tool-force curve against tool-tip depth, tool travel or time, or a scalar
 // observable of the scene kind (peak_fz, mean_fx over a travel window, steady_ftheta_over_fz
 // over a contour range, ...). The runs come from the fit's SceneRuns (one per parameter point,
-// shared by the experiments on the same scene); derivatives are central differences.
+// shared by the experiments on the same scene); derivatives come through the runs (force curves
+// and sections' z, when the fit's runs carry sensitivities) or from central differences.
 #include "forward/scenes/common/fe_scene_result.hpp"
 #include "forward/scenes/common/scene.hpp"
 #include "inverse/experiments/experiment.hpp"
@@ -50,7 +51,8 @@ struct FeCurve {
   std::string x, y, x_unit, y_unit;
   std::vector<double> xs, ys, point_weights;
 };
-struct ForceCurve;
+// A simulated curve, with the derivatives of a run with sensitivities (ResultCurve::dx, dy).
+using ForceCurve = scene::ResultCurve;
 using SimulatedCurve = std::function<ForceCurve(const scene::SceneResult&, const ParameterPoint&)>;
 std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated);
 
@@ -85,13 +87,14 @@ bool is_force_component(const std::string& y);
 // The tool force component y against x over a run, starting at the path's start (zero force)
 // and ending where x stops increasing (a depth curve ends where the tool stops going down).
 // thickness and tool_radius place the tool tip; start is the tool centre at the path's start.
-struct ForceCurve {
-  std::vector<double> x, y;
-};
 ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& start, double thickness, double tool_radius,
                        const std::string& x, const std::string& y);
 
 // The range [x at the start, x where it stops increasing] of an abscissa along a tool centre path.
+// The derivatives dy of c (a force_curve of component y) from the run's force sensitivities
+// (SceneResult::force_sensitivities); false when the run holds none for c's samples.
+bool add_force_curve_derivatives(const scene::SceneResult& r, const std::string& y, ForceCurve* c);
+
 std::pair<double, double> force_curve_range(const toolpath::ToolPath& centre, double thickness, double tool_radius, const std::string& x);
 
 // The section's y against x at a named path point (SceneResult::path_section); empty when the

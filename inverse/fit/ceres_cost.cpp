@@ -1,5 +1,6 @@
 #include "inverse/fit/ceres_cost.hpp"
 
+#include "inverse/fit/exact_cost.hpp"
 #include "inverse/fit/numeric_cost.hpp"
 
 #include <type_traits>
@@ -20,11 +21,12 @@ struct ExperimentFunctor {
   }
 };
 
-// Exact derivatives through Jets where the experiment supports them, central differences
-// (parallel, inside the bounds) for black boxes.
 }  // namespace
 
+// Exact derivatives through Jets where the experiment supports them, through the FE runs where
+// they carry sensitivities, central differences (parallel, inside the bounds) for black boxes.
 ceres::CostFunction* make_experiment_cost(const ParameterSet& ps, const Experiment& e, std::atomic<long>* runs) {
+  if (!e.supports_jets() && e.exact_columns() > 0) return new ExactFeExperimentCost(&ps, &e, runs);
   if (!e.supports_jets()) return new NumericDiffExperimentCost(&ps, &e, runs);
   auto* cf = new ceres::DynamicAutoDiffCostFunction<ExperimentFunctor, kJetSize>(new ExperimentFunctor{&ps, &e, runs});
   cf->AddParameterBlock(ps.num_free());

@@ -1,6 +1,7 @@
 #pragma once
 // The Ceres cost function of one experiment: exact derivatives through Jets where the
-// experiment supports them, central differences (numeric_cost.hpp) for black boxes. Shared by
+// experiment supports them, through the FE runs where they carry sensitivities (exact_cost.hpp),
+// central differences (numeric_cost.hpp) for black boxes. Shared by
 // the Ceres fit and the analysis at any engine's solution. `runs` counts the forward runs.
 #include "inverse/experiments/experiment.hpp"
 #include "inverse/fit/parameters.hpp"

@@ -22,8 +22,10 @@ JobHandler fe_evaluation_handler(const FitProblem& problem) {
       const std::size_t logged = runs.run_log().size(), failed = runs.failures().size();
       for (const auto& x : problem.experiments) {
         if (x->scene_file() != asked->scene_file()) continue;
-        FeEvaluationAnswer::Residuals e{x->name(), false, std::vector<double>(static_cast<std::size_t>(x->num_residuals()))};
-        e.ok = x->residuals(p, e.values.data());
+        // The residuals, then their exact derivatives when the experiment takes them.
+        const std::size_t m = static_cast<std::size_t>(x->num_residuals()), q = static_cast<std::size_t>(x->exact_columns());
+        FeEvaluationAnswer::Residuals e{x->name(), false, std::vector<double>(m * (1 + q))};
+        e.ok = q > 0 ? x->residuals_and_derivatives(p, e.values.data(), e.values.data() + m) : x->residuals(p, e.values.data());
         if (!e.ok) e.values.clear();
         a.experiments.push_back(std::move(e));
       }

@@ -4,6 +4,7 @@
 #include "forward/material/material_inputs.hpp"
 #include "forward/material/yield/yield_functions.hpp"
 #include "forward/scenes/scene_registry.hpp"
+#include "forward/scenes/sensitivity_refusal.hpp"
 #include "inverse/experiments/fe_experiment_file.hpp"
 #include "inverse/experiments/material_point_experiment_file.hpp"
 #include "inverse/experiments/measurement.hpp"
@@ -59,7 +60,7 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   const auto ft = root.table("fit");
   if (!ft) root.fail("fit", "required table [fit] is missing");
   ft->allow_only({"name", "description", "card", "normalise_hill", "algorithm", "max_iterations", "function_tolerance",
-                  "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart", "run_time_limit"});
+                  "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart", "run_time_limit", "jacobian"});
   fp.multistart = ft->integer("multistart", 1);
   if (fp.multistart < 1 || fp.multistart > 10000) ft->fail("multistart", "must lie in [1, 10000]");
   fp.per_experiment = ft->boolean("per_experiment", false);  // default: see read_fit_file
@@ -81,6 +82,9 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   st.function_tolerance = ft->number("function_tolerance", st.function_tolerance);
   st.parameter_tolerance = ft->number("parameter_tolerance", st.parameter_tolerance);
   st.gradient_tolerance = ft->number("gradient_tolerance", st.gradient_tolerance);
+  st.jacobian = ft->string("jacobian", "");
+  if (ft->has("jacobian") && st.jacobian != "exact" && st.jacobian != "central")
+    ft->fail("jacobian", "must be \"exact\" (through runs with sensitivities) or \"central\" (differences of whole runs)");
   st.run_time_limit = ft->number("run_time_limit", 0.0);
   if (!(st.run_time_limit >= 0.0)) ft->fail("run_time_limit", "must be >= 0 s (0: no limit)");
   for (const char* k : {"function_tolerance", "parameter_tolerance", "gradient_tolerance"}) {
@@ -145,6 +149,48 @@ void read_parameters(const io::TomlTable& root, const material::MaterialCard& ca
   if (normalise && std::abs(card.params.G + card.params.H - 2.0) > 1e-12) {
     fp.notes.push_back("normalise_hill: the starting card has G + H = " + format_number(card.params.G + card.params.H) +
                        "; the fit uses H = 2 - G");
+  }
+}
+
+// How the FE experiments are differentiated: per scene file, exact when every experiment on it
+// can take exact derivatives and the scene can be run with sensitivities with respect to every
+// free parameter (sensitivity_refusal.hpp); else central differences, or ([fit] jacobian =
+// "exact") an error naming the scene and why. Each scene file's runs then carry the derivatives.
+void choose_jacobians(const io::TomlTable& root, const std::vector<const scene::Scene*>& fe_scenes, bool from_command_line, FitProblem& fp) {
+  if (!fp.scene_runs || fp.settings.jacobian == "central") return;
+  const ParameterSet& ps = *fp.parameters;
+  std::vector<std::string> names;
+  bool h_follows_g = false;
+  for (int i : ps.free_indices()) {
+    names.push_back(ps.specs()[static_cast<std::size_t>(i)].name);
+    h_follows_g = h_follows_g || (ps.normalise_hill() && names.back() == "hill.G");
+  }
+  std::vector<std::string> done;
+  std::size_t next_scene = 0;
+  for (const auto& e : fp.experiments) {
+    if (e->supports_jets()) continue;
+    const scene::Scene& sc = *fe_scenes[next_scene++];
+    if (std::find(done.begin(), done.end(), sc.file()) != done.end()) continue;
+    done.push_back(sc.file());
+    std::string why;
+    for (const auto& other : fp.experiments)
+      if (other->scene_file() == sc.file() && !other->differentiable() && why.empty())
+        why = "experiment " + other->name() + " (" + other->kind() + " " + other->axes().y_name + ") has no exact derivatives yet";
+    if (why.empty()) {
+      std::unique_ptr<scene::Scene> with_card = sc.clone();
+      with_card->card()->params = ps.base().params;
+      if (const auto r = scene::sensitivity_refusal(*with_card, names, h_follows_g))
+        why = r->key == "--sensitivities" ? r->why : r->key + " = " + r->value + ": " + r->why;
+    }
+    if (!why.empty()) {
+      if (fp.settings.jacobian == "exact" && from_command_line) throw InputError(fp.file, "--jacobian", "exact", "scene " + sc.file() + ": " + why);
+      if (fp.settings.jacobian == "exact") root.table("fit")->fail("jacobian", "scene " + sc.file() + ": " + why);
+      fp.notes.push_back("central differences for the experiments on scene " + sc.file() + ": " + why + ".");
+      continue;
+    }
+    fp.scene_runs->differentiate(sc.file(), names, h_follows_g);
+    for (const auto& other : fp.experiments)
+      if (other->scene_file() == sc.file()) other->set_exact_columns(ps.num_free());
   }
 }
 
@@ -268,13 +314,16 @@ FitSettings fe_fit_settings() {
   return s;
 }
 
-FitProblem read_fit_file(const std::string& path) {
+FitProblem read_fit_file(const std::string& path, const std::string& jacobian) {
+  if (!jacobian.empty() && jacobian != "exact" && jacobian != "central")
+    throw InputError(path, "--jacobian", jacobian, "must be exact (through runs with sensitivities) or central (differences of whole runs)");
   const auto root = io::TomlTable::parse_file(path);
   root.allow_only({"fit", "parameters", "experiment"});
   FitProblem fp;
   fp.file = path;
   bool normalise = true;
   const material::MaterialCard card = read_fit_table(root, path, fp, &normalise);
+  if (!jacobian.empty()) fp.settings.jacobian = jacobian;
   fp.input_files = {path, card.file};
   // The experiments first: the FE scenes among them say which scene inputs are parameters.
   const auto exps = root.table_array("experiment");
@@ -291,6 +340,7 @@ FitProblem read_fit_file(const std::string& path) {
   }
   read_parameters(root, card, normalise, fe_scenes, fp);
   if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");
+  choose_jacobians(root, fe_scenes, !jacobian.empty(), fp);
   check_card_at_bounds(path, fp);
   check_measured_magnitudes(exps, path, fp);
   return fp;

@@ -18,6 +18,10 @@ struct FitSettings {
   double parameter_tolerance = 1e-12;
   double gradient_tolerance = 1e-14;
   double run_time_limit = 0.0;  // s of wall time one FE forward run may take (0: no limit)
+  // FE experiments' Jacobian: "exact" (through runs with sensitivities; refused where a scene
+  // cannot give them), "central" (differences of whole runs), or "" (the fit file does not say:
+  // exact for each scene file that can be differentiated, central for the others).
+  std::string jacobian;
 };
 
 // The defaults of a fit with FE experiments (unless the fit file states them): an FE run's cost
@@ -48,6 +52,7 @@ struct FitProblem {
 
 // Throws io::InputError naming file, key and value (unknown parameter, bad bounds, missing
 // data column, measured abscissa outside the simulated range, ...).
-FitProblem read_fit_file(const std::string& path);
+// jacobian: "exact" or "central" overrides [fit] jacobian (spifit fit --jacobian); "" keeps it.
+FitProblem read_fit_file(const std::string& path, const std::string& jacobian = "");
 
 }  // namespace spifit::inverse

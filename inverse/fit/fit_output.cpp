@@ -108,6 +108,7 @@ std::vector<FitRecord::Experiment> record_experiments(const FitProblem& fp, cons
     x.y_words = axes.y_words;
     x.data_file = "experiments/" + c.name + ".csv";
     x.information_share = c.information_share;
+    x.jacobian = e.jacobian();
     if (i < r.experiment_runs.size()) {
       const auto& runs = r.experiment_runs[i];
       x.evaluations = runs.evaluations;

@@ -92,6 +92,7 @@ json experiment_json(const FitRecord::Experiment& e, const std::vector<FitRecord
     ej["information_share"] = shares;
   }
   if (e.evaluations) ej["evaluations"] = *e.evaluations;
+  if (!e.jacobian.empty()) ej["jacobian"] = e.jacobian;
   if (e.scene_runs) {
     ej["scene_runs"] = *e.scene_runs;
     ej["run_seconds"] = number_or_null(e.run_seconds);
@@ -406,6 +407,7 @@ void read_experiments(const Reader& r, const json& j, FitRecord& rec) {
       for (const auto& q : rec.parameters) e.information_share.push_back(r.number(*shares, q.name, at + "information_share."));
     }
     e.evaluations = r.whole(ej, "evaluations", at);
+    e.jacobian = r.text(ej, "jacobian", at);
     e.scene_runs = r.whole(ej, "scene_runs", at);
     e.run_seconds = r.number(ej, "run_seconds", at);
     rec.experiments.push_back(std::move(e));

@@ -89,6 +89,9 @@ struct FitRecord {
     // FE experiments: the scene runs they asked for first and those runs' summed wall seconds.
     std::optional<long> evaluations, scene_runs;
     double run_seconds = kNaN;
+    // How the fit differentiated it: jets, exact (through the FE runs) or central (differences of
+    // whole runs); "" in a fit.json of an older spifit.
+    std::string jacobian;
     // information_share: per free parameter (in the order of parameters) this experiment's
     // share of its Fisher information at the solution; empty when fit.json has none.
     std::vector<double> information_share;

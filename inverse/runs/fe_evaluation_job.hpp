@@ -16,7 +16,7 @@ struct FeEvaluationAnswer {
   struct Residuals {
     std::string experiment;
     bool ok = false;
-    std::vector<double> values;
+    std::vector<double> values;  // the residuals, then their exact derivatives (row-major) when the experiment takes them
   };
   std::vector<Residuals> experiments;  // in the fit file's order
   std::vector<SceneRuns::Run> runs;

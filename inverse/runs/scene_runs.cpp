@@ -119,6 +119,10 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
     try {
       scene::RunControl control;
       control.time_limit_seconds = time_limit_;
+      if (const auto d = derivatives_.find(scene.file()); d != derivatives_.end()) {
+        control.sensitivities = d->second.names;
+        control.sensitivity_h_follows_g = d->second.h_follows_g;
+      }
       r = sc->run(scene::RunFiles(), control);
     } catch (const std::exception& e) {
       failure.message += std::string(failure.message.empty() ? "" : "; ") + e.what();
@@ -154,6 +158,11 @@ std::shared_ptr<const scene::SceneResult> SceneRuns::run(const scene::Scene& sce
   }
   if (r) failure.message += "; with " + std::string(kIncrement) + " = " + io::format_number(0.5 * travel) + ": " + r->message;
   return fail(failure.message);
+}
+
+void SceneRuns::differentiate(const std::string& scene, std::vector<std::string> names, bool h_follows_g) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  derivatives_[scene] = {std::move(names), h_follows_g};
 }
 
 void SceneRuns::add_remote(const std::vector<Run>& runs, const std::vector<Failure>& failures) {

@@ -50,6 +50,11 @@ class SceneRuns {
   std::shared_ptr<const scene::SceneResult> result(const scene::Scene& scene, const ParameterPoint& p,
                                                    const std::string& experiment = "");
 
+  // The runs of scene file `scene` carry exact derivatives with respect to `names` (the fit's
+  // free parameters: the card's and contact.penalty; RunControl::sensitivities), hill.G moving
+  // H = 2 - G when h_follows_g. Set before the runs start.
+  void differentiate(const std::string& scene, std::vector<std::string> names, bool h_follows_g);
+
   // Evaluations kept on disk for a resume (null: none); the FE experiments read and add to it.
   void keep_evaluations(std::shared_ptr<EvaluationCache> cache) { evaluations_ = std::move(cache); }
   EvaluationCache* evaluations() const { return evaluations_.get(); }
@@ -78,6 +83,11 @@ class SceneRuns {
   std::shared_ptr<const scene::SceneResult> run(const scene::Scene& scene, const ParameterPoint& p, const std::string& experiment);
   material::MaterialParams<double> base_;
   double time_limit_ = 0.0;
+  struct Derivatives {
+    std::vector<std::string> names;
+    bool h_follows_g = false;
+  };
+  std::map<std::string, Derivatives> derivatives_;  // by scene file
   std::shared_ptr<EvaluationCache> evaluations_;
   std::shared_ptr<JobPool> pool_;
   mutable std::mutex mutex_;  // the readers above are const and lock it too

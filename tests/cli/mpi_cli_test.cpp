@@ -5,6 +5,7 @@
 // mpi_failure_cli_test.cpp (label long).
 #include "tests/cli/mpi_support.hpp"
 
+#include <fstream>
 #include <sstream>
 
 namespace {
@@ -20,6 +21,34 @@ TEST_F(MpiFit, GivesTheSerialCardAndFit) {
   const json mpi = comparable(json::parse(spifit::test::slurp(dir_ / "mpi" / "fit.json")));
   EXPECT_EQ(mpi, serial);
   EXPECT_EQ(mpi["scene_runs"], serial["scene_runs"]);  // one run per scene and point, as in one process
+}
+
+// A fit with the exact Jacobian (frictionless: the runs carry sensitivities; a worker answers
+// the residuals and their derivatives together) under MPI, with --jacobian exact on the command
+// line handed to the workers: the serial card and fit.json, from one run per point.
+TEST(MpiExactFit, GivesTheSerialCardAndFit) {
+  const fs::path dir = spifit::test::fresh_temp_path("mpi_exact_fit");
+  fs::create_directories(dir);
+  const fs::path scene = spifit::test::write_tiny_line(dir / "line.toml");
+  const auto synth = spifit::test::run_spifit("-q synth " + scene.string() + " --x travel --y fz --every 4 --set swift.K=170 --out " +
+                                              (dir / "fz.csv").string());
+  ASSERT_EQ(synth.code, 0) << synth.err;
+  std::ofstream(dir / "fit.toml") << "[fit]\ncard = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
+                                  << "[parameters.\"swift.K\"]\ninitial = 200.0\nlower = 100.0\nupper = 300.0\n"
+                                  << "[parameters.\"swift.n\"]\nlower = 0.05\nupper = 0.5\n"
+                                  << "[[experiment]]\nname = \"press\"\nscene = \"line.toml\"\ndata = \"fz.csv\"\nx = \"travel\"\ny = \"fz\"\nnoise = 1.0\n";
+  const std::string fit = (dir / "fit.toml").string();
+  const auto serial = spifit::test::run_spifit("-q fit " + fit + " --jacobian exact --out " + (dir / "serial").string());
+  ASSERT_EQ(serial.code, 0) << serial.err;
+  const auto r = run_mpi("fit " + fit + " --jacobian exact --out " + (dir / "mpi").string());
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_EQ(spifit::test::slurp(dir / "mpi" / "card.toml"), spifit::test::slurp(dir / "serial" / "card.toml"));
+  const json s = comparable(json::parse(spifit::test::slurp(dir / "serial" / "fit.json")));
+  const json m = comparable(json::parse(spifit::test::slurp(dir / "mpi" / "fit.json")));
+  EXPECT_EQ(m, s);
+  EXPECT_EQ(s["experiments"][0]["jacobian"], "exact");
+  EXPECT_LE(s["scene_runs"].get<long>(), s["iterations"].get<long>() + 2);  // one run per point
+  fs::remove_all(dir);
 }
 
 // An FE sweep over the contact penalty with its sensitivities: the points run on the two worker

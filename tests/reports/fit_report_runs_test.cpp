@@ -57,8 +57,10 @@ TEST(FitReportRuns, ForwardRunsAndInformationSharesAsInFitJson) {
     const std::string name = e["name"];
     EXPECT_EQ(e.count("scene_runs"), 0u) << name << ": no FE scene";
     const auto row = md_row(runs, name);
-    ASSERT_EQ(row.size(), 3u) << name << "\n" << runs;
+    ASSERT_EQ(row.size(), 4u) << name << "\n" << runs;
     EXPECT_EQ(row[2], std::to_string(e["evaluations"].get<long>())) << name;
+    EXPECT_EQ(e["jacobian"], "jets") << name;
+    EXPECT_EQ(row[3], "exact (Jets)") << name;
     evaluations += e["evaluations"].get<long>();
     const auto shares = md_row(info, name);
     ASSERT_EQ(shares.size(), 7u) << name << "\n" << info;

@@ -60,7 +60,7 @@ void FeRun::enable_sensitivities() {
   if (setup_.explicit_scheme) refuse("the explicit scheme has no exact sensitivities; run the implicit scheme, or differentiate by central differences (a sweep)");
   if (control_.resume) refuse("a run with sensitivities cannot be resumed (checkpoints do not hold the state's derivatives)");
   try {
-    const std::vector<material::FieldSeed> seeds = material::sensitivity_seeds(setup_.material, card_sensitivity_names(control_.sensitivities));
+    const std::vector<material::FieldSeed> seeds = material::sensitivity_seeds(setup_.material, card_sensitivity_names(control_.sensitivities), control_.sensitivity_h_follows_g);
     for (std::size_t k = 0; k < control_.sensitivities.size(); ++k)
       if (control_.sensitivities[k] == kPenaltySensitivity) tool_->set_penalty_sensitivity(static_cast<int>(k));
     model_->enable_sensitivities(seeds, static_cast<int>(control_.sensitivities.size()), setup_.material);
@@ -79,6 +79,12 @@ std::vector<double> FeRun::sensitivity_values() const {
 FeRun::~FeRun() = default;
 
 FeRunOutcome FeRun::run(const nlohmann::json& head) {
+  if (control_.build_only) {
+    FeRunOutcome out;
+    out.status = RunStatus::stopped;
+    out.message = "built only (RunControl::build_only)";
+    return out;
+  }
   if (setup_.explicit_scheme) return run_explicit(head);
   auto t0 = Clock::now();
   // The input files' contents go into checkpoints (and are compared on resume): read only when

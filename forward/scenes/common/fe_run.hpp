@@ -105,6 +105,11 @@ struct RunControl {
   // respect to, by direct differentiation (docs/design/sensitivities.md): implicit runs only, not
   // resumed.
   std::vector<std::string> sensitivities;
+  // With sensitivities: hill.G also moves H = 2 - G (a fit with normalise_hill).
+  bool sensitivity_h_follows_g = false;
+  // Build the model (its refusals included) and stop before the first increment (status
+  // stopped): what sensitivity_refusal.hpp asks before a fit relies on a scene's sensitivities.
+  bool build_only = false;
 };
 
 struct CheckpointRecord {

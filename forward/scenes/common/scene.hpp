@@ -86,6 +86,10 @@ struct Observable {
   // A failed run's value: counts (iterations, increments) keep theirs; forces and shapes are NaN.
   bool counts_failed_runs = false;
   std::function<double(const SceneResult&, const ObservableOptions&)> value;
+  // Its derivatives with respect to the parameters of a run with sensitivities
+  // (RunControl::sensitivities, in their order); null for an observable without them (counts,
+  // the penetration), and empty from a result without sensitivities.
+  std::function<std::vector<double>(const SceneResult&, const ObservableOptions&)> derivatives = {};
 };
 
 struct SceneKind {

@@ -6,6 +6,7 @@
 #include "forward/io/series.hpp"
 #include "forward/scenes/common/run_status.hpp"
 
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -19,6 +20,9 @@ class ToolForceHistory;
 // has no such curve.
 struct ResultCurve {
   std::vector<double> x, y;
+  // A run with sensitivities (RunControl::sensitivities): dx(i, k) = d x_i / d p_k, likewise dy;
+  // no rows when the result holds no derivatives of this curve.
+  Eigen::MatrixXd dx, dy;
 };
 
 // The components a contour mean can give: fr, ftheta, fz (polar, at the tool's polar angle), fx,

@@ -45,4 +45,22 @@ void ToolForceHistory::load(io::BinaryReader& r) {
   }
 }
 
+std::optional<std::size_t> peak_sample(const ToolForceHistory& h, int k) {
+  std::optional<std::size_t> at;
+  double peak = 0.0;
+  for (std::size_t i = 0; i < h.samples().size(); ++i) {
+    const double f = h.samples()[i].force(k);
+    if (std::abs(f) > std::abs(peak)) {
+      peak = f;
+      at = i;
+    }
+  }
+  return at;
+}
+
+std::optional<std::size_t> last_sample(const ToolForceHistory& h) {
+  if (h.samples().empty()) return std::nullopt;
+  return h.samples().size() - 1;
+}
+
 }  // namespace spifit::scene

@@ -5,6 +5,7 @@
 // sat in the sheet. Peaks keep their sign: the component of largest magnitude seen so far.
 #include <Eigen/Core>
 
+#include <optional>
 #include <vector>
 
 namespace spifit::io {
@@ -23,6 +24,13 @@ struct ToolForceSample {
   double surface_penetration = 0.0;  // deepest point of the tool-side surface [mm]
   int iterations = 0;                // Newton iterations of the increment
 };
+
+class ToolForceHistory;
+// The sample whose component k (0 x, 1 y, 2 z) is ToolForceHistory::peak()'s: the first of the
+// largest magnitude; none while every sample's is zero.
+std::optional<std::size_t> peak_sample(const ToolForceHistory& h, int k);
+// The last sample (final_force()'s); none without samples.
+std::optional<std::size_t> last_sample(const ToolForceHistory& h);
 
 class ToolForceHistory {
  public:

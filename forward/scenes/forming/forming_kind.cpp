@@ -6,8 +6,10 @@
 #include "forward/scenes/forming/forming_path.hpp"
 #include "forward/scenes/forming/forming_run.hpp"
 
+#include <array>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace spifit::scene {
 namespace {
@@ -53,18 +55,70 @@ WindowStats window_stats(const ToolForceHistory& h, const std::array<double, 2>&
   return s;
 }
 
+// Per parameter, the derivatives of force component k summed over the samples in the window,
+// with the samples of its largest and smallest value (what ripple_fz needs); none without
+// sensitivities or samples.
+struct WindowDerivatives {
+  Eigen::RowVectorXd sum, at_max, at_min;
+  std::size_t rows = 0;
+};
+std::optional<WindowDerivatives> window_derivatives(const FormingResult& r, const std::array<double, 2>& w, int k) {
+  WindowDerivatives out;
+  double lo = std::numeric_limits<double>::infinity(), hi = -std::numeric_limits<double>::infinity();
+  const auto& samples = r.force.samples();
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    if (samples[i].travel < w[0] || samples[i].travel > w[1]) continue;
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> d = r.force_sensitivity(i);
+    if (d.cols() == 0) return std::nullopt;
+    if (out.rows == 0) out.sum = out.at_max = out.at_min = Eigen::RowVectorXd::Zero(d.cols());
+    out.sum += d.row(k);
+    const double f = samples[i].force(k);
+    if (f > hi) hi = f, out.at_max = d.row(k);  // as std::max keeps the first of equals
+    if (f < lo) lo = f, out.at_min = d.row(k);
+    ++out.rows;
+  }
+  if (out.rows == 0) return std::nullopt;
+  return out;
+}
+
+std::vector<double> as_vector(const Eigen::RowVectorXd& v) { return std::vector<double>(v.data(), v.data() + v.size()); }
+
 Observable force_component(const char* name, const char* doc, int k, bool peak) {
-  return {name, "N", doc, Observable::Needs::nothing, false, [k, peak](const SceneResult& r, const ObservableOptions&) {
-            const auto& f = forming(r).force;
-            return peak ? f.peak()(k) : f.final_force()(k);
-          }};
+  Observable o{name, "N", doc, Observable::Needs::nothing, false, [k, peak](const SceneResult& r, const ObservableOptions&) {
+                 const auto& f = forming(r).force;
+                 return peak ? f.peak()(k) : f.final_force()(k);
+               }};
+  if (peak) return with_sample_derivatives(std::move(o), k, [k](const ToolForceHistory& h) { return peak_sample(h, k); });
+  return with_sample_derivatives(std::move(o), k, [](const ToolForceHistory& h) { return last_sample(h); });
 }
 
 Observable window_mean(const char* name, const char* doc, int k) {
-  return {name, "N", doc, Observable::Needs::window, false, [k](const SceneResult& r, const ObservableOptions& o) {
-            const WindowStats s = window_stats(forming(r).force, *o.window);
-            return s.rows == 0 ? kNaN : s.sum[k] / static_cast<double>(s.rows);
-          }};
+  Observable o{name, "N", doc, Observable::Needs::window, false, [k](const SceneResult& r, const ObservableOptions& options) {
+                 const WindowStats s = window_stats(forming(r).force, *options.window);
+                 return s.rows == 0 ? kNaN : s.sum[k] / static_cast<double>(s.rows);
+               }};
+  o.derivatives = [k](const SceneResult& r, const ObservableOptions& options) {
+    const auto d = window_derivatives(forming(r), *options.window, k);
+    return d ? as_vector(d->sum / static_cast<double>(d->rows)) : std::vector<double>{};
+  };
+  return o;
+}
+
+// (max - min) / mean of Fz over the window.
+Observable ripple_fz() {
+  Observable o{"ripple_fz", "", "(max - min) / mean of Fz over the travel window", Observable::Needs::window, false,
+               [](const SceneResult& r, const ObservableOptions& options) {
+                 const WindowStats s = window_stats(forming(r).force, *options.window);
+                 return s.rows == 0 ? kNaN : (s.max_fz - s.min_fz) / (s.sum[2] / static_cast<double>(s.rows));
+               }};
+  o.derivatives = [](const SceneResult& r, const ObservableOptions& options) {
+    const WindowStats s = window_stats(forming(r).force, *options.window);
+    const auto d = window_derivatives(forming(r), *options.window, 2);
+    if (!d || s.rows == 0) return std::vector<double>{};
+    const double n = static_cast<double>(s.rows), mean = s.sum[2] / n;
+    return as_vector((d->at_max - d->at_min) / mean - (s.max_fz - s.min_fz) / (mean * mean) * (d->sum / n));
+  };
+  return o;
 }
 
 std::vector<Observable> forming_observables() {
@@ -74,11 +128,7 @@ std::vector<Observable> forming_observables() {
       window_mean("mean_fx", "mean Fx over the travel window", 0),
       window_mean("mean_fy", "mean Fy over the travel window", 1),
       window_mean("mean_fz", "mean Fz over the travel window", 2),
-      {"ripple_fz", "", "(max - min) / mean of Fz over the travel window", Observable::Needs::window, false,
-       [](const SceneResult& r, const ObservableOptions& options) {
-         const WindowStats s = window_stats(forming(r).force, *options.window);
-         return s.rows == 0 ? kNaN : (s.max_fz - s.min_fz) / (s.sum[2] / static_cast<double>(s.rows));
-       }},
+      ripple_fz(),
   };
   for (Observable& f : fe_run_observables()) o.push_back(std::move(f));
   return o;
