@@ -29,6 +29,20 @@ std::vector<double> metrics_of(const SweepSpec& s, const std::vector<const scene
   return out;
 }
 
+// d ln(metric) / d ln(input) = (input / metric) d metric / d input of the metrics with
+// derivatives (s.exact_metrics), from a run with sensitivities with respect to the inputs.
+std::vector<double> log_derivatives_of(const SweepSpec& s, const std::vector<const scene::Observable*>& observables, const scene::SceneResult& r,
+                                       const std::vector<double>& inputs, const std::vector<double>& metrics) {
+  std::vector<double> out;
+  for (int m : s.exact_metrics) {
+    const auto um = static_cast<std::size_t>(m);
+    const std::vector<double> d = r.ok() ? observables[um]->derivatives(r, s.options) : std::vector<double>{};
+    for (std::size_t k = 0; k < s.inputs.size(); ++k)
+      out.push_back(d.size() == s.inputs.size() && metrics[um] != 0.0 ? d[k] * inputs[k] / metrics[um] : kNaN);
+  }
+  return out;
+}
+
 // The kind's observables behind s.metrics, looked up once per sweep (read_sweep_file has checked
 // the names; a spec built in code gets the same error).
 std::vector<const scene::Observable*> observables_of(const SweepSpec& s) {
@@ -56,17 +70,21 @@ SweepPoint run_point(const SweepSpec& s, const std::vector<const scene::Observab
       if (!why.empty()) throw std::invalid_argument(s.inputs[k].name + ": " + why);
     }
     std::unique_ptr<scene::SceneResult> r;
+    scene::RunControl control;
+    if (s.exact)
+      for (const auto& in : s.inputs) control.sensitivities.push_back(in.name);
     if (dir) {
       // Under the sweep directory, whose lock the sweep holds.
       const auto out = io::OutputDirectory::prepare((dir->path() / sub).string(), false, {}, io::OutputDirectory::Locking::none);
       if (record) dir->record();  // points/ in the sweep directory's manifest
-      r = sc->run(scene::RunFiles(out), {});
+      r = sc->run(scene::RunFiles(out), control);
     } else {
-      r = sc->run(scene::RunFiles(), {});
+      r = sc->run(scene::RunFiles(), control);
     }
     p.ok = r->ok();
     p.message = r->message;
     p.metrics = metrics_of(s, observables, *r);
+    if (s.exact) p.log_derivatives = log_derivatives_of(s, observables, *r, values, p.metrics);
   } catch (const std::exception& e) {
     p.ok = false;
     p.message = e.what();
@@ -105,7 +123,7 @@ std::string point_dir(std::size_t i, std::size_t n) {
 // A point's job and answer as binary archives (exact bits, checked kind and version).
 constexpr const char* kPointJobKind = "sweep-point-job";
 constexpr const char* kPointAnswerKind = "sweep-point-answer";
-constexpr std::uint32_t kPointVersion = 1;
+constexpr std::uint32_t kPointVersion = 2;  // 2: with the exact log derivatives
 
 std::string point_job(const std::vector<double>& values, const std::string& sub) {
   io::BinaryWriter w(kPointJobKind, kPointVersion);
@@ -121,6 +139,7 @@ std::string point_answer(const SweepPoint& p) {
   w.boolean(p.ok);
   w.string(p.message);
   w.f64(p.wall_seconds);
+  w.f64s(p.log_derivatives);
   return w.finish();
 }
 
@@ -132,6 +151,7 @@ SweepPoint read_point_answer(const std::string& bytes) {
   p.ok = r.boolean();
   p.message = r.string();
   p.wall_seconds = r.f64();
+  p.log_derivatives = r.f64s();
   r.finish();
   return p;
 }
@@ -190,9 +210,28 @@ std::vector<SweepPoint> run_grid(const SweepSpec& s, const std::vector<const sce
   return run_points(s, obs, o, runs);
 }
 
+// With exact derivatives: the base run alone; metrics without derivatives get NaN.
+std::vector<Sensitivity> run_exact_sensitivities(const SweepSpec& s, const std::vector<const scene::Observable*>& obs, const SweepRunOptions& o) {
+  std::vector<double> base;
+  for (const auto& in : s.inputs) base.push_back(s.scene->input(in.name));
+  const SweepPoint b = run_points(s, obs, o, {{"sensitivity base", base, "sensitivities/base"}}).front();
+  std::vector<Sensitivity> r;
+  for (std::size_t k = 0; k < s.inputs.size(); ++k) {
+    for (std::size_t m = 0; m < s.metrics.size(); ++m) {
+      Sensitivity sv{s.inputs[k].name, s.metrics[m], base[k], b.metrics[m], kNaN};
+      for (std::size_t e = 0; e < s.exact_metrics.size(); ++e)
+        if (static_cast<std::size_t>(s.exact_metrics[e]) == m && b.log_derivatives.size() == s.exact_metrics.size() * s.inputs.size())
+          sv.value = b.log_derivatives[e * s.inputs.size() + k];
+      r.push_back(sv);
+    }
+  }
+  return r;
+}
+
 // Central differences of ln(metric) in ln(input) at the scene's own values (base, base (1 +- h)).
 std::vector<Sensitivity> run_sensitivities(const SweepSpec& s, const std::vector<const scene::Observable*>& obs,
                                            const SweepRunOptions& o) {
+  if (s.exact) return run_exact_sensitivities(s, obs, o);
   std::vector<double> base;
   bool any = false;
   for (const auto& in : s.inputs) {
@@ -303,12 +342,16 @@ std::string sweep_csv(const SweepSpec& s, const SweepResult& r) {
   std::vector<std::string> cols;
   for (const auto& in : s.inputs) cols.push_back(in.name);
   for (const auto& m : s.metrics) cols.push_back(m);
+  for (int m : s.exact_metrics)
+    for (const auto& in : s.inputs) cols.push_back("dln(" + s.metrics[static_cast<std::size_t>(m)] + ")/dln(" + in.name + ")");
   cols.push_back("wall_seconds");
   cols.push_back("ok");
   io::CsvTable t(cols);
+  const std::size_t derivatives = s.exact_metrics.size() * s.inputs.size();
   for (const auto& p : r.points) {
     std::vector<double> row = p.inputs;
     row.insert(row.end(), p.metrics.begin(), p.metrics.end());
+    for (std::size_t i = 0; i < derivatives; ++i) row.push_back(i < p.log_derivatives.size() ? p.log_derivatives[i] : kNaN);
     row.push_back(p.wall_seconds);
     row.push_back(p.ok ? 1.0 : 0.0);
     t.add_row(row);

@@ -33,11 +33,20 @@ struct SweepSpec {
   scene::ObservableOptions options;   // [sweep] window or contours
   bool sensitivities = true;          // default: true for material points, false for FE scenes
   double relative_step = 0.01;        // for the sensitivities
+  // [sweep] exact_sensitivities: every FE run carries the exact derivatives with respect to the
+  // inputs (RunControl::sensitivities): each point gets d ln(metric) / d ln(input) of the
+  // metrics that have derivatives (exact_metrics), and the base point's sensitivities come from
+  // its run alone instead of central differences.
+  bool exact = false;
+  std::vector<int> exact_metrics;  // indices into metrics with derivatives (exact only)
 };
 
 struct SweepPoint {
   std::vector<double> inputs;
   std::vector<double> metrics;  // NaN where not available
+  // exact: per metric of exact_metrics, per input: d ln(metric) / d ln(input) (NaN where not
+  // available)
+  std::vector<double> log_derivatives;
   bool ok = false;
   std::string message;
   double wall_seconds = 0.0;

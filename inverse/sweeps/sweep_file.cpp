@@ -5,6 +5,7 @@
 #include "forward/io/toml_reader.hpp"
 #include "forward/material/material_inputs.hpp"
 #include "forward/scenes/scene_registry.hpp"
+#include "forward/scenes/sensitivity_refusal.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -146,6 +147,23 @@ void check_grid(const SweepSpec& s) {
   }
 }
 
+// [sweep] exact_sensitivities: the scene must run with sensitivities with respect to every input
+// (sensitivity_refusal.hpp) and a metric must have derivatives.
+void read_exact(const io::TomlTable& st, SweepSpec& s) {
+  s.exact = st.boolean("exact_sensitivities", false);
+  if (!s.exact) return;
+  std::vector<std::string> names;
+  for (const auto& in : s.inputs) names.push_back(in.name);
+  if (const auto r = scene::sensitivity_refusal(*s.scene, names))
+    st.fail("exact_sensitivities", (r->key == "--sensitivities" ? "" : r->key + " = " + r->value + ": ") + r->why);
+  std::string without;
+  for (std::size_t m = 0; m < s.metrics.size(); ++m) {
+    if (s.kind->find_observable(s.metrics[m])->derivatives) s.exact_metrics.push_back(static_cast<int>(m));
+    else without += (without.empty() ? "" : ", ") + s.metrics[m];
+  }
+  if (s.exact_metrics.empty()) st.fail("exact_sensitivities", "none of the metrics has derivatives (" + without + ")");
+}
+
 }  // namespace
 
 SweepSpec read_sweep_file(const std::string& path) {
@@ -153,7 +171,7 @@ SweepSpec read_sweep_file(const std::string& path) {
   root.allow_only({"sweep", "inputs"});
   const auto st = root.table("sweep");
   if (!st) root.fail("sweep", "required table [sweep] is missing");
-  st->allow_only({"name", "scene", "card", "metrics", "sensitivities", "relative_step", "window", "contours"});
+  st->allow_only({"name", "scene", "card", "metrics", "sensitivities", "relative_step", "window", "contours", "exact_sensitivities"});
   SweepSpec s;
   s.file = path;
   s.name = st->string("name", std::filesystem::path(path).stem().string());
@@ -184,6 +202,7 @@ SweepSpec read_sweep_file(const std::string& path) {
   for (const auto& name : it->keys()) s.inputs.push_back(read_input(*it, name, s));
   if (s.inputs.empty()) root.fail("inputs", "at least one input");
   check_grid(s);
+  read_exact(*st, s);
   return s;
 }
 

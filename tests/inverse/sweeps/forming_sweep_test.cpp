@@ -191,6 +191,48 @@ TEST(FormingSweep, SensitivitiesAtTheScenesValues) {
   EXPECT_FALSE(fs::exists(tmp.path / "out" / "sensitivities" / "contact.friction_up"));
 }
 
+// Exact sensitivities (exact_sensitivities = true): each point's d ln(metric) / d ln(input) from
+// its own run with sensitivities, for the metrics that have derivatives; the base point's equal
+// the central differences of the sweep without them (relative step 1e-3) within 1e-4, from one
+// run instead of five.
+TEST(FormingSweep, ExactSensitivitiesAtEveryPoint) {
+  TempDir tmp("exact");
+  const fs::path scene = write_tiny_indent(tmp.path);
+  const std::string inputs = "[inputs.\"contact.penalty\"]\nvalues = [1000.0, 4000.0]\n[inputs.\"swift.K\"]\nvalues = [180.0]\n";
+  const std::string head = sweep_head(scene, "\"peak_fz\", \"mean_fz\", \"max_penetration\"") + "window = [0.2, 0.5]\nsensitivities = true\n";
+  const auto exact = inverse::read_sweep_file(write_sweep(tmp.path, head + "exact_sensitivities = true\n" + inputs).string());
+  ASSERT_EQ(exact.exact_metrics, (std::vector<int>{0, 1}));  // max_penetration has no derivatives
+  const auto re = inverse::run_sweep(exact, {1, nullptr, {}});
+  const auto central = inverse::read_sweep_file(write_sweep(tmp.path, head + "relative_step = 1e-3\n" + inputs).string());
+  const auto rc = inverse::run_sweep(central, {1, nullptr, {}});
+  ASSERT_EQ(re.points.size(), 2u);
+  for (std::size_t i = 0; i < re.points.size(); ++i) {
+    ASSERT_TRUE(re.points[i].ok) << re.points[i].message;
+    EXPECT_EQ(re.points[i].metrics, rc.points[i].metrics);  // the same runs, bit for bit
+    ASSERT_EQ(re.points[i].log_derivatives.size(), 4u);     // (peak_fz, mean_fz) x (penalty, K)
+  }
+  // Kp's share falls as the penalty stiffens; K's stays near one (the force scales with K).
+  EXPECT_GT(re.points[0].log_derivatives[0], re.points[1].log_derivatives[0]);
+  EXPECT_NEAR(re.points[0].log_derivatives[1], 1.0, 0.3);
+  ASSERT_EQ(re.sensitivities.size(), rc.sensitivities.size());
+  for (std::size_t j = 0; j < re.sensitivities.size(); ++j) {
+    const auto &a = re.sensitivities[j], &b = rc.sensitivities[j];
+    ASSERT_EQ(a.input + a.metric, b.input + b.metric);
+    std::printf("%s / %s: exact %.8g, central %.8g\n", a.metric.c_str(), a.input.c_str(), a.value, b.value);
+    if (a.metric == "max_penetration") EXPECT_TRUE(std::isnan(a.value));
+    else EXPECT_NEAR(a.value, b.value, 1e-4 * std::abs(b.value)) << a.metric << " " << a.input;
+  }
+  const std::string csv = inverse::sweep_csv(exact, re);
+  EXPECT_NE(csv.find("dln(peak_fz)/dln(contact.penalty),dln(peak_fz)/dln(swift.K),dln(mean_fz)/dln(contact.penalty)"), std::string::npos) << csv;
+  EXPECT_EQ(csv.find("dln(max_penetration)"), std::string::npos);
+  // Friction, or no metric with derivatives: an input error naming the key.
+  const std::string e = read_error(write_sweep(tmp.path, sweep_head(scene, "\"peak_fz\"") + "exact_sensitivities = true\n[inputs.\"contact.friction\"]\nvalues = [0.1]\n"));
+  EXPECT_NE(e.find("exact_sensitivities"), std::string::npos) << e;
+  EXPECT_NE(e.find("contact.friction"), std::string::npos) << e;
+  const std::string counts = read_error(write_sweep(tmp.path, sweep_head(scene, "\"newton_iterations\"") + "exact_sensitivities = true\n" + inputs));
+  EXPECT_NE(counts.find("none of the metrics has derivatives"), std::string::npos) << counts;
+}
+
 TEST(FormingSweep, InputErrorsNameFileAndKey) {
   TempDir tmp("errors");
   const fs::path scene = write_tiny_indent(tmp.path);
