@@ -37,8 +37,8 @@ void analyse_conflicts(const FitProblem& fp, const FitRunOptions& options, FitRe
     o.algorithm = "levenberg_marquardt";
     if (o.progress) {
       o.progress->set_phase(e->name() + " alone");
-      // One experiment: its scene file's point and 2p neighbours, if it has FE runs.
-      o.progress->set_runs_per_iteration(e->scene_file().empty() ? 0 : 1 + 2L * one.parameters->num_free());
+      // One experiment: its scene file's point and (central differences) 2p neighbours, if it has FE runs.
+      o.progress->set_runs_per_iteration(e->scene_file().empty() ? 0 : e->exact_columns() > 0 ? 1 : 1 + 2L * one.parameters->num_free());
     }
     const FitResult r = fit_with_ceres(one, o);
     FitResult::Alone a;

@@ -15,12 +15,18 @@ namespace spifit::inverse {
 namespace {
 
 // The FE forward runs one iteration asks: per FE scene file of the experiments, the point and,
-// unless derivative_free (NLopt), its 2p central-difference neighbours.
+// unless derivative_free (NLopt) or its experiments take exact derivatives from that run, its 2p
+// central-difference neighbours.
 long fe_runs_per_iteration(const std::vector<std::shared_ptr<Experiment>>& experiments, int free_parameters, bool derivative_free) {
-  std::set<std::string> files;
-  for (const auto& e : experiments)
-    if (!e->scene_file().empty()) files.insert(e->scene_file());
-  return static_cast<long>(files.size()) * (derivative_free ? 1 : 1 + 2L * free_parameters);
+  std::set<std::string> files, exact;
+  for (const auto& e : experiments) {
+    if (e->scene_file().empty()) continue;
+    files.insert(e->scene_file());
+    if (e->exact_columns() > 0) exact.insert(e->scene_file());
+  }
+  long runs = 0;
+  for (const auto& f : files) runs += derivative_free || exact.count(f) ? 1 : 1 + 2L * free_parameters;
+  return runs;
 }
 
 // The forward runs of the fit: per experiment and, with FE experiments, per scene file.

@@ -8,6 +8,7 @@
 #include "inverse/experiments/synthetic.hpp"
 #include "inverse/fit/exact_cost.hpp"
 #include "inverse/fit/fit_file.hpp"
+#include "inverse/fit/fit_progress.hpp"
 #include "inverse/fit/run_fit.hpp"
 #include "tests/support/input_errors.hpp"
 #include "tests/support/temp_files.hpp"
@@ -150,7 +151,11 @@ TEST(ExactFeJacobian, FitReachesTheCentralDifferenceCard) {
                     "[parameters.\"swift.n\"]\ninitial = 0.3\nlower = 0.05\nupper = 0.5\nlog = true\n";
   inverse::FitRunOptions options;
   options.threads = 2;
+  long expected = -1;  // the runs the progress lines expect per iteration
+  options.progress = std::make_shared<inverse::FitProgress>([&](const inverse::FitProgressEvent& e) { expected = e.runs_expected; });
   const auto exact = inverse::run_fit(inverse::read_fit_file(write_fit(fit_text(d, "", two)).string()), options);
+  EXPECT_EQ(expected, 1);  // one run per point, not 1 + 2p
+  options.progress = nullptr;
   const auto central = inverse::run_fit(inverse::read_fit_file(write_fit(fit_text(d, "jacobian = \"central\"\n", two)).string()), options);
   ASSERT_TRUE(exact.usable) << exact.termination;
   ASSERT_TRUE(central.usable) << central.termination;
