@@ -352,20 +352,15 @@ ForceCurve force_curve(const scene::ToolForceHistory& h, const Eigen::Vector3d& 
 }
 
 bool add_force_curve_derivatives(const scene::SceneResult& r, const std::string& y, ForceCurve* c) {
-  const io::Series* table = r.force_sensitivities();
   const scene::ToolForceHistory* force = r.tool_force();
-  if (!table || !force || table->size() != force->samples().size() || table->columns().size() < 8 || (table->columns().size() - 2) % 6 != 0) return false;
-  const auto columns = static_cast<Eigen::Index>((table->columns().size() - 2) / 6);  // time, lambda; per parameter dF and p dF
   const auto n = static_cast<Eigen::Index>(c->x.size());
-  if (n < 1 || static_cast<std::size_t>(n - 1) > force->samples().size()) return false;
-  c->dy = Eigen::MatrixXd::Zero(n, columns);  // row 0: the path's start, zero force
-  for (Eigen::Index j = 1; j < n; ++j) {
+  if (!force || n < 1 || static_cast<std::size_t>(n - 1) > force->samples().size()) return false;
+  for (Eigen::Index j = 1; j < n; ++j) {  // row 0: the path's start, zero force
     const auto sample = static_cast<std::size_t>(j - 1);
-    const std::vector<double>& row = table->row(sample);
-    for (Eigen::Index k = 0; k < columns; ++k) {
-      const auto at = static_cast<std::size_t>(2 + 6 * k);
-      c->dy(j, k) = component(y, force->samples()[sample].centre, Eigen::Vector3d(row[at], row[at + 1], row[at + 2]));
-    }
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> d = r.force_sensitivity(sample);
+    if (d.cols() == 0) return false;
+    if (j == 1) c->dy = Eigen::MatrixXd::Zero(n, d.cols());
+    for (Eigen::Index k = 0; k < d.cols(); ++k) c->dy(j, k) = component(y, force->samples()[sample].centre, d.col(k));
   }
   return true;
 }

@@ -14,7 +14,7 @@ namespace spifit::scene {
 std::vector<Observable> fe_run_observables();
 
 // o with the derivatives of force component k (0 x, 1 y, 2 z) at the sample `pick` chooses (an
-// FeSceneResult's force_sensitivity there).
+// SceneResult::force_sensitivity there).
 using SamplePick = std::function<std::optional<std::size_t>(const ToolForceHistory&)>;
 Observable with_sample_derivatives(Observable o, int k, SamplePick pick);
 

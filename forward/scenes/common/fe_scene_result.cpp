@@ -6,18 +6,6 @@
 
 namespace spifit::scene {
 
-Eigen::Matrix<double, 3, Eigen::Dynamic> FeSceneResult::force_sensitivity(std::size_t i) const {
-  const std::size_t columns = sensitivities.columns().size();
-  if (sensitivities.size() != force.samples().size() || i >= sensitivities.size() || columns < 8 || (columns - 2) % 6 != 0)
-    return Eigen::Matrix<double, 3, Eigen::Dynamic>(3, 0);
-  const auto q = static_cast<Eigen::Index>((columns - 2) / 6);  // time, lambda; per parameter dF and p dF
-  Eigen::Matrix<double, 3, Eigen::Dynamic> d(3, q);
-  const std::vector<double>& row = sensitivities.row(i);
-  for (Eigen::Index k = 0; k < q; ++k)
-    for (int c = 0; c < 3; ++c) d(c, k) = row[static_cast<std::size_t>(2 + 6 * k + c)];
-  return d;
-}
-
 void FeSceneResult::take(FeRunOutcome outcome, const ForceLog& force_log, const EnergyLog& energy_log, const contact::ContactOptions& contact,
                          double thickness, double element_size) {
   run = std::move(outcome);

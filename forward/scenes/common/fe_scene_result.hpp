@@ -29,9 +29,6 @@ class FeSceneResult : public SceneResult {
   io::Series sensitivities;  // the SensitivityLog's rows; empty without RunControl::sensitivities
 
   const ToolForceHistory* tool_force() const override { return &force; }
-  // The derivatives of force sample i (rows x, y, z; one column per parameter) in a run with
-  // sensitivities (the rows of `sensitivities` follow the samples); no columns otherwise.
-  Eigen::Matrix<double, 3, Eigen::Dynamic> force_sensitivity(std::size_t i) const;
   const io::Series* force_sensitivities() const override { return sensitivities.empty() ? nullptr : &sensitivities; }
 
   // After the run: its outcome (status, message, wall time), the force and energy logs, the

@@ -1,5 +1,7 @@
 #include "forward/scenes/common/scene_result.hpp"
 
+#include "forward/scenes/common/tool_force_history.hpp"
+
 namespace spifit::scene {
 
 const char* contour_mean_names() { return "fr, ftheta, fz, fx, fy, ftheta_over_fz, fr_over_fz"; }
@@ -7,6 +9,21 @@ bool is_contour_mean(const std::string& y) {
   for (const char* n : {"fr", "ftheta", "fz", "fx", "fy", "ftheta_over_fz", "fr_over_fz"})
     if (y == n) return true;
   return false;
+}
+
+Eigen::Matrix<double, 3, Eigen::Dynamic> SceneResult::force_sensitivity(std::size_t i) const {
+  const io::Series* table = force_sensitivities();
+  const ToolForceHistory* force = tool_force();
+  if (!table || !force || table->size() != force->samples().size() || i >= table->size()) return Eigen::Matrix<double, 3, Eigen::Dynamic>(3, 0);
+  // sensitivities.csv's layout (sensitivity_log.hpp): time, lambda, then per parameter dF and p dF.
+  const std::size_t columns = table->columns().size();
+  if (columns < 8 || (columns - 2) % 6 != 0) return Eigen::Matrix<double, 3, Eigen::Dynamic>(3, 0);
+  const auto q = static_cast<Eigen::Index>((columns - 2) / 6);
+  Eigen::Matrix<double, 3, Eigen::Dynamic> d(3, q);
+  const std::vector<double>& row = table->row(i);
+  for (Eigen::Index k = 0; k < q; ++k)
+    for (int c = 0; c < 3; ++c) d(c, k) = row[static_cast<std::size_t>(2 + 6 * k + c)];
+  return d;
 }
 
 void SceneResult::add_status(nlohmann::json& j) const {

@@ -50,6 +50,9 @@ class SceneResult {
   // the tool force's parameter sensitivities after every increment of a run with
   // RunControl::sensitivities (the rows of sensitivities.csv, sensitivity_log.hpp);
   virtual const io::Series* force_sensitivities() const { return nullptr; }
+  // read off it: the derivatives of force sample i (rows x, y, z; one column per parameter, in
+  // RunControl::sensitivities' order), no columns when the result holds none for sample i;
+  Eigen::Matrix<double, 3, Eigen::Dynamic> force_sensitivity(std::size_t i) const;
   // the section at a named path point (Scene::section_points()), x in {x, x0}, y in {z, thickness},
   // sorted by x; empty too when two nodes share an x (the section folds over);
   virtual ResultCurve path_section(const std::string& /*point*/, const std::string& /*x*/, const std::string& /*y*/) const { return {}; }
