@@ -160,7 +160,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   auto* force = cmd->add_flag("--force", o->force, "replace an existing output directory");
   auto* resume = cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
   cmd->add_option("--sensitivities", o->sensitivities,
-                  "material parameters and contact.penalty, comma-separated (e.g. swift.K,elastic.E): write the tool force's exact derivatives "
+                  "material parameters, contact.penalty and contact.friction, comma-separated (e.g. swift.K,elastic.E): write the tool force's exact derivatives "
                   "with respect to them to DIR/sensitivities.csv (implicit indent, indent_line and line scenes)")
       ->delimiter(',')
       ->excludes(resume);
@@ -211,14 +211,16 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
 }
 
 void add_check_sensitivities_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
-  struct Opts { std::string scene; std::vector<std::string> names; double relative_step = 1e-4; };
+  struct Opts { std::string scene; std::vector<std::string> names; double relative_step = 1e-4, tolerance = 0.0; };
   auto o = std::make_shared<Opts>();
   auto* cmd = app.add_subcommand("check-sensitivities",
                                  "Compare a scene's exact tool-force derivatives (run --sensitivities) with central differences of whole runs "
                                  "(steps h and h/4); exit 1 when one lies outside the central differences' own spread");
   cmd->add_option("SCENE", o->scene, "scene file (TOML): an implicit indent, indent_line or line scene")->required();
-  cmd->add_option("--sensitivities", o->names, "material parameters and contact.penalty, comma-separated (e.g. swift.K,elastic.E)")->delimiter(',')->required();
+  cmd->add_option("--sensitivities", o->names, "material parameters, contact.penalty and contact.friction, comma-separated (e.g. swift.K,elastic.E)")->delimiter(',')->required();
   cmd->add_option("--relative-step", o->relative_step, "h as a fraction of each parameter's value (default 1e-4)")->check(CLI::Range(1e-12, 0.1));
+  cmd->add_option("--tolerance", o->tolerance, "force and displacement tolerance of every run's Newton solver instead of the scene's (e.g. 1e-10 with friction; default 0: the scene's)")
+      ->check(CLI::Range(0.0, 1e-3));
   cmd->callback([o, &g, &exit_code] {
     const auto scene = scene::read_scene(o->scene);
     refuse_sensitivities_early(*scene, o->names);
@@ -226,7 +228,7 @@ void add_check_sensitivities_command(CLI::App& app, const GlobalOptions& g, int&
     for (const auto& n : o->names) joined += (joined.empty() ? "" : ",") + n;
     scene::SensitivityCheck c;
     try {
-      c = scene::check_sensitivities(*scene, o->names, o->relative_step, [&g](const std::string& what) {
+      c = scene::check_sensitivities(*scene, o->names, o->relative_step, o->tolerance, [&g](const std::string& what) {
         if (!g.quiet) std::cerr << "spifit: running " << what << "\n";
       });
     } catch (const std::invalid_argument& e) {

@@ -32,10 +32,10 @@ constexpr double kPhongAlpha = 0.5;  // bilinear quads: reproduces a sphere to s
 // derivatives). Phong: x = x_lin - alpha sum_I N_I ((x_lin - s_I) . d_I) d_I with
 // s_I = x_I + offset d_I, the projection of x_lin on node I's tangent plane blended in.
 template <typename T>
-Eigen::Matrix<T, 3, 1> surface_of(const T* p, const Eigen::Vector4d& N, double offset, bool phong) {
+Eigen::Matrix<T, 3, 1> surface_at(const T* p, const Eigen::Vector4d& N, const T& h, bool phong) {
   using V = Eigen::Matrix<T, 3, 1>;
   using element::lift;
-  const T zero = lift<T>(0.0), h = lift<T>(offset);
+  const T zero = lift<T>(0.0);
   V s[4], d[4];
   V lin(zero, zero, zero);
   for (int I = 0; I < 4; ++I) {
@@ -51,6 +51,11 @@ Eigen::Matrix<T, 3, 1> surface_of(const T* p, const Eigen::Vector4d& N, double o
     out -= d[I] * (lift<T>(kPhongAlpha * N(I)) * height);
   }
   return out;
+}
+
+template <typename T>
+Eigen::Matrix<T, 3, 1> surface_of(const T* p, const Eigen::Vector4d& N, double offset, bool phong) {
+  return surface_at(p, N, element::lift<T>(offset), phong);
 }
 
 std::array<double, 24> pack(const element::NodeVectors& x, const element::NodeVectors& d) {
@@ -88,7 +93,7 @@ bool tool_misses_element(const element::NodeVectors& x, double offset, const Sph
 Eigen::Vector3d friction_traction(const Eigen::Vector3d& xp, const Eigen::Vector3d& xp0, const Eigen::Vector3d& v,
                                   const Eigen::Vector3d& n, const Eigen::Matrix3d& P, double rho, double pressure,
                                   const Eigen::Vector3d& committed_traction, const SphereTool& tool, double kp_n, double kt,
-                                  double mu, Eigen::Vector3d& slip_out, Eigen::Matrix3d& dq) {
+                                  double mu, Eigen::Vector3d& slip_out, bool& sliding, Eigen::Matrix3d& dq) {
   // Slip of the sheet point relative to the tool over the increment; the committed traction
   // is zero for a point that was not in contact.
   // A spinning tool's surface point moves by spin x (xp - centre) on top of the translation.
@@ -101,7 +106,8 @@ Eigen::Vector3d friction_traction(const Eigen::Vector3d& xp, const Eigen::Vector
   spin_cross << 0.0, -tool.spin.z(), tool.spin.y(), tool.spin.z(), 0.0, -tool.spin.x(), -tool.spin.y(), tool.spin.x(), 0.0;
   Eigen::Matrix3d dttr = -kt * P * (Eigen::Matrix3d::Identity() - spin_cross) - (n.dot(w) / rho) * P - n * (P * w).transpose() / rho;
   const double norm = ttr.norm(), limit = mu * pressure;
-  if (norm <= limit) {
+  sliding = norm > limit;
+  if (!sliding) {
     dq += dttr;
     return ttr;
   }
@@ -152,7 +158,99 @@ void add_flat_point(const Eigen::Vector4d& N, double offset, const Eigen::Vector
     }
   }
 }
+using SensJet = material::SensitivityScalar;
+using SensVec = Eigen::Matrix<SensJet, 3, 1>;
+
+SensJet dot(const SensVec& a, const SensVec& b) { return a(0) * b(0) + a(1) * b(1) + a(2) * b(2); }
+
+SensVec lifted(const Eigen::Vector3d& a) { return SensVec(SensJet(a(0)), SensJet(a(1)), SensJet(a(2))); }
+
+// A parameter's value with a unit derivative in its slot (none: a constant).
+SensJet parameter(double value, int slot) {
+  SensJet s(value);
+  if (slot >= 0) s.v(slot) = 1.0;
+  return s;
+}
+
+// The force per area on the sheet q = p n + t at a point in contact, and its tangential traction
+// t, in Jets: friction_traction's law along the branch the double evaluation took (sliding: on
+// the cone |t| = mu p). friction: the traction is evaluated (mu > 0, or mu a parameter).
+SensVec point_force(const SensVec& xp, const SensVec& xp0, const SphereTool& tool, const SensVec& committed_traction, const SensJet& kp,
+                    const SensJet& kt, const SensJet& mu, bool friction, bool sliding, SensVec* t) {
+  const SensVec v = xp - lifted(tool.centre);
+  const SensJet rho = sqrt(dot(v, v));
+  const SensVec n = v / rho;
+  const SensJet pressure = -kp * (rho - tool.radius);
+  const SensJet zero(0.0);
+  *t = SensVec(zero, zero, zero);
+  if (!friction) return n * pressure;
+  const Eigen::Vector3d& s = tool.spin;
+  const SensVec spin_v(s(1) * v(2) - s(2) * v(1), s(2) * v(0) - s(0) * v(2), s(0) * v(1) - s(1) * v(0));
+  const SensVec slip = (xp - xp0) - lifted(tool.centre - tool.centre_committed) - spin_v;
+  const SensVec w = committed_traction - slip * kt;
+  const SensVec trial = w - n * dot(n, w);
+  if (!sliding) {
+    *t = trial;
+  } else {
+    const SensJet norm2 = dot(trial, trial);
+    if (norm2.a > 0.0) *t = trial * (mu * pressure / sqrt(norm2));
+  }
+  return n * pressure + *t;
+}
 }  // namespace
+
+void ShellContact::enable_sensitivities(const ParameterSlots& slots) {
+  if (options_.surface != ContactOptions::Surface::flat)
+    throw std::invalid_argument("contact.surface = \"phong\": the curved contact surface has no parameter sensitivities yet");
+  slots_ = slots;
+  sensitivities_ = true;
+  committed_dt_.assign(committed_.size(), TractionDerivatives::Zero());
+  trial_dt_ = committed_dt_;
+}
+
+bool ShellContact::element_derivatives(int e, const element::NodeVectors& x, const element::NodeVectors& d, const element::NodeVectors& x0,
+                                       const element::NodeVectors& d0, double offset, const SphereTool& tool, const ConfigurationDerivatives& dc,
+                                       element::SensDofs* drp, bool keep, int tool_index) {
+  if (!sensitivities_) throw std::logic_error("contact: element_derivatives without enable_sensitivities");
+  const std::size_t base = static_cast<std::size_t>(e * per_element_);
+  const std::size_t state = base + static_cast<std::size_t>(tool_index) * areas_.size();
+  if (keep)
+    for (int p = 0; p < per_element_; ++p) trial_dt_[state + static_cast<std::size_t>(p)].setZero();
+  if (tool_misses_element(x, offset, tool)) return false;
+  const auto pv = pack(x, d), pv0 = pack(x0, d0);
+  std::array<SensJet, 24> pj, pj0;
+  for (int i = 0; i < 24; ++i) {
+    const auto ui = static_cast<std::size_t>(i);
+    pj[ui] = SensJet(pv[ui]);
+    if (dc.p) pj[ui].v = dc.p->row(i).transpose();
+    pj0[ui] = material::with_derivatives(pv0[ui], dc.p0.row(i));
+  }
+  const SensJet o = material::with_derivatives(offset, dc.offset);
+  const SensJet kp = parameter(options_.penalty, slots_.penalty);
+  const SensJet kt = options_.tangential_penalty > 0.0 ? SensJet(options_.tangential_penalty) : kp;
+  const SensJet mu = parameter(options_.friction, slots_.friction);
+  const bool friction = options_.friction > 0.0 || slots_.friction >= 0;
+  bool any = false;
+  for (int p = 0; p < per_element_; ++p) {
+    const std::size_t id = base + static_cast<std::size_t>(p), sid = state + static_cast<std::size_t>(p);
+    if (!trial_[sid].active) continue;
+    any = true;
+    const Eigen::Vector4d& N = points_[static_cast<std::size_t>(p)].N;
+    const SensVec xp = surface_at(pj.data(), N, o, false), xp0 = surface_at(pj0.data(), N, o, false);
+    SensVec tc;
+    for (int k = 0; k < 3; ++k) tc(k) = material::with_derivatives(committed_[sid].traction(k), committed_dt_[sid].row(k));
+    SensVec t;
+    const SensVec f = point_force(xp, xp0, tool, tc, kp, kt, mu, friction, trial_[sid].sliding, &t) * SensJet(-areas_[id]);
+    if (keep)
+      for (int k = 0; k < 3; ++k) trial_dt_[sid].row(k) = t(k).v.transpose();
+    for (int I = 0; I < 4; ++I)
+      for (int k = 0; k < 3; ++k) {
+        drp->row(6 * I + k) += (f(k) * N(I)).v.transpose();
+        drp->row(6 * I + 3 + k) += (f(k) * (o * N(I))).v.transpose();
+      }
+  }
+  return any;
+}
 
 Eigen::Vector3d ShellContact::surface_point(const ContactOptions& o, const Eigen::Vector4d& N, const element::NodeVectors& x,
                                             const element::NodeVectors& d, double offset) {
@@ -260,8 +358,10 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
     Eigen::Matrix3d dq = -kp_n * n * n.transpose() + (pressure / rho) * P;
     Eigen::Vector3d t = Eigen::Vector3d::Zero();
     if (mu > 0.0) {
-      t = friction_traction(xp, xp0, v, n, P, rho, pressure, committed_[sid].traction, tool, kp_n, kt, mu, st.slip, dq);
+      t = friction_traction(xp, xp0, v, n, P, rho, pressure, committed_[sid].traction, tool, kp_n, kt, mu, st.slip, st.sliding, dq);
       q += t;
+    } else {
+      st.sliding = true;  // frictionless: on the cone |t| <= 0
     }
     st.active = true;
     st.traction = t;
@@ -273,6 +373,7 @@ bool ShellContact::element(int e, const element::NodeVectors& x, const element::
       summary->max_penetration = std::max(summary->max_penetration, -gap);
       summary->max_pressure = std::max(summary->max_pressure, pressure);
       ++summary->active_points;
+      if (!st.sliding) ++summary->sticking_points;
     }
     // r = f_int - f_ext: the contact force is external.
     const Eigen::Vector3d f = -q * da;
@@ -296,6 +397,7 @@ void ShellContact::commit() {
     }
   }
   committed_ = trial_;
+  if (sensitivities_) committed_dt_ = trial_dt_;
 }
 
 double ShellContact::stored_energy() const {
@@ -308,7 +410,10 @@ double ShellContact::stored_energy() const {
   }
   return e;
 }
-void ShellContact::revert() { trial_ = committed_; }
+void ShellContact::revert() {
+  trial_ = committed_;
+  if (sensitivities_) trial_dt_ = committed_dt_;
+}
 
 void ShellContact::save_state(io::BinaryWriter& w) const {
   w.i64(tools_);
@@ -348,6 +453,7 @@ ContactSummary ShellContact::committed_summary(int tool_index) const {
     s.max_penetration = std::max(s.max_penetration, p.penetration);
     s.max_pressure = std::max(s.max_pressure, p.pressure);
     ++s.active_points;
+    if (!p.sliding) ++s.sticking_points;
   }
   return s;
 }

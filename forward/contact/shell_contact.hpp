@@ -7,6 +7,7 @@
 // p-variables (positions and directors), with its exact (non-symmetric once sliding) tangent; the
 // shell's director_to_dofs turns it into nodal forces and moments.
 #include "forward/element/shell_q4.hpp"
+#include "forward/material/sensitivity_scalar.hpp"
 #include "forward/mesh/mesh.hpp"
 
 #include <Eigen/Core>
@@ -51,6 +52,7 @@ struct ContactSummary {
   double max_penetration = 0.0;  // mm
   double max_pressure = 0.0;     // MPa
   int active_points = 0;
+  int sticking_points = 0;  // of the active ones, inside the friction cone (|t| < mu p)
 };
 
 class ShellContact {
@@ -70,6 +72,33 @@ class ShellContact {
                ContactSummary* summary, int tool_index = 0);
   void commit();
   void revert();
+
+  // Direct differentiation (docs/design/sensitivities.md). The derivative slots of the run's
+  // parameters that are the contact's own: the penalty K_p (the tangential K_t too when it
+  // follows K_p) and the friction coefficient mu; -1: not a parameter.
+  struct ParameterSlots {
+    int penalty = -1, friction = -1;
+  };
+  // From the next increment on, the contact points keep the derivatives of their committed
+  // tangential traction (the friction's stick history). Flat facets only (std::invalid_argument).
+  void enable_sensitivities(const ParameterSlots& slots);
+  // How an element's configuration moves with the parameters (a column per slot): its trial
+  // p-variables (positions and directors, 24 rows; null: held fixed, the pseudo-load), the
+  // committed ones and the tool-side offset (half the committed thickness).
+  struct ConfigurationDerivatives {
+    const element::SensDofs* p = nullptr;
+    element::SensDofs p0 = element::SensDofs::Zero();
+    material::SensitivityRow offset = material::SensitivityRow::Zero();
+  };
+  // Adds to drp the derivative of element()'s rp (same arguments, the trial state element()
+  // left: the points in contact and their stick or slip) along dc, with the parameters' own
+  // slots and the committed tractions' derivatives; the derivative of the branch the run took.
+  // With keep, the trial tractions' derivatives are kept for commit() (every element of the
+  // mesh must then be visited, those out of reach included). Returns false when no point of the
+  // element touches the tool. Thread-safe for distinct e.
+  bool element_derivatives(int e, const element::NodeVectors& x, const element::NodeVectors& d, const element::NodeVectors& x0,
+                           const element::NodeVectors& d0, double offset, const SphereTool& tool, const ConfigurationDerivatives& dc,
+                           element::SensDofs* drp, bool keep, int tool_index = 0);
   // Committed contact point states of every tool (checkpoints, bit-exact); load_state resets
   // the trial states to them. io::ArchiveError when the counts differ from this contact's.
   void save_state(io::BinaryWriter& w) const;
@@ -118,6 +147,7 @@ class ShellContact {
     Eigen::Vector3d slip = Eigen::Vector3d::Zero();      // trial only: sheet relative to tool over the increment [mm]
     double pressure = 0.0, penetration = 0.0;
     bool active = false;
+    bool sliding = false;  // on the friction cone (slip), or frictionless; not in checkpoints
   };
   struct PointGeometry {
     Eigen::Vector4d N;
@@ -131,6 +161,12 @@ class ShellContact {
   int per_element_ = 0;
   double dissipation_ = 0.0;  // committed frictional dissipation [N mm]
   int tools_ = 1;
+  // With sensitivities: the slots, and each point's tangential traction derivatives (committed
+  // and trial, like the states).
+  using TractionDerivatives = Eigen::Matrix<double, 3, material::kSensitivitySlots>;
+  ParameterSlots slots_;
+  bool sensitivities_ = false;
+  std::vector<TractionDerivatives> committed_dt_, trial_dt_;
 };
 
 }  // namespace spifit::contact

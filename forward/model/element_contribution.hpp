@@ -44,15 +44,27 @@ class ElementContribution {
   // forces and moments). Returns false when it adds nothing. Called concurrently for distinct e.
   virtual bool add(int e, const ElementConfiguration& c, element::Vec24* rp, element::Mat24* kp) = 0;
   // Why the contribution cannot take part in a run with parameter sensitivities
-  // (docs/design/sensitivities.md); empty when it can: its forces then depend on the parameters
-  // only through the nodes and the element's thickness (the offset of the tool-side surface).
+  // (docs/design/sensitivities.md); empty when it can: enable_sensitivities is then called before
+  // the first increment, and add_derivatives gives its forces' derivatives.
   virtual std::string sensitivity_refusal() const { return name() + " has no parameter sensitivities"; }
-  // Adds to d the derivatives of this contribution's forces rp on an element (as add() returned
-  // them, at fixed nodes and thickness) with respect to its own parameters, in their sensitivity
-  // slots; nothing when it has none.
-  virtual void add_own_parameter_derivatives(const element::Vec24& rp, element::SensDofs* d) const {
-    (void)rp;
-    (void)d;
+  virtual void enable_sensitivities() {}
+  // How an element's configuration moves with the parameters (a column per derivative slot):
+  // its trial p-variables (null: held fixed, the pseudo-load), its committed ones and the half
+  // thickness.
+  struct ConfigurationDerivatives {
+    const element::SensDofs* x_d = nullptr;
+    element::SensDofs x0_d0 = element::SensDofs::Zero();
+    material::SensitivityRow half_thickness = material::SensitivityRow::Zero();
+  };
+  // Adds to drp the derivative of add()'s rp on element e (at the trial state add() left) along
+  // dc, its own parameters and history included, and to tool_force that of the force the sheet
+  // exerts on the tool through it. keep: the converged increment's derivatives, which the
+  // contribution keeps for commit (every element is visited); else the pseudo-load. Returns
+  // false when it adds nothing. Called concurrently for distinct e.
+  virtual bool add_derivatives(int e, const ElementConfiguration& c, const ConfigurationDerivatives& dc, element::SensDofs* drp,
+                               Eigen::Matrix<double, 3, material::kSensitivitySlots>* tool_force, bool keep) {
+    (void)e, (void)c, (void)dc, (void)drp, (void)tool_force, (void)keep;
+    return false;
   }
   // Committing an increment: before_commit sees the model still at its last committed state
   // (positions, element sections), after_commit sees the new one.

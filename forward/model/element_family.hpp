@@ -106,14 +106,15 @@ class ElementFamily {
   // derivative slots); std::invalid_argument (the reason) where the family or its options have
   // none. sensitivity_load: element e's pseudo-load, the residual's derivative with respect to
   // each slot at fixed DOFs (through the law, the committed state's derivatives and the
-  // contributions' dependence on the element's thickness), in evaluate()'s DOF order, rotations
-  // about x, y, z. update_sensitivities: the elements' trial derivatives from the DOFs'
+  // contributions' dependence on the element's thickness, the committed DOFs' derivatives du0
+  // and their own history), in evaluate()'s DOF order, rotations about x, y, z.
+  // update_sensitivities: the elements' and contributions' trial derivatives from the DOFs'
   // derivatives du (same layout), kept by commit(); *contribution_force (if not null) receives
   // the derivative of the sum of the contributions' forces on the element's nodes (rows x, y,
   // z; the residual's sign: the force the sheet exerts on the tool).
   virtual void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count);
-  virtual solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load);
-  virtual solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+  virtual solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load);
+  virtual solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                          Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force);
   // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
   virtual void save_state(io::BinaryWriter& w) const = 0;

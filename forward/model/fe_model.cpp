@@ -176,14 +176,14 @@ void ElementFamily::enable_sensitivities(const material::MaterialParams<material
   throw std::invalid_argument(name() + " elements have no parameter sensitivities yet");
 }
 
-solver::ElementEvaluation ElementFamily::sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load) {
-  (void)e; (void)in; (void)load;
+solver::ElementEvaluation ElementFamily::sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) {
+  (void)e; (void)in; (void)du0; (void)load;
   return {false, name() + " elements", "no parameter sensitivities", 1.0};
 }
 
-solver::ElementEvaluation ElementFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+solver::ElementEvaluation ElementFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                               Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) {
-  (void)e; (void)in; (void)du; (void)contribution_force;
+  (void)e; (void)in; (void)du0; (void)du; (void)contribution_force;
   return {false, name() + " elements", "no parameter sensitivities", 1.0};
 }
 
@@ -196,9 +196,17 @@ void FeModel::enable_sensitivities(const std::vector<material::FieldSeed>& seeds
     if (!why.empty()) throw std::invalid_argument("sensitivities: " + why);
   }
   family_->enable_sensitivities(material::seeded_params(material, seeds), count);
+  for (const auto& c : contributions_) c->enable_sensitivities();
   sensitivity_count_ = count;
   force_sensitivity_ = force_sensitivity_trial_ = Eigen::Matrix<double, 3, Eigen::Dynamic>::Zero(3, count);
   position_sensitivity_ = position_sensitivity_trial_ = Eigen::MatrixXd::Zero(num_dofs_, count);
+}
+
+Eigen::MatrixXd FeModel::element_sensitivity(const Eigen::MatrixXd& global, int e) const {
+  const std::vector<int>& dofs = element_dofs_[static_cast<std::size_t>(e)];
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dofs.size()), material::kSensitivitySlots);
+  for (std::size_t a = 0; a < dofs.size(); ++a) out.row(static_cast<Eigen::Index>(a)).head(global.cols()) = global.row(dofs[a]);
+  return out;
 }
 
 solver::ElementEvaluation FeModel::sensitivity_load(Eigen::MatrixXd* load) {
@@ -207,7 +215,8 @@ solver::ElementEvaluation FeModel::sensitivity_load(Eigen::MatrixXd* load) {
   std::vector<Eigen::MatrixXd> le(static_cast<std::size_t>(ne));
   std::vector<solver::ElementEvaluation> ev(static_cast<std::size_t>(ne));
 #pragma omp parallel for schedule(dynamic, 16)
-  for (int e = 0; e < ne; ++e) ev[static_cast<std::size_t>(e)] = family_->sensitivity_load(e, in, &le[static_cast<std::size_t>(e)]);
+  for (int e = 0; e < ne; ++e)
+    ev[static_cast<std::size_t>(e)] = family_->sensitivity_load(e, in, element_sensitivity(position_sensitivity_, e), &le[static_cast<std::size_t>(e)]);
   *load = Eigen::MatrixXd::Zero(num_dofs_, sensitivity_count_);
   for (int e = 0; e < ne; ++e) {  // in element order: the sums do not depend on the threads
     const auto ue = static_cast<std::size_t>(e);
@@ -238,10 +247,7 @@ solver::ElementEvaluation FeModel::update_sensitivities(const Eigen::MatrixXd& d
 #pragma omp parallel for schedule(dynamic, 16)
   for (int e = 0; e < ne; ++e) {
     const auto ue = static_cast<std::size_t>(e);
-    const std::vector<int>& dofs = element_dofs_[ue];
-    Eigen::MatrixXd due = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(dofs.size()), material::kSensitivitySlots);
-    for (std::size_t a = 0; a < dofs.size(); ++a) due.row(static_cast<Eigen::Index>(a)).head(global.cols()) = global.row(dofs[a]);
-    ev[ue] = family_->update_sensitivities(e, in, due, &fe[ue]);
+    ev[ue] = family_->update_sensitivities(e, in, element_sensitivity(position_sensitivity_, e), element_sensitivity(global, e), &fe[ue]);
   }
   position_sensitivity_trial_ = global;
   force_sensitivity_trial_.setZero();

@@ -138,6 +138,9 @@ class FeModel : public solver::NonlinearProblem {
   std::vector<std::unique_ptr<ElementContribution>> contributions_;
   NodalRotationFrames frames_;
   int sensitivity_count_ = 0;
+  // Element e's rows of a DOFs x parameters matrix, in evaluate()'s DOF order, padded to the
+  // family's derivative slots.
+  Eigen::MatrixXd element_sensitivity(const Eigen::MatrixXd& global, int e) const;
   Eigen::Matrix<double, 3, Eigen::Dynamic> force_sensitivity_, force_sensitivity_trial_;
   Eigen::MatrixXd position_sensitivity_, position_sensitivity_trial_;  // DOFs x parameters, rotations about x, y, z
 };

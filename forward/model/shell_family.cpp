@@ -242,53 +242,43 @@ material::SensitivityRow ShellFamily::offset_sensitivity(int e) const {
   return (0.5 / el.points()) * d;
 }
 
-// The tool-side surface point of a flat facet is sum N_I (x_I + o d_I) with o = h / 2, and a
-// contribution's forces on the p-variables are rp = (N_I f, o N_I f) over its points, f a
-// function of the surface point alone (frictionless contact). Hence
-// d rp / d o = sum_J (d rp / d x_J) d_J + (0, N_I f) = sum_J kc(:, x_J) d_J + (0, rp_d / o).
-bool ShellFamily::contribution_terms(int e, const ElementInputs& in, const element::NodeVectors& x, const element::NodeVectors& d,
-                                     ContributionTerms* t) const {
+bool ShellFamily::contribution_derivatives(int e, const ElementInputs& in, const element::NodeVectors& x, const element::NodeVectors& d,
+                                           const element::SensDofs& du0, const element::SensDofs* du, element::SensDofs* drc,
+                                           Eigen::Matrix<double, 3, material::kSensitivitySlots>* tool_force) const {
+  drc->setZero();
+  tool_force->setZero();
   if (in.contributions.empty()) return false;
   const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
   element::NodeVectors x0, d0;
   corner_vectors(q, in.x0, in.d0, &x0, &d0);
-  const double offset = 0.5 * element_thickness(e);
-  const ElementConfiguration config{x, d, x0, d0, offset};
-  t->rc.setZero();
-  t->kc.setZero();
-  t->own.setZero();
-  bool touched = false;
-  for (auto& c : in.contributions) {
-    element::Vec24 rc = element::Vec24::Zero();
-    element::Mat24 kc = element::Mat24::Zero();
-    if (!c->add(e, config, &rc, &kc)) continue;
-    touched = true;
-    t->rc += rc;
-    t->kc += kc;
-    c->add_own_parameter_derivatives(rc, &t->own);
+  const ElementConfiguration config{x, d, x0, d0, 0.5 * element_thickness(e)};
+  ElementContribution::ConfigurationDerivatives dc;
+  element::SensDofs dp;
+  if (du) {
+    dp = element::director_variable_derivatives(d, *du);
+    dc.x_d = &dp;
   }
-  if (!touched) return false;
-  t->drc_doffset.setZero();
-  for (int J = 0; J < 4; ++J) t->drc_doffset.noalias() += t->kc.middleCols<3>(6 * J) * d[static_cast<std::size_t>(J)];
-  for (int I = 0; I < 4; ++I) t->drc_doffset.segment<3>(6 * I + 3) += t->rc.segment<3>(6 * I + 3) / offset;
-  return true;
+  dc.x0_d0 = element::director_variable_derivatives(d0, du0);
+  dc.half_thickness = offset_sensitivity(e);
+  bool touched = false;
+  for (const auto& c : in.contributions) touched |= c->add_derivatives(e, config, dc, drc, tool_force, du != nullptr);
+  return touched;
 }
 
-solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load) {
+solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) {
   const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
   element::NodeVectors x, d;
   corner_vectors(q, in.x, in.d, &x, &d);
   element::SensDofs l;
   const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, nullptr, &l, sensitivity_count_);
   if (!s.ok) return element_failure(e, s);
-  ContributionTerms t;
-  if (contribution_terms(e, in, x, d, &t)) {
+  element::SensDofs drc;
+  Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
+  if (contribution_derivatives(e, in, x, d, du0, nullptr, &drc, &force)) {
+    // The moment rows are d x r_d: linear in the p-variables' forces, column by column.
     element::Vec24 ru;
-    element::director_to_dofs(d, t.drc_doffset, nullptr, &ru, nullptr);
-    l.noalias() += ru * offset_sensitivity(e);
-    for (int k = 0; k < material::kSensitivitySlots; ++k) {
-      if (t.own.col(k).isZero(0.0)) continue;
-      element::director_to_dofs(d, element::Vec24(t.own.col(k)), nullptr, &ru, nullptr);
+    for (int k = 0; k < sensitivity_count_; ++k) {
+      element::director_to_dofs(d, element::Vec24(drc.col(k)), nullptr, &ru, nullptr);
       l.col(k) += ru;
     }
   }
@@ -296,7 +286,7 @@ solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInpu
   return {};
 }
 
-solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                             Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) {
   const auto& q = mesh_->quads[static_cast<std::size_t>(e)];
   element::NodeVectors x, d;
@@ -304,16 +294,11 @@ solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const Element
   const element::SensDofs dus = du;
   const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, &dus, nullptr, sensitivity_count_);
   if (!s.ok) return element_failure(e, s);
-  ContributionTerms t;
-  if (contribution_force && contribution_terms(e, in, x, d, &t)) {
-    // d rc / d p = kc (the p-variables' derivatives) + d rc / d o d o / d p; the force on the
-    // element's nodes is the sum of rc's position rows.
-    const element::SensDofs drc = t.kc * element::director_variable_derivatives(d, dus) + t.drc_doffset * offset_sensitivity(e) + t.own;
-    contribution_force->setZero();
-    for (int I = 0; I < 4; ++I) *contribution_force += drc.middleRows<3>(6 * I);
-  } else if (contribution_force) {
-    contribution_force->setZero();
-  }
+  // Every element, so that the contributions keep their trial derivatives (zero out of reach).
+  element::SensDofs drc;
+  Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
+  contribution_derivatives(e, in, x, d, du0, &dus, &drc, &force);
+  if (contribution_force) *contribution_force = force;
   return {};
 }
 

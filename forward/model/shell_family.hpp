@@ -63,8 +63,8 @@ class ShellFamily final : public ElementFamily {
   void load_state(io::BinaryReader& r) override;
   // The 2 x 2 element only (the one-point element refuses).
   void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) override;
-  solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, Eigen::MatrixXd* load) override;
-  solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du,
+  solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) override;
+  solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                  Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
 
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
@@ -85,16 +85,13 @@ class ShellFamily final : public ElementFamily {
   double max_t_over_l_ = 0.0;
   std::unique_ptr<element::SensLaw> sensitivity_law_;  // the law with derivative slots
   int sensitivity_count_ = 0;                          // the slots in use
-  // The contributions' forces on element e (p-variables) and their derivatives with respect to
-  // the p-variables, to the tool-side offset h / 2 and to their own parameters; false if none
+  // The derivatives of the contributions' forces on element e (p-variables) and of the force on
+  // the tool through it (ElementContribution::add_derivatives), from the committed DOFs'
+  // derivatives du0 and the trial ones du (null: held fixed, the pseudo-load); false if none
   // touches it.
-  struct ContributionTerms {
-    element::Vec24 rc, drc_doffset;
-    element::Mat24 kc;
-    element::SensDofs own;  // d rc / d (the contributions' own parameters), at fixed nodes
-  };
-  bool contribution_terms(int e, const ElementInputs& in, const element::NodeVectors& x, const element::NodeVectors& d,
-                          ContributionTerms* t) const;
+  bool contribution_derivatives(int e, const ElementInputs& in, const element::NodeVectors& x, const element::NodeVectors& d,
+                                const element::SensDofs& du0, const element::SensDofs* du, element::SensDofs* drc,
+                                Eigen::Matrix<double, 3, material::kSensitivitySlots>* tool_force) const;
   // d (h / 2) / d p of element e's committed thickness.
   material::SensitivityRow offset_sensitivity(int e) const;
   void check_geometry(const mesh::Mesh& mesh, double thickness);

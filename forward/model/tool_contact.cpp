@@ -43,6 +43,7 @@ void ToolContact::set_copies(const std::vector<double>& angles_deg) {
   for (double a : angles_deg)
     rotations_.push_back(Eigen::AngleAxisd(a * std::numbers::pi / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix());
   contact_ = std::make_unique<contact::ShellContact>(contact_mesh(), contact_->options(), 1 + static_cast<int>(angles_deg.size()));
+  if (sensitivities_) contact_->enable_sensitivities(slots_);
   const contact::SphereTool real = tools_.front();
   tools_.assign(1 + angles_deg.size(), real);
   place(real.centre_committed, real.centre, real.spin);
@@ -83,6 +84,7 @@ contact::ContactSummary ToolContact::summary() const {
     out.max_penetration = std::max(out.max_penetration, s.max_penetration);
     out.max_pressure = std::max(out.max_pressure, s.max_pressure);
     out.active_points += s.active_points;
+    out.sticking_points += s.sticking_points;
   }
   return out;
 }
@@ -205,16 +207,37 @@ ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunctio
       std::make_unique<ToolContact>(model.mesh(), model.family().contact_surface(), radius, std::move(path), options, spin_per_load_factor));
 }
 
-void ToolContact::add_own_parameter_derivatives(const element::Vec24& rp, element::SensDofs* d) const {
-  if (penalty_slot_ >= 0) d->col(penalty_slot_) += rp / contact_->options().penalty;
+void ToolContact::enable_sensitivities() {
+  contact_->enable_sensitivities(slots_);
+  sensitivities_ = true;
+}
+
+bool ToolContact::add_derivatives(int e, const ElementConfiguration& c, const ConfigurationDerivatives& dc, element::SensDofs* drp,
+                                  Eigen::Matrix<double, 3, material::kSensitivitySlots>* tool_force, bool keep) {
+  if (passive_) return false;
+  contact::ShellContact::ConfigurationDerivatives cd;
+  cd.p = dc.x_d;
+  cd.p0 = dc.x0_d0;
+  cd.offset = dc.half_thickness;
+  bool touched = false;
+  for (std::size_t i = 0; i < tools_.size(); ++i) {
+    element::SensDofs di = element::SensDofs::Zero();
+    if (!contact_->element_derivatives(e, c.x, c.d, c.x0, c.d0, c.half_thickness, tools_[i], cd, &di, keep, static_cast<int>(i))) continue;
+    touched = true;
+    *drp += di;
+    // The force on the tool is the sum of the position rows (r = f_int - f_ext: the contact's
+    // forces on the nodes are those the sheet exerts on the tool).
+    Eigen::Matrix<double, 3, material::kSensitivitySlots> f = Eigen::Matrix<double, 3, material::kSensitivitySlots>::Zero();
+    for (int I = 0; I < 4; ++I) f += di.middleRows<3>(6 * I);
+    *tool_force += rotations_[i].transpose() * f;
+  }
+  return touched;
 }
 
 std::string ToolContact::sensitivity_refusal() const {
   const contact::ContactOptions& o = contact_->options();
   if (passive_) return "";
-  if (o.friction > 0.0) return "contact.friction = " + std::to_string(o.friction) + ": friction has no parameter sensitivities yet (set it to 0)";
   if (o.surface != contact::ContactOptions::Surface::flat) return "contact.surface = \"phong\": the curved contact surface has no parameter sensitivities yet";
-  if (!copies_deg_.empty()) return "the virtual tools of a pie have no parameter sensitivities yet";
   return "";
 }
 

@@ -62,13 +62,16 @@ class ToolContact final : public ElementContribution {
 
   // ElementContribution
   std::string name() const override { return "tool_contact"; }
-  // Frictionless contact with the real tool on flat facets only: friction's stick history, the
-  // curved surface and the virtual tools have no sensitivities yet.
+  // Flat facets only: the curved (phong) surface has no sensitivities yet.
   std::string sensitivity_refusal() const override;
-  // The penalty K_p as a parameter of a run's sensitivities, in derivative slot `slot` (-1:
-  // not). Frictionless contact is linear in K_p: d rp / d K_p = rp / K_p at fixed nodes.
-  void set_penalty_sensitivity(int slot) { penalty_slot_ = slot; }
-  void add_own_parameter_derivatives(const element::Vec24& rp, element::SensDofs* d) const override;
+  // The penalty K_p and the friction coefficient mu as parameters of a run's sensitivities, in
+  // these derivative slots (-1: not); set before FeModel::enable_sensitivities.
+  void set_parameter_slots(const contact::ShellContact::ParameterSlots& slots) { slots_ = slots; }
+  void enable_sensitivities() override;
+  // Every tool's contact with the element (the real tool and its copies), the force of each
+  // copy turned back onto the real tool as summary() does.
+  bool add_derivatives(int e, const ElementConfiguration& c, const ConfigurationDerivatives& dc, element::SensDofs* drp,
+                       Eigen::Matrix<double, 3, material::kSensitivitySlots>* tool_force, bool keep) override;
   void begin_increment(double lambda0, double lambda1) override;
   bool add(int e, const ElementConfiguration& c, element::Vec24* rp, element::Mat24* kp) override;
   void before_commit(const FeModel& model) override;
@@ -91,7 +94,8 @@ class ToolContact final : public ElementContribution {
   std::vector<Eigen::Matrix3d> rotations_{Eigen::Matrix3d::Identity()};  // one per tool: [0] = identity
   double work_ = 0.0;            // committed work of the tools on the sheet [N mm]
   bool passive_ = false;
-  int penalty_slot_ = -1;  // set_penalty_sensitivity
+  contact::ShellContact::ParameterSlots slots_;  // set_parameter_slots
+  bool sensitivities_ = false;                   // enable_sensitivities
   double offset_release_ = 0.0;  // ModelEnergies::contact_offset_release [N mm]
   // Set by before_commit for after_commit: each tool's committed force, each element's thickness.
   std::vector<Eigen::Vector3d> force_before_;

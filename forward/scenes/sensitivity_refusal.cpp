@@ -20,17 +20,16 @@ std::optional<SensitivityRefusal> sensitivity_refusal(const Scene& scene, const 
   // A scene input other than the penalty (contact.friction, tool.radius, ...); unknown names are
   // the seeds' to name, with the card's parameters.
   for (const auto& n : names) {
-    if (n.empty() || n == kPenaltySensitivity || material::find_material_input(n)) continue;
+    if (n.empty() || is_contact_sensitivity(n) || material::find_material_input(n)) continue;
     bool scene_input = true;
     try {
       (void)scene.input(n);
     } catch (const std::invalid_argument&) {
       scene_input = false;
     }
-    if (scene_input) return refuse(n + " has no exact sensitivity: only the card's parameters and " + kPenaltySensitivity + " have");
+    if (scene_input)
+      return refuse(n + " has no exact sensitivity: only the card's parameters, " + kPenaltySensitivity + " and " + kFrictionSensitivity + " have");
   }
-  if (const double mu = scene.input("contact.friction"); mu > 0.0)
-    return SensitivityRefusal{"contact.friction", io::format_number(mu), "friction has no parameter sensitivities yet (set it to 0)"};
   try {
     (void)material::sensitivity_seeds(scene.card()->params, card_sensitivity_names(names), h_follows_g);
     // The model's own refusals come when it is built.

@@ -56,7 +56,7 @@ TEST(SensitivityCli, IndentWritesDerivativesBesideUnchangedForces) {
 
 TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
   const fs::path out = temp_path("sens_refused");
-  const fs::path friction = spifit::test::bundled_scene_with("indent.toml", "indent_friction.toml", "friction = 0.0", "friction = 0.1");
+  const fs::path phong = spifit::test::bundled_scene_with("indent.toml", "indent_phong.toml", "friction = 0.0", "friction = 0.0\nsurface = \"phong\"");
   struct Case {
     std::string scene, names, expect;
   } cases[] = {
@@ -66,7 +66,8 @@ TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
       {kScenes + "indent.toml", "contact.penalty,contact.penalty", "contact.penalty is named twice"},
       {kScenes + "tensile_00.toml", "swift.K", "FE scenes only"},
       {kScenes + "cone70_pie45_short.toml", "swift.K", "cone scenes have no parameter sensitivities yet"},
-      {friction.string(), "swift.K", "contact.friction = 0.1"},
+      {phong.string(), "swift.K", "contact.surface = \"phong\""},
+      {kScenes + "indent.toml", "tool.radius", "tool.radius has no exact sensitivity"},
       // Found by building the model without running it, still before the output directory.
       {kScenes + "indent_explicit.toml", "swift.K", "the explicit scheme has no exact sensitivities"},
   };
@@ -81,7 +82,7 @@ TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
   const Result both = run("run " + kScenes + "indent.toml --out " + out.string() + " --resume --sensitivities swift.K");
   EXPECT_NE(both.code, 0);
   EXPECT_NE(both.err.find("--sensitivities"), std::string::npos) << both.err;
-  fs::remove(friction);
+  fs::remove(phong);
 }
 
 TEST(SensitivityCli, CheckerFindsExactAndCentralDifferencesAgreeOnTheIndent) {

@@ -16,6 +16,7 @@ using Clock = FeRunClock;
 
 FeRun::FeRun(FeRunSetup setup, RunFiles files, RunControl control)
     : setup_(std::move(setup)), files_(files), control_(std::move(control)) {
+  if (control_.newton_tolerance > 0.0) setup_.newton.force_tolerance = setup_.newton.displacement_tolerance = control_.newton_tolerance;
   if (setup_.explicit_scheme) {
     if (setup_.element != "shell")
       throw std::invalid_argument("the explicit scheme has shell elements only, not " + setup_.element + " elements");
@@ -38,15 +39,19 @@ FeRun::FeRun(FeRunSetup setup, RunFiles files, RunControl control)
   if (!control_.sensitivities.empty()) enable_sensitivities();
 }
 
+bool is_contact_sensitivity(const std::string& name) { return name == kPenaltySensitivity || name == kFrictionSensitivity; }
+
 std::vector<std::string> card_sensitivity_names(const std::vector<std::string>& names) {
   std::vector<std::string> out = names;
-  int penalties = 0;
-  for (std::string& n : out)
-    if (n == kPenaltySensitivity) {
-      n.clear();
-      ++penalties;
-    }
-  if (penalties > 1) throw std::invalid_argument(std::string(kPenaltySensitivity) + " is named twice");
+  for (const char* contact : {kPenaltySensitivity, kFrictionSensitivity}) {
+    int count = 0;
+    for (std::string& n : out)
+      if (n == contact) {
+        n.clear();
+        ++count;
+      }
+    if (count > 1) throw std::invalid_argument(std::string(contact) + " is named twice");
+  }
   return out;
 }
 
@@ -61,8 +66,12 @@ void FeRun::enable_sensitivities() {
   if (control_.resume) refuse("a run with sensitivities cannot be resumed (checkpoints do not hold the state's derivatives)");
   try {
     const std::vector<material::FieldSeed> seeds = material::sensitivity_seeds(setup_.material, card_sensitivity_names(control_.sensitivities), control_.sensitivity_h_follows_g);
-    for (std::size_t k = 0; k < control_.sensitivities.size(); ++k)
-      if (control_.sensitivities[k] == kPenaltySensitivity) tool_->set_penalty_sensitivity(static_cast<int>(k));
+    contact::ShellContact::ParameterSlots slots;
+    for (std::size_t k = 0; k < control_.sensitivities.size(); ++k) {
+      if (control_.sensitivities[k] == kPenaltySensitivity) slots.penalty = static_cast<int>(k);
+      if (control_.sensitivities[k] == kFrictionSensitivity) slots.friction = static_cast<int>(k);
+    }
+    tool_->set_parameter_slots(slots);
     model_->enable_sensitivities(seeds, static_cast<int>(control_.sensitivities.size()), setup_.material);
   } catch (const std::invalid_argument& e) {
     refuse(e.what());
@@ -72,7 +81,9 @@ void FeRun::enable_sensitivities() {
 std::vector<double> FeRun::sensitivity_values() const {
   std::vector<double> v;
   for (const std::string& n : control_.sensitivities)
-    v.push_back(n == kPenaltySensitivity ? setup_.contact.penalty : material::material_field(setup_.material, material::find_material_input(n)->field));
+    v.push_back(n == kPenaltySensitivity    ? setup_.contact.penalty
+                : n == kFrictionSensitivity ? setup_.contact.friction
+                                            : material::material_field(setup_.material, material::find_material_input(n)->field));
   return v;
 }
 

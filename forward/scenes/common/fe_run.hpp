@@ -76,10 +76,12 @@ struct FeRunSetup {
 };
 
 // Besides the card's parameters, a run differentiates with respect to the tool contact's penalty
-// K_p under this name (RunControl::sensitivities).
+// K_p and its friction coefficient mu under these names (RunControl::sensitivities).
 inline constexpr const char* kPenaltySensitivity = "contact.penalty";
-// The names with kPenaltySensitivity blanked: what material::sensitivity_seeds takes;
-// std::invalid_argument when it is named twice.
+inline constexpr const char* kFrictionSensitivity = "contact.friction";
+bool is_contact_sensitivity(const std::string& name);
+// The names with the contact's blanked: what material::sensitivity_seeds takes;
+// std::invalid_argument when one is named twice.
 std::vector<std::string> card_sensitivity_names(const std::vector<std::string>& names);
 
 struct RunControl {
@@ -101,12 +103,15 @@ struct RunControl {
   const std::atomic<int>* interrupt = nullptr;
   // Seconds between heartbeats of the running summary.json (run_heartbeat.hpp).
   double heartbeat_seconds = kHeartbeatSeconds;
-  // Material parameters ("swift.K") and kPenaltySensitivity to differentiate the run with
+  // Material parameters ("swift.K"), kPenaltySensitivity and kFrictionSensitivity to differentiate the run with
   // respect to, by direct differentiation (docs/design/sensitivities.md): implicit runs only, not
   // resumed.
   std::vector<std::string> sensitivities;
   // With sensitivities: hill.G also moves H = 2 - G (a fit with normalise_hill).
   bool sensitivity_h_follows_g = false;
+  // > 0: the implicit solver's force and displacement tolerances instead of the scene's (the
+  // derivative checker's runs, so that central differences see the model, not the tolerance).
+  double newton_tolerance = 0.0;
   // Build the model (its refusals included) and stop before the first increment (status
   // stopped): what sensitivity_refusal.hpp asks before a fit relies on a scene's sensitivities.
   bool build_only = false;

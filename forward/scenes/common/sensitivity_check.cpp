@@ -13,9 +13,11 @@ namespace {
 
 using ForceAt = std::map<double, Eigen::Vector3d>;  // tool travel -> force on the tool
 
-std::unique_ptr<SceneResult> run_in_memory(const Scene& scene, const std::vector<std::string>& sensitivities, const std::string& what) {
+std::unique_ptr<SceneResult> run_in_memory(const Scene& scene, const std::vector<std::string>& sensitivities, double tolerance,
+                                           const std::string& what) {
   RunControl control;
   control.sensitivities = sensitivities;
+  control.newton_tolerance = tolerance;
   auto r = scene.run(RunFiles(), control);
   if (!r->ok()) throw std::invalid_argument(what + " failed: " + r->message);
   return r;
@@ -27,24 +29,26 @@ ForceAt forces(const SceneResult& r) {
   return f;
 }
 
-ForceAt moved(const Scene& scene, const std::string& name, double value, int* runs, const std::function<void(const std::string&)>& progress) {
+ForceAt moved(const Scene& scene, const std::string& name, double value, double tolerance, int* runs,
+              const std::function<void(const std::string&)>& progress) {
   std::unique_ptr<Scene> s = scene.clone();
   char what[160];
   std::snprintf(what, sizeof what, "%s = %.17g", name.c_str(), value);
   if (progress) progress(what);
   if (const std::string why = s->set_input(name, value); !why.empty()) throw std::invalid_argument(std::string(what) + ": " + why);
   ++*runs;
-  return forces(*run_in_memory(*s, {}, what));
+  return forces(*run_in_memory(*s, {}, tolerance, what));
 }
 
 }  // namespace
 
-SensitivityCheck check_sensitivities(const Scene& scene, const std::vector<std::string>& names, double relative_step,
+SensitivityCheck check_sensitivities(const Scene& scene, const std::vector<std::string>& names, double relative_step, double tolerance,
                                      const std::function<void(const std::string&)>& progress) {
   if (!(relative_step > 0.0 && relative_step < 0.1)) throw std::invalid_argument("relative step must lie in (0, 0.1)");
+  if (!(tolerance >= 0.0 && tolerance < 1.0)) throw std::invalid_argument("the solver tolerance must lie in [0, 1)");
   SensitivityCheck out;
   if (progress) progress("exact derivatives");
-  const auto exact = run_in_memory(scene, names, "the run with sensitivities");
+  const auto exact = run_in_memory(scene, names, tolerance, "the run with sensitivities");
   ++out.runs;
   if (!exact->force_sensitivities()) throw std::logic_error("a run with sensitivities without its table");
   const auto& samples = exact->tool_force()->samples();
@@ -53,10 +57,10 @@ SensitivityCheck check_sensitivities(const Scene& scene, const std::vector<std::
     row.name = names[k];
     row.value = scene.input(names[k]);
     row.step = relative_step * (row.value != 0.0 ? std::abs(row.value) : 1.0);
-    const ForceAt p1 = moved(scene, row.name, row.value + row.step, &out.runs, progress);
-    const ForceAt m1 = moved(scene, row.name, row.value - row.step, &out.runs, progress);
-    const ForceAt p4 = moved(scene, row.name, row.value + row.step / 4.0, &out.runs, progress);
-    const ForceAt m4 = moved(scene, row.name, row.value - row.step / 4.0, &out.runs, progress);
+    const ForceAt p1 = moved(scene, row.name, row.value + row.step, tolerance, &out.runs, progress);
+    const ForceAt m1 = moved(scene, row.name, row.value - row.step, tolerance, &out.runs, progress);
+    const ForceAt p4 = moved(scene, row.name, row.value + row.step / 4.0, tolerance, &out.runs, progress);
+    const ForceAt m4 = moved(scene, row.name, row.value - row.step / 4.0, tolerance, &out.runs, progress);
     double scale = 0.0, diff = 0.0, spread = 0.0;
     for (std::size_t i = 0; i < samples.size(); ++i) {
       const double t = samples[i].travel;

@@ -146,10 +146,10 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   if (!run.sensitivity_names().empty()) {
     std::vector<std::string> units;
     for (const std::string& n : run.sensitivity_names())
-      units.push_back(n == kPenaltySensitivity ? "N/mm^3" : material::find_material_input(n)->info.unit);
+      units.push_back(n == kPenaltySensitivity ? "N/mm^3" : n == kFrictionSensitivity ? "" : material::find_material_input(n)->info.unit);
     sensitivity = &run.add_observer(std::make_unique<SensitivityLog>(
         run.sensitivity_names(), units, run.sensitivity_values(),
-        "# spifit " + scene.kind + " scene " + scene.name + ": derivatives of the force BY the sheet ON the tool with respect to the card's parameters (and the contact penalty) "
+        "# spifit " + scene.kind + " scene " + scene.name + ": derivatives of the force BY the sheet ON the tool with respect to the card's parameters (and the contact's penalty and friction) "
         "(direct differentiation), and each scaled by the parameter's value" + (scene.half ? "; half model, mirrored to the full sheet" : ""),
         format.whole, run.files()));
   }

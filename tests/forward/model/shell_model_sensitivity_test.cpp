@@ -64,7 +64,7 @@ IndentRun indent(const material::MaterialParams<double>& p, bool sensitivities, 
     for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
   c.finalize();
   if (sensitivities) {
-    tool.set_penalty_sensitivity(4);
+    tool.set_parameter_slots({.penalty = 4});
     model.enable_sensitivities(seeds(), kCount, p);
   }
   solver::NewtonOptions o;
@@ -120,6 +120,110 @@ TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
   }
 }
 
+// The indentation continued by a drag: pressed 0.8 mm into the sheet in 8 increments, then moved
+// 1 mm along x in 16 more, with Coulomb friction mu = 0.15: some points stick, others slide, and
+// the stick history (the committed tangential tractions) carries derivatives from increment to
+// increment.
+constexpr double kDrag = 1.0;  // mm
+constexpr int kDragIncrements = 24;
+struct DragRun {
+  std::vector<Eigen::Vector3d> force;
+  std::vector<contact::ContactSummary> contact;
+  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> sensitivity;
+};
+
+DragRun drag(const material::MaterialParams<double>& p, double penalty, double mu, double tangential_penalty, bool sensitivities) {
+  mesh::SquareSheetOptions so;
+  so.length_x = so.length_y = 10.0;
+  so.nx = so.ny = 8;
+  const mesh::Mesh mesh = mesh::square_sheet(so);
+  ShellModelOptions mo;
+  mo.shell.thickness_points = 3;
+  ShellModel model(mesh, 0.5, p, mo);
+  contact::ContactOptions co;
+  co.penalty = penalty;
+  co.friction = mu;
+  co.tangential_penalty = tangential_penalty;
+  const double R = 3.0;
+  ToolContact& tool = attach_tool(model, R, [=](double lambda) {
+    const double press = std::min(lambda, 1.0 / 3.0) * 3.0, move = std::max(lambda - 1.0 / 3.0, 0.0) * 1.5;
+    return Eigen::Vector3d(-0.5 + kDrag * move, 0.1, 0.25 + R - 0.8 * press);
+  }, co);
+  solver::DofConstraints c(model.num_dofs());
+  for (int n : mesh.node_sets.at("boundary"))
+    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
+  c.finalize();
+  if (sensitivities) {
+    tool.set_parameter_slots({.penalty = 1, .friction = 2});
+    model.enable_sensitivities({{input("swift.K").field, unit(0)}}, 3, p);
+  }
+  solver::NewtonOptions o;
+  o.initial_increment = o.max_increment = o.min_increment = 1.0 / kDragIncrements;
+  o.line_search = true;
+  o.max_iterations = 40;
+  o.divergence_after = 0;
+  o.force_tolerance = o.displacement_tolerance = 1e-11;
+  solver::NewtonSolver s(model, c, o);
+  DragRun run;
+  const solver::NewtonSummary sum = s.solve(1.0, [&](const solver::IncrementReport&) {
+    run.force.push_back(tool.force());
+    run.contact.push_back(tool.summary());
+    run.sensitivity.push_back(model.contribution_force_sensitivity());
+    return true;
+  });
+  EXPECT_TRUE(sum.converged) << sum.message;
+  return run;
+}
+
+// With K_t = K_p every point slides during the drag (each increment's slip, 0.06 mm, exceeds
+// mu p / K_t); with K_t = K_p / 10 and mu = 0.3 some stick (and all of them during the press,
+// where the force then does not depend on mu). The penalty moves K_t too in the first.
+TEST(ShellModelSensitivity, FrictionDerivativesMatchCentralDifferences) {
+  const material::MaterialParams<double> p = card();
+  const double penalty = 1000.0;
+  struct Variant {
+    double mu, tangential_penalty;
+    bool sticks;
+  };
+  for (const Variant v : {Variant{0.15, 0.0, false}, Variant{0.3, 100.0, true}}) {
+    const DragRun ddm = drag(p, penalty, v.mu, v.tangential_penalty, true);
+    ASSERT_EQ(ddm.force.size(), static_cast<std::size_t>(kDragIncrements));
+    const DragRun plain = drag(p, penalty, v.mu, v.tangential_penalty, false);
+    for (std::size_t n = 0; n < ddm.force.size(); ++n) EXPECT_EQ(ddm.force[n], plain.force[n]) << "increment " << n;
+    EXPECT_GT(std::abs(ddm.force.back().x()), 0.05 * std::abs(ddm.force.back().z()));  // friction drags the tool
+    int sticking = 0, sliding = 0;  // point-increments of the drag
+    for (std::size_t n = kDragIncrements / 3; n < ddm.contact.size(); ++n) {
+      sticking += ddm.contact[n].sticking_points;
+      sliding += ddm.contact[n].active_points - ddm.contact[n].sticking_points;
+    }
+    std::printf("mu %.2f, K_t %g: %d sticking and %d sliding point-increments in the drag\n", v.mu, v.tangential_penalty, sticking, sliding);
+    EXPECT_EQ(sticking > 0, v.sticks);
+    EXPECT_GT(sliding, 0);
+    const char* names[3] = {"swift.K", "contact.penalty", "contact.friction"};
+    const double steps[3] = {1.0 / 64.0, penalty / 6400.0, v.mu / 6400.0};
+    for (int k = 0; k < 3; ++k) {
+      std::vector<Eigen::Vector3d> cd(kDragIncrements), cd4(kDragIncrements);
+      for (double step : {steps[k], steps[k] / 4.0}) {
+        material::MaterialParams<double> pp = p, pm = p;
+        if (k == 0) {
+          material::set_material_input(pp, input("swift.K"), material::material_field(p, input("swift.K").field) + step);
+          material::set_material_input(pm, input("swift.K"), material::material_field(p, input("swift.K").field) - step);
+        }
+        const DragRun rp = drag(pp, penalty + (k == 1 ? step : 0.0), v.mu + (k == 2 ? step : 0.0), v.tangential_penalty, false);
+        const DragRun rm = drag(pm, penalty - (k == 1 ? step : 0.0), v.mu - (k == 2 ? step : 0.0), v.tangential_penalty, false);
+        for (std::size_t n = 0; n < cd.size(); ++n) (step == steps[k] ? cd : cd4)[n] = (rp.force[n] - rm.force[n]) / (2.0 * step);
+      }
+      std::vector<Eigen::Vector3d> exact;
+      for (const auto& d : ddm.sensitivity) exact.push_back(d.col(k));
+      // Relative to the path's largest derivative: dF/dmu vanishes while every point sticks.
+      double path_scale = 0.0;
+      for (const auto& c : cd4) path_scale = std::max(path_scale, c.cwiseAbs().maxCoeff());
+      const double worst = test::expect_within_central_differences(exact, cd, cd4, 1e-6, names[k], 1e-3 * path_scale);
+      std::printf("  %s: largest relative difference to central differences (h/4) %.2e\n", names[k], worst);
+    }
+  }
+}
+
 TEST(ShellModelSensitivity, RefusesWhatHasNoSensitivitiesYet) {
   mesh::SquareSheetOptions so;
   so.nx = so.ny = 2;
@@ -135,9 +239,9 @@ TEST(ShellModelSensitivity, RefusesWhatHasNoSensitivitiesYet) {
     }
     return std::string();
   };
-  contact::ContactOptions friction;
-  friction.friction = 0.1;
-  EXPECT_NE(refusal({}, friction, kCount).find("contact.friction = 0.1"), std::string::npos);
+  contact::ContactOptions phong;
+  phong.surface = contact::ContactOptions::Surface::phong;
+  EXPECT_NE(refusal({}, phong, kCount).find("contact.surface = \"phong\""), std::string::npos);
   ShellModelOptions one_point;
   one_point.shell.hourglass_stiffness = 0.03;
   EXPECT_NE(refusal(one_point, {}, kCount).find("one-point shell"), std::string::npos);

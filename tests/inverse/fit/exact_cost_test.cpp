@@ -172,16 +172,16 @@ TEST(ExactFeJacobian, FitReachesTheCentralDifferenceCard) {
 // Which scene files the fit differentiates, and the errors of [fit] jacobian.
 TEST(ExactFeJacobian, FitFileChoosesAndRefuses) {
   const TinyData d = tiny_data();
-  // Friction as a parameter: central differences, said in a note; "exact" is refused.
-  const std::string friction = "[parameters.\"contact.friction\"]\ninitial = 0.1\nlower = 0.0\nupper = 0.5\n";
-  const auto p = inverse::read_fit_file(write_fit(fit_text(d, "", friction)).string());
+  // The tool's radius as a parameter: central differences, said in a note; "exact" is refused.
+  const std::string radius = "[parameters.\"tool.radius\"]\ninitial = 5.0\nlower = 4.0\nupper = 6.0\n";
+  const auto p = inverse::read_fit_file(write_fit(fit_text(d, "", radius)).string());
   for (const auto& e : p.experiments) EXPECT_EQ(e->jacobian(), "central");
   bool noted = false;
-  for (const auto& n : p.notes) noted = noted || (n.find("central differences") != std::string::npos && n.find("contact.friction") != std::string::npos);
+  for (const auto& n : p.notes) noted = noted || (n.find("central differences") != std::string::npos && n.find("tool.radius") != std::string::npos);
   EXPECT_TRUE(noted);
-  const fs::path f = write_fit(fit_text(d, "jacobian = \"exact\"\n", friction));
+  const fs::path f = write_fit(fit_text(d, "jacobian = \"exact\"\n", radius));
   const std::string e = test::input_error_of([&] { inverse::read_fit_file(f.string()); });
-  for (const char* part : {"jacobian = \"exact\"", "contact.friction", "no exact sensitivity"})
+  for (const char* part : {"jacobian = \"exact\"", "tool.radius", "no exact sensitivity"})
     EXPECT_NE(e.find(part), std::string::npos) << "missing \"" << part << "\" in: " << e;
   EXPECT_EQ(e.rfind(f.string(), 0), 0u) << e;
   const fs::path g = write_fit(fit_text(d, "jacobian = \"forward\"\n"));

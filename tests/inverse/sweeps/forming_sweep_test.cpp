@@ -225,10 +225,10 @@ TEST(FormingSweep, ExactSensitivitiesAtEveryPoint) {
   const std::string csv = inverse::sweep_csv(exact, re);
   EXPECT_NE(csv.find("dln(peak_fz)/dln(contact.penalty),dln(peak_fz)/dln(swift.K),dln(mean_fz)/dln(contact.penalty)"), std::string::npos) << csv;
   EXPECT_EQ(csv.find("dln(max_penetration)"), std::string::npos);
-  // Friction, or no metric with derivatives: an input error naming the key.
-  const std::string e = read_error(write_sweep(tmp.path, sweep_head(scene, "\"peak_fz\"") + "exact_sensitivities = true\n[inputs.\"contact.friction\"]\nvalues = [0.1]\n"));
+  // The tool's radius, or no metric with derivatives: an input error naming the key.
+  const std::string e = read_error(write_sweep(tmp.path, sweep_head(scene, "\"peak_fz\"") + "exact_sensitivities = true\n[inputs.\"tool.radius\"]\nvalues = [4.0]\n"));
   EXPECT_NE(e.find("exact_sensitivities"), std::string::npos) << e;
-  EXPECT_NE(e.find("contact.friction"), std::string::npos) << e;
+  EXPECT_NE(e.find("tool.radius"), std::string::npos) << e;
   const std::string counts = read_error(write_sweep(tmp.path, sweep_head(scene, "\"newton_iterations\"") + "exact_sensitivities = true\n" + inputs));
   EXPECT_NE(counts.find("none of the metrics has derivatives"), std::string::npos) << counts;
 }
