@@ -149,20 +149,34 @@ PlotSpec cone_depth_plot(const RunContent& c) {
                           {{"centre_depth", "centre depth"}, {"min_thickness", "thinnest wall"}});
 }
 
-// The scaled sensitivities of Fz (sensitivities.csv: "P*dFz/d(P)" per parameter P) along the
-// travel of force.csv's rows (the two files have a row per increment each).
+// The scaled sensitivities of the tool force (sensitivities.csv: "P*dFx/d(P)" .. "P*dFz/d(P)"
+// per parameter P) along the travel of force.csv's rows (the two files have a row per increment
+// each): the components that carry any (above 1e-3 of the largest; an indentation's Fz alone, a
+// line test's Fx and Fz).
 PlotSpec sensitivity_plot(const RunContent& c) {
-  PlotSpec p = titled("run_sensitivities", "Scaled sensitivities of Fz: P dFz/dP", "tool travel [mm]", "P dFz/dP [N]");
+  PlotSpec p = titled("run_sensitivities", "Scaled sensitivities of the tool force: P dF/dP", "tool travel [mm]", "P dF/dP [N]");
   std::vector<double> x = travel(c);
   x.resize(std::min(x.size(), c.sensitivities.rows()));
-  const std::string marker = "*dFz/d(";
-  for (const std::string& name : c.sensitivities.names) {
-    const auto at = name.find(marker);
-    if (at == std::string::npos) continue;
-    std::vector<double> y = c.sensitivities.column(name);
-    y.resize(x.size());
-    p.series.push_back({name.substr(0, at), x, y, Series::Style::line, ""});
-  }
+  struct Column {
+    std::string title;
+    std::vector<double> y;
+    char component;
+  };
+  std::vector<Column> columns;
+  double largest = 0.0, by_component[3] = {0.0, 0.0, 0.0};
+  for (const std::string& name : c.sensitivities.names)
+    for (int k = 0; k < 3; ++k) {
+      const std::string marker = std::string("*dF") + "xyz"[k] + "/d(";
+      const auto at = name.find(marker);
+      if (at == std::string::npos) continue;
+      std::vector<double> y = c.sensitivities.column(name);
+      y.resize(x.size());
+      for (double v : y) by_component[k] = std::max(by_component[k], std::abs(v));
+      largest = std::max(largest, by_component[k]);
+      columns.push_back({name.substr(0, at) + ": F" + "xyz"[k], std::move(y), "xyz"[k]});
+    }
+  for (Column& col : columns)
+    if (by_component[col.component - 'x'] > 1e-3 * largest) p.series.push_back({col.title, x, std::move(col.y), Series::Style::line, ""});
   return p;
 }
 

@@ -1,5 +1,7 @@
 #include "forward/solver/newton_solver.hpp"
 
+#include "forward/solver/preconditioned_gmres.hpp"
+
 #include "forward/solver/convergence_test.hpp"
 #include "forward/solver/line_search.hpp"
 #include "forward/solver/reduced_assembler.hpp"
@@ -385,32 +387,53 @@ bool NewtonSolver::sensitivity_step(double lambda1, std::string* message) {
       return false;
     }
   }
-  // The exact tangent: UMFPACK unless it is symmetric (CHOLMOD), whatever Newton used.
-  const bool symmetric = k_->is_symmetric(1e-10);
-  const LinearSolverKind kind = symmetric ? LinearSolverKind::cholmod : LinearSolverKind::umfpack;
-  if (!sensitivity_solver_ || sensitivity_symmetric_ != symmetric) {
-    sensitivity_solver_ = make_linear_solver(kind);
-    sensitivity_symmetric_ = symmetric;
-  }
-  if (!sensitivity_solver_->factorize(*k_)) {
-    *message = "sensitivities at load factor " + std::to_string(lambda1) + ": the tangent: " + sensitivity_solver_->error();
-    return false;
-  }
   Eigen::MatrixXd load;
   const ElementEvaluation le = problem_.sensitivity_load(&load);
   if (!le.ok) {
     *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + le.where + ": " + le.reason;
     return false;
   }
+  const auto t0 = std::chrono::steady_clock::now();
+  ++sensitivity_stats_.increments;
+  // The exact tangent's solves: GMRES preconditioned by Newton's factor in hand (the tangent at
+  // the previous iterate, or its symmetric part), else -- no factor, or GMRES not converged -- a
+  // factorisation of the exact tangent of its own: UMFPACK unless it is symmetric (CHOLMOD).
+  bool factorised = false;
   Eigen::MatrixXd du(problem_.num_dofs(), load.cols());
   for (Eigen::Index k = 0; k < load.cols(); ++k) {
+    const Eigen::VectorXd rhs = -constraints_.reduce(load.col(k));
     Eigen::VectorXd x;
-    if (!sensitivity_solver_->solve(-constraints_.reduce(load.col(k)), &x)) {
+    if (!factorised && last_factor_) {
+      const GmresResult g = preconditioned_gmres([this](const Eigen::VectorXd& v) { return k_->multiply(v); },
+                                                 [this](const Eigen::VectorXd& v, Eigen::VectorXd* z) { return last_factor_->solve(v, z); }, rhs,
+                                                 &x, kSensitivityGmresTolerance, kSensitivityGmresIterations);
+      sensitivity_stats_.gmres_iterations += g.iterations;
+      if (g.converged) {
+        ++sensitivity_stats_.gmres_solves;
+        du.col(k) = constraints_.expand(x);
+        continue;
+      }
+    }
+    if (!factorised) {
+      const bool symmetric = k_->is_symmetric(1e-10);
+      if (!sensitivity_solver_ || sensitivity_symmetric_ != symmetric) {
+        sensitivity_solver_ = make_linear_solver(symmetric ? LinearSolverKind::cholmod : LinearSolverKind::umfpack);
+        sensitivity_symmetric_ = symmetric;
+      }
+      if (!sensitivity_solver_->factorize(*k_)) {
+        *message = "sensitivities at load factor " + std::to_string(lambda1) + ": the tangent: " + sensitivity_solver_->error();
+        return false;
+      }
+      factorised = true;
+      ++sensitivity_stats_.factorisations;
+    }
+    if (!sensitivity_solver_->solve(rhs, &x)) {
       *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + sensitivity_solver_->error();
       return false;
     }
     du.col(k) = constraints_.expand(x);
   }
+  sensitivity_stats_.solve_seconds += seconds_since(t0);
   const ElementEvaluation ue = problem_.update_sensitivities(du);
   if (!ue.ok) {
     *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + ue.where + ": " + ue.reason;

@@ -62,6 +62,14 @@ class NewtonSolver {
   // matrix it factorises: K, or its symmetric part (NewtonOptions::symmetric_tangent), which
   // this call then computes.
   LinearSolver& linear_solver(const SparseMatrix** matrix);
+  // The direct differentiation's solves so far (NonlinearProblem::sensitivity_count > 0).
+  struct SensitivitySolveStats {
+    int increments = 0;
+    int gmres_solves = 0, gmres_iterations = 0;  // right-hand sides GMRES solved, its back-substitutions (all tries)
+    int factorisations = 0;                      // of the exact tangent, where GMRES did not converge or had no factor
+    double solve_seconds = 0.0;                  // wall time of the solves and factorisations
+  };
+  const SensitivitySolveStats& sensitivity_stats() const { return sensitivity_stats_; }
 
  private:
   NonlinearProblem& problem_;
@@ -90,10 +98,16 @@ class NewtonSolver {
   bool solve_with_last_factor(const Eigen::VectorXd& rhs, Eigen::VectorXd* x);
   LinearSolver* last_factor_ = nullptr;  // the solver holding the last successful factorisation
   // Direct differentiation after a converged increment (NonlinearProblem::sensitivity_count):
-  // the tangent at the converged iterate, factorised by a solver of its own (Newton's last
-  // factor is left as it is), one solve per parameter. false (with the message) on failure.
+  // one solve per parameter with the tangent at the converged iterate: GMRES preconditioned by
+  // Newton's last factor (left as it is), or a factorisation by a solver of its own. false
+  // (with the message) on failure.
   bool sensitivity_step(double lambda1, std::string* message);
   std::unique_ptr<LinearSolver> sensitivity_solver_;
+  SensitivitySolveStats sensitivity_stats_;
+  // GMRES on the exact tangent with Newton's factor: |residual| <= 1e-12 |rhs| within 20 of its
+  // back-substitutions, else the tangent is factorised.
+  static constexpr double kSensitivityGmresTolerance = 1e-12;
+  static constexpr int kSensitivityGmresIterations = 20;
   bool tangent_at_iterate_ = false;  // the last assembly's tangent is k_ (its iterate's)
   bool sensitivity_symmetric_ = false;
   // The increment loop from the stepping state to lambda_end (solve and resume).

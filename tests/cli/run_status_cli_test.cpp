@@ -257,7 +257,8 @@ TEST(RunStatusCli, SigtermEndsAFitAsInterruptedWithItsEvaluationsKept) {
   const fs::path data = temp_path("fx.csv"), fit = temp_path("fit.toml"), err = temp_path("err.txt");
   auto r = run_spifit("-q synth " + scene.string() + " --set contact.friction=0.1 --x travel --y fx --every 4 --out " + data.string());
   ASSERT_EQ(r.code, 0) << r.err;
-  std::ofstream(fit) << "[fit]\ncard = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
+  // Central differences: iteration 0 takes three runs, and the signal comes after its first.
+  std::ofstream(fit) << "[fit]\ncard = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\njacobian = \"central\"\n"
                      << "[parameters.\"contact.friction\"]\ninitial = 0.14\nlower = 0.0\nupper = 0.5\n"
                      << "[[experiment]]\nscene = \"" << scene.string() << "\"\ndata = \"" << data.string() << "\"\nx = \"travel\"\ny = \"fx\"\nnoise = 1.0\n";
   const fs::path out = fresh_temp_path("fit_out");

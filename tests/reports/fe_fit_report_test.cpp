@@ -97,9 +97,9 @@ void expect_runs(const FeFit& f, const json& j, const std::string& md) {
     evaluations += e["evaluations"].get<long>();
     scene_runs += e["scene_runs"].get<long>();
     seconds += e["run_seconds"].get<double>();
-    EXPECT_EQ(e["jacobian"], "central") << name;  // friction is a parameter: no exact derivatives yet
+    EXPECT_EQ(e["jacobian"], "exact") << name;  // friction and the card's parameters: exact derivatives
     EXPECT_EQ(md_row(runs, name), (std::vector<std::string>{name, e["kind"], std::to_string(e["evaluations"].get<long>()),
-                                                             "central differences", std::to_string(e["scene_runs"].get<long>()),
+                                                             "exact (FE run)", std::to_string(e["scene_runs"].get<long>()),
                                                              reports::format_significant(e["run_seconds"].get<double>(), 3)}))
         << runs;
   }

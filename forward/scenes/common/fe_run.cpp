@@ -126,6 +126,14 @@ FeRunOutcome FeRun::run(const nlohmann::json& head) {
 
   FeRunOutcome out = step.finish(r.converged, r.lambda, r.message, control_.resume ? restored.marks_reached : -1);
   out.counters = r.counters;
+  if (!control_.sensitivities.empty()) {
+    const solver::NewtonSolver::SensitivitySolveStats& s = solver_->sensitivity_stats();
+    out.sensitivity_solves = {{"increments", s.increments},
+                              {"gmres_solves", s.gmres_solves},
+                              {"gmres_iterations", s.gmres_iterations},
+                              {"factorisations", s.factorisations},
+                              {"seconds", s.solve_seconds}};
+  }
   return out;
 }
 

@@ -137,6 +137,8 @@ struct FeRunOutcome {
   // Explicit runs: steps, time step, mass scaling and what it added, the time-step bound's
   // element (summary.json "explicit"); null for implicit runs.
   nlohmann::json dynamics;
+  // Runs with sensitivities: how their solves went (summary.json "sensitivity_solves"); else null.
+  nlohmann::json sensitivity_solves;
   bool ok() const { return status == RunStatus::ok; }
 };
 

@@ -21,6 +21,7 @@ void add_fe_run_summary(nlohmann::json& j, const FeRunOutcome& run, const ToolFo
                      {"viscous_work", c.viscous_work},
                      {"viscous_work_over_tool_work", en.external_work > 0.0 ? c.viscous_work / en.external_work : 0.0},
                      {"max_viscous_force", c.max_viscous_force}};
+  if (!run.sensitivity_solves.is_null()) j["sensitivity_solves"] = run.sensitivity_solves;
   j["travel_reached"] = run.travel_reached;
   j["peak_force"] = vector_json(force.peak());
   j["final_force"] = vector_json(force.final_force());
