@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -40,14 +41,28 @@ material::MaterialParams<double> card() {
   return material::load_material_card(std::string(SPIFIT_SOURCE_DIR) + "/materials/aa3003o_c3c4.toml").params;
 }
 
-struct IndentRun {
-  std::vector<Eigen::Vector3d> force;  // on the tool, per increment
+// One run of a clamped 10 x 10 x 0.5 mm sheet (8 x 8 shells, 3 thickness points) under an R 3
+// tool: the force on the tool, the contact's summary and the force's derivatives per increment.
+struct SheetRun {
+  std::vector<Eigen::Vector3d> force;
+  std::vector<contact::ContactSummary> contact;
   std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> sensitivity;
-  std::string message;
 };
 
-// A clamped 10 x 10 x 0.5 mm sheet indented 1.2 mm by an R 3 tool in ten equal increments.
-IndentRun indent(const material::MaterialParams<double>& p, bool sensitivities, double penalty = 1000.0) {
+struct SheetSetup {
+  contact::ContactOptions contact;
+  std::function<Eigen::Vector3d(double)> centre;  // the tool's centre against the load factor
+  int increments = 10;                            // equal, converged to 1e-11
+  bool robust = false;                            // line search, 40 iterations, no divergence rule
+  // With sensitivities: the card's seeds in `count` slots, the contact's own slots.
+  std::vector<FieldSeed> seeds;
+  int count = 0;
+  contact::ShellContact::ParameterSlots slots;
+};
+
+constexpr double kToolRadius = 3.0;
+
+SheetRun run_sheet(const material::MaterialParams<double>& p, const SheetSetup& setup) {
   mesh::SquareSheetOptions so;
   so.length_x = so.length_y = 10.0;
   so.nx = so.ny = 8;
@@ -55,38 +70,53 @@ IndentRun indent(const material::MaterialParams<double>& p, bool sensitivities, 
   ShellModelOptions mo;
   mo.shell.thickness_points = 3;
   ShellModel model(mesh, 0.5, p, mo);
-  contact::ContactOptions co;
-  co.penalty = penalty;
-  const double R = 3.0;
-  ToolContact& tool = attach_tool(model, R, [=](double lambda) { return Eigen::Vector3d(0.3, -0.2, 0.25 + R - 1.2 * lambda); }, co);
+  ToolContact& tool = attach_tool(model, kToolRadius, setup.centre, setup.contact);
   solver::DofConstraints c(model.num_dofs());
   for (int n : mesh.node_sets.at("boundary"))
     for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
   c.finalize();
-  if (sensitivities) {
-    tool.set_parameter_slots({.penalty = 4});
-    model.enable_sensitivities(seeds(), kCount, p);
+  if (setup.count > 0) {
+    tool.set_parameter_slots(setup.slots);
+    model.enable_sensitivities(setup.seeds, setup.count, p);
   }
   solver::NewtonOptions o;
-  o.initial_increment = o.max_increment = o.min_increment = 0.1;
+  o.initial_increment = o.max_increment = o.min_increment = 1.0 / setup.increments;
   o.force_tolerance = o.displacement_tolerance = 1e-11;
+  if (setup.robust) {
+    o.line_search = true;
+    o.max_iterations = 40;
+    o.divergence_after = 0;
+  }
   solver::NewtonSolver s(model, c, o);
-  IndentRun run;
+  SheetRun run;
   const solver::NewtonSummary sum = s.solve(1.0, [&](const solver::IncrementReport&) {
     run.force.push_back(tool.force());
+    run.contact.push_back(tool.summary());
     run.sensitivity.push_back(model.contribution_force_sensitivity());
     return true;
   });
-  run.message = sum.message;
   EXPECT_TRUE(sum.converged) << sum.message;
   return run;
 }
 
+// The sheet indented 1.2 mm in ten equal increments.
+SheetRun indent(const material::MaterialParams<double>& p, bool sensitivities, double penalty = 1000.0) {
+  SheetSetup setup;
+  setup.contact.penalty = penalty;
+  setup.centre = [](double lambda) { return Eigen::Vector3d(0.3, -0.2, 0.25 + kToolRadius - 1.2 * lambda); };
+  if (sensitivities) {
+    setup.seeds = seeds();
+    setup.count = kCount;
+    setup.slots.penalty = 4;
+  }
+  return run_sheet(p, setup);
+}
+
 TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
   const material::MaterialParams<double> p = card();
-  const IndentRun ddm = indent(p, true);
+  const SheetRun ddm = indent(p, true);
   ASSERT_EQ(ddm.force.size(), 10u);
-  const IndentRun plain = indent(p, false);
+  const SheetRun plain = indent(p, false);
   for (std::size_t n = 0; n < ddm.force.size(); ++n) EXPECT_EQ(ddm.force[n], plain.force[n]) << "increment " << n;
   const std::vector<FieldSeed> sd = seeds();
   const char* names[kCount] = {"swift.K", "swift.n", "elastic.E", "hill.G", "contact.penalty"};
@@ -110,7 +140,7 @@ TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
         pp.H = 2.0 - pp.G;
         pm.H = 2.0 - pm.G;
       }
-      const IndentRun rp = indent(pp, false, kp), rm = indent(pm, false, km);
+      const SheetRun rp = indent(pp, false, kp), rm = indent(pm, false, km);
       for (std::size_t n = 0; n < 10; ++n) (step == steps[k] ? cd : cd4)[n] = (rp.force[n] - rm.force[n]) / (2.0 * step);
     }
     std::vector<Eigen::Vector3d> exact;
@@ -121,58 +151,28 @@ TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
 }
 
 // The indentation continued by a drag: pressed 0.8 mm into the sheet in 8 increments, then moved
-// 1 mm along x in 16 more, with Coulomb friction mu = 0.15: some points stick, others slide, and
-// the stick history (the committed tangential tractions) carries derivatives from increment to
-// increment.
+// 1 mm along x in 16 more, with Coulomb friction: the stick history (the committed tangential
+// tractions) carries derivatives from increment to increment.
 constexpr double kDrag = 1.0;  // mm
 constexpr int kDragIncrements = 24;
-struct DragRun {
-  std::vector<Eigen::Vector3d> force;
-  std::vector<contact::ContactSummary> contact;
-  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> sensitivity;
-};
 
-DragRun drag(const material::MaterialParams<double>& p, double penalty, double mu, double tangential_penalty, bool sensitivities) {
-  mesh::SquareSheetOptions so;
-  so.length_x = so.length_y = 10.0;
-  so.nx = so.ny = 8;
-  const mesh::Mesh mesh = mesh::square_sheet(so);
-  ShellModelOptions mo;
-  mo.shell.thickness_points = 3;
-  ShellModel model(mesh, 0.5, p, mo);
-  contact::ContactOptions co;
-  co.penalty = penalty;
-  co.friction = mu;
-  co.tangential_penalty = tangential_penalty;
-  const double R = 3.0;
-  ToolContact& tool = attach_tool(model, R, [=](double lambda) {
+SheetRun drag(const material::MaterialParams<double>& p, double penalty, double mu, double tangential_penalty, bool sensitivities) {
+  SheetSetup setup;
+  setup.contact.penalty = penalty;
+  setup.contact.friction = mu;
+  setup.contact.tangential_penalty = tangential_penalty;
+  setup.centre = [](double lambda) {
     const double press = std::min(lambda, 1.0 / 3.0) * 3.0, move = std::max(lambda - 1.0 / 3.0, 0.0) * 1.5;
-    return Eigen::Vector3d(-0.5 + kDrag * move, 0.1, 0.25 + R - 0.8 * press);
-  }, co);
-  solver::DofConstraints c(model.num_dofs());
-  for (int n : mesh.node_sets.at("boundary"))
-    for (int k = 0; k < 6; ++k) c.prescribe(ShellModel::dof(n, k));
-  c.finalize();
+    return Eigen::Vector3d(-0.5 + kDrag * move, 0.1, 0.25 + kToolRadius - 0.8 * press);
+  };
+  setup.increments = kDragIncrements;
+  setup.robust = true;
   if (sensitivities) {
-    tool.set_parameter_slots({.penalty = 1, .friction = 2});
-    model.enable_sensitivities({{input("swift.K").field, unit(0)}}, 3, p);
+    setup.seeds = {{input("swift.K").field, unit(0)}};
+    setup.count = 3;
+    setup.slots = {.penalty = 1, .friction = 2};
   }
-  solver::NewtonOptions o;
-  o.initial_increment = o.max_increment = o.min_increment = 1.0 / kDragIncrements;
-  o.line_search = true;
-  o.max_iterations = 40;
-  o.divergence_after = 0;
-  o.force_tolerance = o.displacement_tolerance = 1e-11;
-  solver::NewtonSolver s(model, c, o);
-  DragRun run;
-  const solver::NewtonSummary sum = s.solve(1.0, [&](const solver::IncrementReport&) {
-    run.force.push_back(tool.force());
-    run.contact.push_back(tool.summary());
-    run.sensitivity.push_back(model.contribution_force_sensitivity());
-    return true;
-  });
-  EXPECT_TRUE(sum.converged) << sum.message;
-  return run;
+  return run_sheet(p, setup);
 }
 
 // With K_t = K_p every point slides during the drag (each increment's slip, 0.06 mm, exceeds
@@ -186,9 +186,9 @@ TEST(ShellModelSensitivity, FrictionDerivativesMatchCentralDifferences) {
     bool sticks;
   };
   for (const Variant v : {Variant{0.15, 0.0, false}, Variant{0.3, 100.0, true}}) {
-    const DragRun ddm = drag(p, penalty, v.mu, v.tangential_penalty, true);
+    const SheetRun ddm = drag(p, penalty, v.mu, v.tangential_penalty, true);
     ASSERT_EQ(ddm.force.size(), static_cast<std::size_t>(kDragIncrements));
-    const DragRun plain = drag(p, penalty, v.mu, v.tangential_penalty, false);
+    const SheetRun plain = drag(p, penalty, v.mu, v.tangential_penalty, false);
     for (std::size_t n = 0; n < ddm.force.size(); ++n) EXPECT_EQ(ddm.force[n], plain.force[n]) << "increment " << n;
     EXPECT_GT(std::abs(ddm.force.back().x()), 0.05 * std::abs(ddm.force.back().z()));  // friction drags the tool
     int sticking = 0, sliding = 0;  // point-increments of the drag
@@ -209,8 +209,8 @@ TEST(ShellModelSensitivity, FrictionDerivativesMatchCentralDifferences) {
           material::set_material_input(pp, input("swift.K"), material::material_field(p, input("swift.K").field) + step);
           material::set_material_input(pm, input("swift.K"), material::material_field(p, input("swift.K").field) - step);
         }
-        const DragRun rp = drag(pp, penalty + (k == 1 ? step : 0.0), v.mu + (k == 2 ? step : 0.0), v.tangential_penalty, false);
-        const DragRun rm = drag(pm, penalty - (k == 1 ? step : 0.0), v.mu - (k == 2 ? step : 0.0), v.tangential_penalty, false);
+        const SheetRun rp = drag(pp, penalty + (k == 1 ? step : 0.0), v.mu + (k == 2 ? step : 0.0), v.tangential_penalty, false);
+        const SheetRun rm = drag(pm, penalty - (k == 1 ? step : 0.0), v.mu - (k == 2 ? step : 0.0), v.tangential_penalty, false);
         for (std::size_t n = 0; n < cd.size(); ++n) (step == steps[k] ? cd : cd4)[n] = (rp.force[n] - rm.force[n]) / (2.0 * step);
       }
       std::vector<Eigen::Vector3d> exact;
