@@ -161,7 +161,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   auto* resume = cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
   cmd->add_option("--sensitivities", o->sensitivities,
                   "material parameters, contact.penalty and contact.friction, comma-separated (e.g. swift.K,elastic.E): write the tool force's exact derivatives "
-                  "with respect to them to DIR/sensitivities.csv (implicit indent, indent_line and line scenes)")
+                  "with respect to them to DIR/sensitivities.csv (implicit FE scenes: indent, indent_line, line and cone)")
       ->delimiter(',')
       ->excludes(resume);
   cmd->callback([o, &g, &exit_code] {
@@ -216,7 +216,7 @@ void add_check_sensitivities_command(CLI::App& app, const GlobalOptions& g, int&
   auto* cmd = app.add_subcommand("check-sensitivities",
                                  "Compare a scene's exact tool-force derivatives (run --sensitivities) with central differences of whole runs "
                                  "(steps h and h/4); exit 1 when one lies outside the central differences' own spread");
-  cmd->add_option("SCENE", o->scene, "scene file (TOML): an implicit indent, indent_line or line scene")->required();
+  cmd->add_option("SCENE", o->scene, "scene file (TOML): an implicit indent, indent_line, line or cone scene")->required();
   cmd->add_option("--sensitivities", o->names, "material parameters, contact.penalty and contact.friction, comma-separated (e.g. swift.K,elastic.E)")->delimiter(',')->required();
   cmd->add_option("--relative-step", o->relative_step, "h as a fraction of each parameter's value (default 1e-4)")->check(CLI::Range(1e-12, 0.1));
   cmd->add_option("--tolerance", o->tolerance, "force and displacement tolerance of every run's Newton solver instead of the scene's (e.g. 1e-10 with friction; default 0: the scene's)")

@@ -116,6 +116,8 @@ class ElementFamily {
   virtual solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load);
   virtual solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                          Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force);
+  // The committed derivative of element_thickness(e) (after enable_sensitivities).
+  virtual material::SensitivityRow thickness_sensitivity(int e) const;
   // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;

@@ -171,6 +171,26 @@ std::vector<double> FeModel::nodal_thickness() const {
   return h;
 }
 
+Eigen::MatrixXd FeModel::nodal_thickness_sensitivity() const {
+  Eigen::MatrixXd dh = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(x_.size()), sensitivity_count_);
+  if (sensitivity_count_ == 0) return dh;
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(dh.rows());
+  for (int e = 0; e < num_elements(); ++e) {  // as nodal_thickness, in element order
+    const Eigen::RowVectorXd de = family_->thickness_sensitivity(e).head(sensitivity_count_);
+    for (int i : element_nodes_[static_cast<std::size_t>(e)]) {
+      dh.row(i) += de;
+      w(i) += 1.0;
+    }
+  }
+  for (Eigen::Index i = 0; i < dh.rows(); ++i) dh.row(i) /= w(i);
+  return dh;
+}
+
+material::SensitivityRow ElementFamily::thickness_sensitivity(int e) const {
+  (void)e;
+  throw std::logic_error(name() + " elements have no thickness sensitivities");
+}
+
 void ElementFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) {
   (void)law, (void)count;
   throw std::invalid_argument(name() + " elements have no parameter sensitivities yet");

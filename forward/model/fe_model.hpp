@@ -108,6 +108,8 @@ class FeModel : public solver::NonlinearProblem {
   // Committed thickness of element e (the family's) and of each node (mean of its elements).
   double element_thickness(int e) const { return family_->element_thickness(e); }
   std::vector<double> nodal_thickness() const;
+  // With sensitivities: the committed derivative of nodal_thickness (nodes x parameters).
+  Eigen::MatrixXd nodal_thickness_sensitivity() const;
   double load_work() const { return load_work_; }  // work of the nodal loads so far [N mm]
   const std::vector<std::string>& warnings() const { return family_->warnings(); }
   // Nodes of element e, in the order of its DOFs.

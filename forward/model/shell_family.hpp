@@ -66,6 +66,7 @@ class ShellFamily final : public ElementFamily {
   solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) override;
   solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                  Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
+  material::SensitivityRow thickness_sensitivity(int e) const override { return 2.0 * offset_sensitivity(e); }
 
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
   element::ShellQ4& element(int e) { return elements_[static_cast<std::size_t>(e)]; }

@@ -15,7 +15,7 @@ std::optional<SensitivityRefusal> sensitivity_refusal(const Scene& scene, const 
   auto refuse = [&](const std::string& why) { return SensitivityRefusal{"--sensitivities", joined, why}; };
   const SceneKind* kind = find_scene_kind(scene.kind());
   if (!kind || !kind->sensitivities || !scene.card())
-    return refuse(kind && kind->fe_run ? scene.kind() + " scenes have no parameter sensitivities yet (indent, indent_line and line scenes have)"
+    return refuse(kind && kind->fe_run ? scene.kind() + " scenes have no parameter sensitivities"
                                        : "FE scenes only (a material-point scene's parameter derivatives are exact Jets in fits already)");
   // A scene input other than the penalty (contact.friction, tool.radius, ...); unknown names are
   // the seeds' to name, with the card's parameters.

@@ -282,7 +282,7 @@ class SectionExperiment final : public CurveFeExperiment {
 
  private:
   ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint&) const override { return section_curve(r, point_, x_, y_); }
-  bool differentiable() const override { return y_ == "z"; }  // the thickness: no derivatives yet
+  bool differentiable() const override { return true; }  // z and the thickness
   std::string point_, x_, y_;
 };
 
@@ -303,6 +303,7 @@ class ContourMeansExperiment final : public CurveFeExperiment {
       if (!std::isfinite(v)) return {};  // a contour without samples: nothing to compare
     return m;
   }
+  bool differentiable() const override { return true; }  // ConeResult::contour_means' dy
   std::string y_;
 };
 

@@ -159,9 +159,12 @@ class FeRun {
   model::ShellModel* shell_model() { return dynamic_cast<model::ShellModel*>(model_.get()); }
   const model::ToolContact& tool() const { return *tool_; }
   // The material parameters the run differentiates with respect to (RunControl::sensitivities)
-  // and their values.
+  // and their values and units (sensitivities.csv's columns).
   const std::vector<std::string>& sensitivity_names() const { return control_.sensitivities; }
   std::vector<double> sensitivity_values() const;
+  std::vector<std::string> sensitivity_units() const;
+  // The model's warnings, and what the run's sensitivities cannot follow exactly.
+  std::vector<std::string> warnings() const;
 
   // Observers are called in the order added; add them all before run().
   template <typename O>
@@ -187,6 +190,7 @@ class FeRun {
   std::unique_ptr<solver::DofConstraints> constraints_;
   std::unique_ptr<solver::NewtonSolver> solver_;
   std::vector<std::unique_ptr<RunObserver>> observers_;
+  std::string sensitivity_warning_;
   class Stepper;  // the per-increment bookkeeping (fe_run_stepper.hpp)
   FeRunOutcome run_explicit(const nlohmann::json& head);
   void enable_sensitivities();

@@ -150,6 +150,8 @@ void ConeObservableLog::after_increment(const IncrementView& v) {
     double max_ratio = 0.0;
     for (const auto& e : radial_elongation(section_nodes(mid))) max_ratio = std::max(max_ratio, e.ratio);
     stage_rows_.add_row({static_cast<double>(stage), stage_wall_angle(scene_, stage), travel, z, -z, max_ratio});
+    // The axis node is a model node of the shell, the family with sensitivities.
+    if (model_.sensitivity_count() > 0 && centre_node_ >= 0) depth_sensitivities_.push_back(-model_.position_sensitivity(centre_node_).row(2));
   }
 }
 

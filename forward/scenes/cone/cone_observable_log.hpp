@@ -54,6 +54,8 @@ class ConeObservableLog : public RunObserver {
   // For summary.json: the history element, the last section summary and the stages.
   nlohmann::json summary() const;
   int history_element() const { return history_element_; }  // -1 without [output] history_element
+  // A run with sensitivities: d(centre_depth)/dp at the end of each stage so far, as stages(); else empty.
+  const std::vector<Eigen::RowVectorXd>& centre_depth_sensitivities() const { return depth_sensitivities_; }
 
   std::string name() const override { return "cone_observables"; }
   void after_increment(const IncrementView& v) override;
@@ -82,6 +84,7 @@ class ConeObservableLog : public RunObserver {
   element::ThicknessRule rule_;
   io::Series section_rows_, stage_rows_, history_rows_;
   std::vector<ConeSection> profiles_;
+  std::vector<Eigen::RowVectorXd> depth_sensitivities_;  // not checkpointed: runs with sensitivities do not resume
   std::size_t stages_written_ = 0;
 };
 

@@ -1,5 +1,7 @@
 #include "forward/scenes/cone/cone_result.hpp"
 
+#include "forward/scenes/cone/cone_sensitivities.hpp"
+
 #include "forward/io/format_text.hpp"
 #include "forward/scenes/common/fe_run_summary.hpp"
 
@@ -88,11 +90,34 @@ ResultCurve ConeResult::contour_section(int contour, const std::string& x, const
   return c;
 }
 
+namespace {
+
+// d/dp of contour_mean_value from the mean's derivatives.
+Eigen::RowVectorXd contour_mean_derivative(const ContourMean& m, const SteadyStateDerivatives& d, const std::string& y) {
+  if (y == "fr") return d.polar.row(0);
+  if (y == "ftheta") return d.polar.row(1);
+  if (y == "fz") return d.polar.row(2);
+  if (y == "fx") return d.force.row(0);
+  if (y == "fy") return d.force.row(1);
+  const int k = y == "ftheta_over_fz" ? 1 : 0;
+  const double fz = m.polar.z();
+  return d.polar.row(k) / fz - m.polar(k) / (fz * fz) * d.polar.row(2);
+}
+
+}  // namespace
+
 ResultCurve ConeResult::contour_means(const std::string& y) const {
   ResultCurve c;
+  std::vector<Eigen::RowVectorXd> dy;
   for (std::size_t i = 0; i < contours.size(); ++i) {
     c.x.push_back(static_cast<double>(i + 1));
     c.y.push_back(contour_mean_value(contours[i], y));
+    const int contour = static_cast<int>(i) + 1;
+    if (const auto d = steady_state_sensitivity(*this, contour, contour)) dy.push_back(contour_mean_derivative(contours[i], *d, y));
+  }
+  if (!dy.empty() && dy.size() == contours.size()) {  // a contour without samples has none
+    c.dy.resize(static_cast<Eigen::Index>(dy.size()), dy.front().size());
+    for (std::size_t i = 0; i < dy.size(); ++i) c.dy.row(static_cast<Eigen::Index>(i)) = dy[i];
   }
   return c;
 }

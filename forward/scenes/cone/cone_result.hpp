@@ -27,6 +27,9 @@ class ConeResult final : public FeSceneResult {
   io::Series sections, stages, history;  // sections.csv, stages.csv, history.csv
   std::vector<ConeSection> section_profiles;  // sections/section_s*_c*.csv: after each completed contour, path order
   nlohmann::json observables;            // section angle, last section, stages, history element
+  // A run with sensitivities: d(centre depth)/dp at the end of the last stage reached (stages.csv's
+  // last row), in RunControl::sensitivities' order; else empty.
+  Eigen::RowVectorXd centre_depth_sensitivity;
 
   Eigen::Vector3d final_polar_force() const;
   nlohmann::json to_json() const override;

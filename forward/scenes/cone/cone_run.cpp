@@ -7,8 +7,8 @@
 #include "forward/model/hanging_nodes.hpp"
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
-#include "forward/io/input_error.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
+#include "forward/scenes/common/sensitivity_log.hpp"
 #include "forward/scenes/common/vtu_log.hpp"
 #include "forward/scenes/cone/cone_contour_log.hpp"
 #include "forward/scenes/cone/cone_load_map.hpp"
@@ -87,8 +87,8 @@ std::vector<double> tool_copies(const ConeScene& s) {
   return {s.pie_angle, -s.pie_angle};
 }
 
-std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& track, const model::FeModel& model) {
-  std::vector<std::string> w = model.warnings();
+std::vector<std::string> scene_warnings(const ConeScene& s, const ConeTrack& track, const FeRun& run) {
+  std::vector<std::string> w = run.warnings();
   if (!is_pie(s)) return w;
   if (!s.virtual_tools) w.emplace_back("virtual tools off: a tool footprint crossing a pie edge does not act on the other edge");
   // The copies at +-gamma see the neighbouring pies only: a footprint reaching further (near the
@@ -203,11 +203,17 @@ ForceLogFormat force_format(const ConeScene& s, const ConeTrack& track) {
 }  // namespace
 
 ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const RunControl& control) {
-  if (!control.sensitivities.empty())
-    throw io::InputError(scene.file, "--sensitivities", control.sensitivities.front(), "cone scenes have no parameter sensitivities yet (indent, indent_line and line scenes have)");
   const ConeTrack track(cone_scene_path(scene));
   FeRun run(cone_setup(scene, track), files, control);
   auto& force = run.add_observer(std::make_unique<ForceLog>(force_format(scene, track), run.files()));
+  const SensitivityLog* sensitivity = nullptr;
+  if (!run.sensitivity_names().empty())
+    sensitivity = &run.add_observer(std::make_unique<SensitivityLog>(
+        run.sensitivity_names(), run.sensitivity_units(), run.sensitivity_values(),
+        "# spifit cone scene " + scene.name + ": derivatives of the force BY the sheet ON the (real) tool, Cartesian, with respect to the "
+        "card's parameters (and the contact's penalty and friction) (direct differentiation; a pie's virtual tools included), "
+        "and each scaled by the parameter's value",
+        nullptr, run.files()));
   auto& contours = run.add_observer(std::make_unique<ConeContourLog>(scene.name, track, force, run.files()));
   auto& energy = run.add_observer(std::make_unique<EnergyLog>(
       "# spifit cone scene " + scene.name + ": energy account of the (pie) model after each increment (model::ModelEnergies), N mm; "
@@ -219,8 +225,9 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
 
   ConeResult r;
-  r.warnings = scene_warnings(scene, track, run.model());
+  r.warnings = scene_warnings(scene, track, run);
   r.inputs = summary_head(scene, run.model(), run.tool(), track, r.warnings);
+  if (!run.sensitivity_names().empty()) r.inputs["sensitivities"] = run.sensitivity_names();
   r.name = scene.name;
   r.elements = run.model().num_elements();
   r.contours_total = static_cast<int>(track.contours().size());
@@ -234,6 +241,8 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
   r.stages = observables.stages();
   r.history = observables.history();
   r.section_profiles = observables.profiles();
+  if (sensitivity) r.sensitivities = sensitivity->table();
+  if (!observables.centre_depth_sensitivities().empty()) r.centre_depth_sensitivity = observables.centre_depth_sensitivities().back();
   r.observables = observables.summary();
   files.write("summary.json", r.to_json().dump(2) + "\n");
   return r;

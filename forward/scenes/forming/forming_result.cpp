@@ -38,15 +38,15 @@ ResultCurve FormingResult::path_section(const std::string& point, const std::str
       c.x.push_back(xs[i]);
       c.y.push_back(ys[i]);
     }
-    // Derivatives where the section holds them: x moves, x0 does not; z (thickness: none).
-    if (s.dz.rows() == static_cast<Eigen::Index>(xs.size()) && y == "z" && (x == "x" || x == "x0")) {
+    // Derivatives where the section holds them: x moves, x0 does not; z and the thickness.
+    if (s.dz.rows() == static_cast<Eigen::Index>(xs.size()) && (y == "z" || y == "thickness") && (x == "x" || x == "x0")) {
       const Eigen::Index n = static_cast<Eigen::Index>(order.size());
       c.dx = Eigen::MatrixXd::Zero(n, s.dz.cols());
       c.dy.resize(n, s.dz.cols());
       for (Eigen::Index i = 0; i < n; ++i) {
         const auto row = static_cast<Eigen::Index>(order[static_cast<std::size_t>(i)]);
         if (x == "x") c.dx.row(i) = s.dx.row(row);
-        c.dy.row(i) = s.dz.row(row);
+        c.dy.row(i) = y == "z" ? s.dz.row(row) : s.dthickness.row(row);
       }
     }
     break;

@@ -13,9 +13,9 @@ namespace spifit::scene {
 struct PathSection {
   std::string point;  // the path point's name
   io::Series nodes;   // x0, x, y, z, thickness of the nodes on y = 0 (mid-surface) [mm]
-  // A run with sensitivities: the derivatives of the nodes' x and z, one row per node (in the
-  // order of `nodes`), one column per parameter; empty otherwise.
-  Eigen::MatrixXd dx, dz;
+  // A run with sensitivities: the derivatives of the nodes' x, z and thickness, one row per node
+  // (in the order of `nodes`), one column per parameter; empty otherwise.
+  Eigen::MatrixXd dx, dz, dthickness;
 };
 
 class FormingResult final : public FeSceneResult {

@@ -5,7 +5,6 @@
 #include "forward/scenes/common/energy_log.hpp"
 #include "forward/scenes/common/force_log.hpp"
 #include "forward/scenes/common/sensitivity_log.hpp"
-#include "forward/material/material_inputs.hpp"
 #include "forward/scenes/common/scene_tables.hpp"
 #include "forward/scenes/common/vtu_log.hpp"
 #include "forward/scenes/forming/forming_path.hpp"
@@ -144,11 +143,8 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   auto& force = run.add_observer(std::make_unique<ForceLog>(format, run.files()));
   const SensitivityLog* sensitivity = nullptr;
   if (!run.sensitivity_names().empty()) {
-    std::vector<std::string> units;
-    for (const std::string& n : run.sensitivity_names())
-      units.push_back(n == kPenaltySensitivity ? "N/mm^3" : n == kFrictionSensitivity ? "" : material::find_material_input(n)->info.unit);
     sensitivity = &run.add_observer(std::make_unique<SensitivityLog>(
-        run.sensitivity_names(), units, run.sensitivity_values(),
+        run.sensitivity_names(), run.sensitivity_units(), run.sensitivity_values(),
         "# spifit " + scene.kind + " scene " + scene.name + ": derivatives of the force BY the sheet ON the tool with respect to the card's parameters (and the contact's penalty and friction) "
         "(direct differentiation), and each scaled by the parameter's value" + (scene.half ? "; half model, mirrored to the full sheet" : ""),
         format.whole, run.files()));
@@ -170,7 +166,7 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
   r.path_length = length;
   r.feed = scene.feed;
   r.half = scene.half;
-  r.warnings = run.model().warnings();
+  r.warnings = run.warnings();
   if (const std::string w = path_edge_warning(run.setup().tool_path, scene); !w.empty()) r.warnings.push_back(w);
   r.take(run.run(r.inputs), force, energy, scene.contact, scene.thickness, mesh::median_edge_length(run.setup().mesh));
   r.sections = sections.sections();

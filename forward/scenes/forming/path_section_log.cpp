@@ -22,7 +22,7 @@ void PathSectionLog::at_mark(const Mark& m, const IncrementView& v) {
   for (int n = 0; n < static_cast<int>(mid.reference.size()); ++n)
     if (std::abs(mid.reference[static_cast<std::size_t>(n)].y()) < 1e-9) line.emplace_back(mid.reference[static_cast<std::size_t>(n)].x(), n);
   std::sort(line.begin(), line.end());
-  PathSection s{m.name, empty_section(), {}, {}};
+  PathSection s{m.name, empty_section(), {}, {}, {}};
   for (const auto& [x0, n] : line) {
     const Eigen::Vector3d& p = mid.current[static_cast<std::size_t>(n)];
     s.nodes.add_row({x0, p.x(), p.y(), p.z(), mid.thickness[static_cast<std::size_t>(n)]});
@@ -31,10 +31,13 @@ void PathSectionLog::at_mark(const Mark& m, const IncrementView& v) {
   if (const int count = v.model.sensitivity_count(); count > 0) {
     s.dx.resize(static_cast<Eigen::Index>(line.size()), count);
     s.dz.resize(static_cast<Eigen::Index>(line.size()), count);
+    s.dthickness.resize(static_cast<Eigen::Index>(line.size()), count);
+    const Eigen::MatrixXd dh = v.model.nodal_thickness_sensitivity();
     for (std::size_t i = 0; i < line.size(); ++i) {
       const Eigen::Matrix<double, 3, Eigen::Dynamic> d = v.model.position_sensitivity(line[i].second);
       s.dx.row(static_cast<Eigen::Index>(i)) = d.row(0);
       s.dz.row(static_cast<Eigen::Index>(i)) = d.row(2);
+      s.dthickness.row(static_cast<Eigen::Index>(i)) = dh.row(line[i].second);
     }
   }
   write_file(s);
@@ -60,7 +63,7 @@ void PathSectionLog::restore(io::BinaryReader& r) {
   const std::int64_t n = r.i64();
   if (n < 0 || n > 100000) throw io::ArchiveError("invalid section count " + std::to_string(n));
   for (std::int64_t i = 0; i < n; ++i) {
-    PathSection s{r.string(), empty_section(), {}, {}};
+    PathSection s{r.string(), empty_section(), {}, {}, {}};
     const std::int64_t rows = r.i64();
     if (rows < 0 || rows > 100'000'000) throw io::ArchiveError("invalid section row count " + std::to_string(rows));
     for (std::int64_t k = 0; k < rows; ++k) {

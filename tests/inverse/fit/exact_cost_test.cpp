@@ -90,13 +90,9 @@ std::string scalar_experiments(const TinyData& d) {
 // own spread (their largest change from one step to the next), or within 1e-6 of the column's
 // norm where they agree closer than that (an FE run's residuals wobble by about 1e-11 of
 // themselves from its Newton tolerances: 1e-7 of a derivative at these steps).
-TEST(ExactFeJacobian, ForceCurveAndSectionAgreeWithCentralDifferences) {
-  const TinyData d = tiny_data();
-  const auto problem = inverse::read_fit_file(write_fit(fit_text(d) + scalar_experiments(d)).string());
+static void expect_columns_within_central_differences(const inverse::FitProblem& problem) {
   const auto& ps = *problem.parameters;
   const int p = ps.num_free();
-  ASSERT_EQ(p, 4);
-  ASSERT_EQ(problem.experiments.size(), 5u);
   for (const auto& e : problem.experiments) {
     SCOPED_TRACE(e->name());
     ASSERT_EQ(e->jacobian(), "exact");
@@ -140,6 +136,37 @@ TEST(ExactFeJacobian, ForceCurveAndSectionAgreeWithCentralDifferences) {
       EXPECT_LE(error, std::max(spread, 1e-6 * norm)) << "column " << k;
     }
   }
+}
+
+TEST(ExactFeJacobian, ForceCurveAndSectionAgreeWithCentralDifferences) {
+  const TinyData d = tiny_data();
+  const auto problem = inverse::read_fit_file(write_fit(fit_text(d) + scalar_experiments(d)).string());
+  ASSERT_EQ(problem.parameters->num_free(), 4);
+  ASSERT_EQ(problem.experiments.size(), 5u);
+  expect_columns_within_central_differences(problem);
+}
+
+// The section's thickness at C (the elements' committed thickness derivatives, averaged at the
+// nodes as the thickness is), with respect to Swift's K and n.
+TEST(ExactFeJacobian, SectionThicknessAgreesWithCentralDifferences) {
+  const TinyData d = tiny_data();
+  const auto sc = scene::read_scene(d.scene.string());
+  const fs::path thickness = test::temp_path("thickness_C.csv");
+  inverse::SyntheticOptions s;
+  s.x = "x0";
+  s.y = "thickness";
+  s.noise = 0.001;
+  std::ofstream(thickness) << inverse::synthetic_section_csv(*sc, "C", s);
+  const auto problem = inverse::read_fit_file(
+      write_fit("[fit]\ncard = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n" +
+                "[parameters.\"swift.K\"]\ninitial = 170.0\nlower = 100.0\nupper = 300.0\n"
+                "[parameters.\"swift.n\"]\ninitial = 0.25\nlower = 0.05\nupper = 0.5\nlog = true\n"
+                "[[experiment]]\nname = \"thinning\"\nscene = \"" + d.scene.string() + "\"\nsection = \"C\"\nx = \"x0\"\ny = \"thickness\"\ndata = \"" +
+                thickness.string() + "\"\nnoise = 0.001\n")
+          .string());
+  ASSERT_EQ(problem.experiments.size(), 1u);
+  expect_columns_within_central_differences(problem);
+  fs::remove(thickness);
 }
 
 // The same fit with the exact Jacobian and with central differences: the same card within a
@@ -187,15 +214,10 @@ TEST(ExactFeJacobian, FitFileChoosesAndRefuses) {
   const fs::path g = write_fit(fit_text(d, "jacobian = \"forward\"\n"));
   const std::string bad = test::input_error_of([&] { inverse::read_fit_file(g.string()); });
   EXPECT_NE(bad.find("jacobian = \"forward\""), std::string::npos) << bad;
-  // A thickness section has no exact derivatives yet: its scene file falls back, with the force
-  // curve and the section's z on it.
-  const fs::path thickness = test::temp_path("thickness_C.csv");
-  inverse::SyntheticOptions o;
-  o.x = "x";
-  o.y = "thickness";
-  std::ofstream(thickness) << inverse::synthetic_section_csv(*scene::read_scene(d.scene.string()), "C", o);
-  const auto t = inverse::read_fit_file(write_fit(fit_text(d) + "[[experiment]]\nname = \"thin\"\nscene = \"" + d.scene.string() +
-                                                  "\"\nsection = \"C\"\ny = \"thickness\"\ndata = \"" + thickness.string() + "\"\nnoise = 0.01\n")
+  // The penetration has no exact derivatives: its scene file falls back, with the force curve and
+  // the section's z on it.
+  const auto t = inverse::read_fit_file(write_fit(fit_text(d) + "[[experiment]]\nname = \"sink\"\nscene = \"" + d.scene.string() +
+                                                  "\"\nobservable = \"max_penetration\"\nvalue = 0.05\nnoise = 0.01\n")
                                             .string());
   ASSERT_EQ(t.experiments.size(), 3u);
   for (const auto& x : t.experiments) EXPECT_EQ(x->jacobian(), "central") << x->name();
