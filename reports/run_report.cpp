@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 
 namespace spifit::reports {
@@ -152,31 +153,48 @@ PlotSpec cone_depth_plot(const RunContent& c) {
 // The scaled sensitivities of the tool force (sensitivities.csv: "P*dFx/d(P)" .. "P*dFz/d(P)"
 // per parameter P) along the travel of force.csv's rows (the two files have a row per increment
 // each): the components that carry any (above 1e-3 of the largest; an indentation's Fz alone, a
-// line test's Fx and Fz).
+// line test's Fx and Fz). A cone's (force.csv has the tool's polar angle theta) turned into Fr,
+// Ftheta, Fz as its force is.
 PlotSpec sensitivity_plot(const RunContent& c) {
   PlotSpec p = titled("run_sensitivities", "Scaled sensitivities of the tool force: P dF/dP", "tool travel [mm]", "P dF/dP [N]");
   std::vector<double> x = travel(c);
   x.resize(std::min(x.size(), c.sensitivities.rows()));
+  std::vector<double> theta = c.force.column("theta");
+  const bool polar = !theta.empty();
+  theta.resize(x.size(), 0.0);
+  static const char* const kCartesian[3] = {"Fx", "Fy", "Fz"};
+  static const char* const kPolar[3] = {"Fr", "Fθ", "Fz"};
   struct Column {
     std::string title;
     std::vector<double> y;
-    char component;
+    int component;
   };
   std::vector<Column> columns;
   double largest = 0.0, by_component[3] = {0.0, 0.0, 0.0};
-  for (const std::string& name : c.sensitivities.names)
+  for (const std::string& name : c.sensitivities.names) {
+    const std::string marker = "*dFx/d(";
+    const auto at = name.find(marker);
+    if (at == std::string::npos) continue;
+    const std::string parameter = name.substr(0, at), tail = name.substr(at + marker.size());
+    std::vector<double> f[3];
     for (int k = 0; k < 3; ++k) {
-      const std::string marker = std::string("*dF") + "xyz"[k] + "/d(";
-      const auto at = name.find(marker);
-      if (at == std::string::npos) continue;
-      std::vector<double> y = c.sensitivities.column(name);
-      y.resize(x.size());
-      for (double v : y) by_component[k] = std::max(by_component[k], std::abs(v));
-      largest = std::max(largest, by_component[k]);
-      columns.push_back({name.substr(0, at) + ": F" + "xyz"[k], std::move(y), "xyz"[k]});
+      f[k] = c.sensitivities.column(parameter + "*dF" + "xyz"[k] + "/d(" + tail);
+      f[k].resize(x.size(), 0.0);
     }
+    if (polar)
+      for (std::size_t i = 0; i < x.size(); ++i) {
+        const double t = theta[i] * std::numbers::pi / 180.0, fx = f[0][i], fy = f[1][i];
+        f[0][i] = std::cos(t) * fx + std::sin(t) * fy;
+        f[1][i] = -std::sin(t) * fx + std::cos(t) * fy;
+      }
+    for (int k = 0; k < 3; ++k) {
+      for (double v : f[k]) by_component[k] = std::max(by_component[k], std::abs(v));
+      largest = std::max(largest, by_component[k]);
+      columns.push_back({parameter + ": " + (polar ? kPolar : kCartesian)[k], std::move(f[k]), k});
+    }
+  }
   for (Column& col : columns)
-    if (by_component[col.component - 'x'] > 1e-3 * largest) p.series.push_back({col.title, x, std::move(col.y), Series::Style::line, ""});
+    if (by_component[col.component] > 1e-3 * largest) p.series.push_back({col.title, x, std::move(col.y), Series::Style::line, ""});
   return p;
 }
 
