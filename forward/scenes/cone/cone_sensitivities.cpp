@@ -4,13 +4,17 @@
 
 namespace spifit::scene {
 
-ForceDerivatives polar_sensitivity(const ConeResult& r, std::size_t i) {
-  ForceDerivatives d = r.force_sensitivity(i);
-  if (d.cols() == 0) return d;
-  const Eigen::Vector3d& centre = r.force.samples()[i].centre;
+namespace {
+
+// Cartesian derivatives turned into (r, theta, z) at the tool centre's polar angle.
+ForceDerivatives turned(ForceDerivatives d, const Eigen::Vector3d& centre) {
   for (Eigen::Index k = 0; k < d.cols(); ++k) d.col(k) = polar_components(d.col(k), centre);  // linear in the force
   return d;
 }
+
+}  // namespace
+
+ForceDerivatives polar_sensitivity(const ConeResult& r, std::size_t i) { return turned(r.force_sensitivity(i), r.force.samples()[i].centre); }
 
 std::optional<std::size_t> peak_polar_sample(const ConeResult& r, int k) {
   std::optional<std::size_t> at;
@@ -39,7 +43,7 @@ std::optional<SteadyStateDerivatives> steady_state_sensitivity(const ConeResult&
       if (cartesian.cols() == 0) return std::nullopt;
       if (n == 0) mean = {ForceDerivatives::Zero(3, cartesian.cols()), ForceDerivatives::Zero(3, cartesian.cols())};
       mean.force += cartesian;
-      mean.polar += polar_sensitivity(r, i);
+      mean.polar += turned(cartesian, samples[i].centre);
       ++n;
     }
     if (n != m.samples) return std::nullopt;  // not the samples the mean was taken over
