@@ -1,7 +1,7 @@
 // Exact parameter derivatives of a cone run (direct differentiation through a pie with cyclic
 // ties, virtual tools and friction) against central differences of whole runs: the tool force at
 // every increment and the cone's observables (polar peaks, contour means, the steady state and
-// its ratios, the centre depth).
+// its ratios, the centre depth); and the warning of a run with sensitivities on a coarsened sheet.
 #include "forward/scenes/common/scene.hpp"
 #include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/scene_registry.hpp"
@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -92,6 +93,31 @@ TEST(ConeSensitivity, ForceAndObservablesMatchCentralDifferences) {
           << "contour " << i + 1 << " / " << names[k];
     }
   }
+  std::filesystem::remove(file);
+}
+
+}  // namespace
+}  // namespace spifit::scene
+
+namespace spifit::scene {
+namespace {
+
+// A coarsened sheet's hanging nodes make the exact derivatives approximate: a run with
+// sensitivities says so in its warnings, a run without does not.
+TEST(SensitivityWarnings, HangingNodesAreNamed) {
+  const std::filesystem::path file = test::temp_path("coarse_line.toml");
+  std::ofstream(file) << "[scene]\nkind = \"line\"\nmaterial = \"" << SPIFIT_SOURCE_DIR << "/materials/aa3003o_c3c4.toml\"\n"
+                      << "[sheet]\nlength = 40.0\nthickness = 1.2\nelements = 16\ncoarse_levels = 1\nfine_band = 4.0\n"
+                      << "[tool]\nradius = 5.0\nfeed = 10.0\n"
+                      << "[[path]]\nname = \"A\"\nx = -8.0\ny = 0.0\nz = 0.0\n[[path]]\nname = \"B\"\nx = -8.0\ny = 0.0\nz = -1.0\n";
+  const std::unique_ptr<Scene> scene = read_scene(file.string());
+  auto names_hanging_nodes = [](const SceneResult& r) {
+    for (const std::string& w : r.warnings)
+      if (w.find("hanging nodes' rotation ties") != std::string::npos) return true;
+    return false;
+  };
+  EXPECT_TRUE(names_hanging_nodes(*run(*scene, {"contact.penalty"})));
+  EXPECT_FALSE(names_hanging_nodes(*run(*scene)));
   std::filesystem::remove(file);
 }
 
