@@ -158,12 +158,12 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
   cmd->add_option("SCENE", o->scene, "scene file (TOML)")->required();
   cmd->add_option("--out", o->out, "output directory")->required();
   auto* force = cmd->add_flag("--force", o->force, "replace an existing output directory");
-  auto* resume = cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
+  cmd->add_flag("--resume", o->resume, "continue the run in DIR from its last checkpoint (FE scenes)")->excludes(force);
   cmd->add_option("--sensitivities", o->sensitivities,
                   "material parameters, contact.penalty and contact.friction, comma-separated (e.g. swift.K,elastic.E): write the tool force's exact derivatives "
-                  "with respect to them to DIR/sensitivities.csv (implicit FE scenes: indent, indent_line, line and cone)")
-      ->delimiter(',')
-      ->excludes(resume);
+                  "with respect to them to DIR/sensitivities.csv (implicit FE scenes: indent, indent_line, line and cone); with --resume, "
+                  "the parameters the run started with")
+      ->delimiter(',');
   cmd->callback([o, &g, &exit_code] {
     const auto scene = scene::read_scene(o->scene);  // input errors before touching --out
     if (!g.quiet)

@@ -442,6 +442,23 @@ void ShellContact::load_state(io::BinaryReader& r) {
   trial_ = committed_;
 }
 
+void ShellContact::save_sensitivities(io::BinaryWriter& w, int count) const {
+  if (!sensitivities_) throw std::logic_error("ShellContact::save_sensitivities before enable_sensitivities");
+  w.i64(static_cast<std::int64_t>(committed_dt_.size()));
+  for (const TractionDerivatives& d : committed_dt_)
+    for (int k = 0; k < count; ++k) w.vec3(d.col(k));
+}
+
+void ShellContact::load_sensitivities(io::BinaryReader& r, int count) {
+  if (!sensitivities_) throw std::logic_error("ShellContact::load_sensitivities before enable_sensitivities");
+  r.expect_count("contact points with sensitivities", static_cast<std::int64_t>(committed_dt_.size()));
+  for (TractionDerivatives& d : committed_dt_) {
+    d.setZero();
+    for (int k = 0; k < count; ++k) d.col(k) = r.vec3();
+  }
+  trial_dt_ = committed_dt_;
+}
+
 ContactSummary ShellContact::committed_summary(int tool_index) const {
   if (tool_index < 0 || tool_index >= tools_) throw std::out_of_range("contact: no tool " + std::to_string(tool_index));
   ContactSummary s;

@@ -82,6 +82,10 @@ class ShellContact {
   // From the next increment on, the contact points keep the derivatives of their committed
   // tangential traction (the friction's stick history). Flat facets only (std::invalid_argument).
   void enable_sensitivities(const ParameterSlots& slots);
+  // The committed traction derivatives for checkpoints, bit-exact, slots 0 .. count - 1 (the
+  // others are zero); load_sensitivities resets the trial ones to them.
+  void save_sensitivities(io::BinaryWriter& w, int count) const;
+  void load_sensitivities(io::BinaryReader& r, int count);
   // How an element's configuration moves with the parameters (a column per slot): its trial
   // p-variables (positions and directors, 24 rows; null: held fixed, the pseudo-load), the
   // committed ones and the tool-side offset (half the committed thickness).

@@ -341,6 +341,14 @@ void ShellQ4::load_state(io::BinaryReader& r) {
   for (auto& sec : sections_) sec.load_state(r);
 }
 
+void ShellQ4::save_sensitivities(io::BinaryWriter& w, int count) const {
+  for (const auto& sec : sections_) sec.save_sensitivities(w, count);
+}
+
+void ShellQ4::load_sensitivities(io::BinaryReader& r, int count) {
+  for (auto& sec : sections_) sec.load_sensitivities(r, count);
+}
+
 ElementStatus ShellQ4::compute(const NodeVectors& x, const NodeVectors& d, Vec24* residual, Mat24* tangent) {
   if (sections_.size() == 1) return compute_reduced(x, d, residual, tangent);
   Vec24 rp = Vec24::Zero();  // derivative with respect to p = (x_I, d_I) per node

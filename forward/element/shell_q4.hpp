@@ -111,6 +111,9 @@ class ShellQ4 {
   // Committed state of the four sections (checkpoints; ShellSection::save_state).
   void save_state(io::BinaryWriter& w) const;
   void load_state(io::BinaryReader& r);
+  // Their committed derivatives, after enable_sensitivities (ShellSection::save_sensitivities).
+  void save_sensitivities(io::BinaryWriter& w, int count) const;
+  void load_sensitivities(io::BinaryReader& r, int count);
 
   // Energies at the committed nodes x and directors d (the sections' committed states).
   ElementEnergy energy(const NodeVectors& x, const NodeVectors& d) const;

@@ -290,4 +290,54 @@ void ShellSection::load_state(io::BinaryReader& r) {
   }
 }
 
+namespace {
+
+// The committed layer derivatives a checkpoint keeps: every Jet of the state the next increment
+// reads (seeded_state drops the flow stress) and of the log strain.
+template <typename State, typename Eps, typename F>
+void each_kept_jet(State& s, Eps& eps, F&& f) {
+  for (int i = 0; i < 3; ++i) {
+    f(s.stress(i));
+    f(s.plastic_strain(i));
+    f(s.back_stress(i));
+    f(eps(i));
+  }
+  f(s.back_stress_zz);
+  f(s.eqps);
+  f(s.plastic_work);
+}
+
+void write_slots(io::BinaryWriter& w, const material::SensitivityRow& d, int count) {
+  for (int k = 0; k < count; ++k) w.f64(d(k));
+}
+
+material::SensitivityRow read_slots(io::BinaryReader& r, int count) {
+  material::SensitivityRow d = material::SensitivityRow::Zero();
+  for (int k = 0; k < count; ++k) d(k) = r.f64();
+  return d;
+}
+
+}  // namespace
+
+void ShellSection::save_sensitivities(io::BinaryWriter& w, int count) const {
+  if (!sensitivities_enabled()) throw std::logic_error("ShellSection::save_sensitivities before enable_sensitivities");
+  write_slots(w, dh_, count);
+  w.i64(static_cast<std::int64_t>(sens_.size()));
+  for (const LayerSensitivity& l : sens_)
+    each_kept_jet(l.state, l.eps, [&](const Sens& x) { write_slots(w, material::derivatives_of(x), count); });
+}
+
+void ShellSection::load_sensitivities(io::BinaryReader& r, int count) {
+  if (!sensitivities_enabled()) throw std::logic_error("ShellSection::load_sensitivities before enable_sensitivities");
+  dh_ = read_slots(r, count);
+  r.expect_count("layers with sensitivities", static_cast<std::int64_t>(sens_.size()));
+  for (LayerSensitivity& l : sens_) {
+    l = LayerSensitivity{};
+    each_kept_jet(l.state, l.eps, [&](Sens& x) { x.v = read_slots(r, count).transpose(); });
+  }
+  sens_trial_ = sens_;
+  sens_trial_set_ = false;
+  linear_count_ = -1;
+}
+
 }  // namespace spifit::element

@@ -95,6 +95,11 @@ class ShellSection {
   // round-off: the Jet pass is linear in its seeds).
   void advance_sensitivities(const Vec3S& e, const Vec3S& kappa);
   bool linearised() const { return linear_count_ >= 0; }
+  // The committed derivatives for checkpoints, bit-exact: the thickness's and each layer's
+  // (state and log strain), slots 0 .. count - 1 (the others are zero). load_sensitivities
+  // resets the trial derivatives to them; io::ArchiveError on a layer-count mismatch.
+  void save_sensitivities(io::BinaryWriter& w, int count) const;
+  void load_sensitivities(io::BinaryReader& r, int count);
   // Derivatives of the committed thickness, and of a layer's committed state (values unused).
   const material::SensitivityRow& thickness_sensitivity() const { return dh_; }
   const material::MaterialState<Sens, 3>& layer_state_sensitivity(int l) const { return sens_[static_cast<std::size_t>(l)].state; }

@@ -1,5 +1,6 @@
 #include "forward/io/binary_archive.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <fstream>
@@ -72,6 +73,13 @@ void BinaryWriter::vector(const Eigen::VectorXd& v) {
 void BinaryWriter::vec3s(const std::vector<Eigen::Vector3d>& v) {
   i64(static_cast<std::int64_t>(v.size()));
   for (const auto& x : v) vec3(x);
+}
+
+void BinaryWriter::matrix(const Eigen::MatrixXd& m) {
+  i64(static_cast<std::int64_t>(m.rows()));
+  i64(static_cast<std::int64_t>(m.cols()));
+  for (Eigen::Index j = 0; j < m.cols(); ++j)
+    for (Eigen::Index i = 0; i < m.rows(); ++i) f64(m(i, j));
 }
 
 std::string BinaryWriter::finish() {
@@ -166,6 +174,16 @@ std::vector<Eigen::Vector3d> BinaryReader::vec3s() {
   std::vector<Eigen::Vector3d> v(count(24));
   for (auto& x : v) x = vec3();
   return v;
+}
+
+Eigen::MatrixXd BinaryReader::matrix() {
+  const std::int64_t rows = i64();
+  if (rows < 0 || rows > 2'000'000'000) throw ArchiveError("invalid matrix row count " + std::to_string(rows) + " at byte " + std::to_string(pos_ - 8));
+  const std::size_t cols = count(8 * static_cast<std::size_t>(std::max<std::int64_t>(rows, 1)));
+  Eigen::MatrixXd m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
+  for (Eigen::Index j = 0; j < m.cols(); ++j)
+    for (Eigen::Index i = 0; i < m.rows(); ++i) m(i, j) = f64();
+  return m;
 }
 
 void BinaryReader::expect_count(const char* what, std::int64_t expected) {

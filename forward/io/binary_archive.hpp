@@ -43,6 +43,7 @@ class BinaryWriter {
   void f64s(const std::vector<double>& v);
   void vector(const Eigen::VectorXd& v);
   void vec3s(const std::vector<Eigen::Vector3d>& v);
+  void matrix(const Eigen::MatrixXd& m);  // rows, columns, then the entries column by column
 
   // The archive with its checksum; the writer is spent afterwards.
   std::string finish();
@@ -72,6 +73,7 @@ class BinaryReader {
   std::vector<double> f64s();
   Eigen::VectorXd vector();
   std::vector<Eigen::Vector3d> vec3s();
+  Eigen::MatrixXd matrix();
   // A count that must equal `expected` (sizes of the model the state is loaded into).
   void expect_count(const char* what, std::int64_t expected);
   // Throws unless the payload has been read completely.

@@ -78,6 +78,11 @@ class ElementContribution {
   // Committed state, bit-exact (checkpoints); io::ArchiveError on a mismatch.
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;
+  // The committed derivatives of its history, after enable_sensitivities (checkpoints of a run
+  // with sensitivities; count: the run's parameters); nothing by default, a contribution without
+  // history derivatives.
+  virtual void save_sensitivities(io::BinaryWriter& w, int count) const { (void)w, (void)count; }
+  virtual void load_sensitivities(io::BinaryReader& r, int count) { (void)r, (void)count; }
 };
 
 }  // namespace spifit::model

@@ -121,6 +121,10 @@ class ElementFamily {
   // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;
+  // Their committed derivatives, after enable_sensitivities (checkpoints of a run with
+  // sensitivities); load_sensitivities resets the trial derivatives to them.
+  virtual void save_sensitivities(io::BinaryWriter& w) const;
+  virtual void load_sensitivities(io::BinaryReader& r);
 };
 
 }  // namespace spifit::model

@@ -1,6 +1,7 @@
 #include "forward/model/fe_model.hpp"
 
 #include "forward/element/director.hpp"
+#include "forward/io/binary_archive.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -184,6 +185,35 @@ Eigen::MatrixXd FeModel::nodal_thickness_sensitivity() const {
   }
   for (Eigen::Index i = 0; i < dh.rows(); ++i) dh.row(i) /= w(i);
   return dh;
+}
+
+void FeModel::save_sensitivities(io::BinaryWriter& w) const {
+  w.i64(sensitivity_count_);
+  w.matrix(position_sensitivity_);
+  w.matrix(force_sensitivity_);
+  family_->save_sensitivities(w);
+  for (const auto& c : contributions_) c->save_sensitivities(w, sensitivity_count_);
+}
+
+void FeModel::load_sensitivities(io::BinaryReader& r) {
+  r.expect_count("parameters with sensitivities", sensitivity_count_);
+  Eigen::MatrixXd du = r.matrix(), force = r.matrix();
+  if (du.rows() != num_dofs_ || du.cols() != sensitivity_count_ || force.rows() != 3 || force.cols() != sensitivity_count_)
+    throw io::ArchiveError("the DOFs' or the force's derivatives of another size");
+  position_sensitivity_ = position_sensitivity_trial_ = std::move(du);
+  force_sensitivity_ = force_sensitivity_trial_ = force;
+  family_->load_sensitivities(r);
+  for (const auto& c : contributions_) c->load_sensitivities(r, sensitivity_count_);
+}
+
+void ElementFamily::save_sensitivities(io::BinaryWriter& w) const {
+  (void)w;
+  throw std::logic_error(name() + " elements have no sensitivities to save");
+}
+
+void ElementFamily::load_sensitivities(io::BinaryReader& r) {
+  (void)r;
+  throw std::logic_error(name() + " elements have no sensitivities to load");
 }
 
 material::SensitivityRow ElementFamily::thickness_sensitivity(int e) const {

@@ -119,6 +119,11 @@ class FeModel : public solver::NonlinearProblem {
   // configurations reset to it. Sizes are the caller's to check.
   ElementFamily& family_state() { return *family_; }
   void restore_committed(double lambda, std::vector<Eigen::Vector3d> x, std::vector<Eigen::Vector3d> d, double load_work);
+  // With sensitivities: the committed derivatives of the DOFs, of the contributions' force, of the
+  // elements' and of the contributions' histories (bit-exact); load_sensitivities resets the
+  // trial derivatives to them. io::ArchiveError on a mismatch.
+  void save_sensitivities(io::BinaryWriter& w) const;
+  void load_sensitivities(io::BinaryReader& r);
 
  protected:
   std::vector<std::pair<int, double>>& loads() { return loads_; }

@@ -21,6 +21,10 @@ void save_model_state(io::BinaryWriter& w, const FeModel& model) {
     w.string(c->name());
     c->save_state(w);
   }
+  if (model.sensitivity_count() > 0) {  // a run with sensitivities only: a plain run's state is as it was
+    w.section("sensitivities");
+    model.save_sensitivities(w);
+  }
 }
 
 void load_model_state(io::BinaryReader& r, FeModel* model) {
@@ -42,6 +46,10 @@ void load_model_state(io::BinaryReader& r, FeModel* model) {
     c->load_state(r);
   }
   model->restore_committed(lambda, std::move(x), std::move(d), load_work);
+  if (model->sensitivity_count() > 0) {
+    r.section("sensitivities");
+    model->load_sensitivities(r);
+  }
 }
 
 }  // namespace spifit::model

@@ -2,7 +2,8 @@
 // Checkpoints of a shell model (forward/io/binary_archive.hpp), bit-exact: load factor, nodal
 // positions and directors, every element's sections, the work of the nodal loads, and the
 // committed state of each contribution (the tool and its copies with their contact point
-// states). A model is restored into one built the same way (mesh, thickness points, the same
+// states), and in a run with sensitivities the derivatives of that state (FeModel::
+// save_sensitivities) in a section of their own. A model is restored into one built the same way (mesh, thickness points, the same
 // contributions added); the iterate and trial configurations are reset to the committed one.
 namespace spifit::io {
 class BinaryWriter;

@@ -227,6 +227,14 @@ void ShellFamily::load_state(io::BinaryReader& r) {
   for (auto& el : elements_) el.load_state(r);
 }
 
+void ShellFamily::save_sensitivities(io::BinaryWriter& w) const {
+  for (const auto& el : elements_) el.save_sensitivities(w, sensitivity_count_);
+}
+
+void ShellFamily::load_sensitivities(io::BinaryReader& r) {
+  for (auto& el : elements_) el.load_sensitivities(r, sensitivity_count_);
+}
+
 void ShellFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) {
   sensitivity_count_ = count;
   material::ReturnMappingOptions o;

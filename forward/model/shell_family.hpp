@@ -67,6 +67,8 @@ class ShellFamily final : public ElementFamily {
   solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                  Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
   material::SensitivityRow thickness_sensitivity(int e) const override { return 2.0 * offset_sensitivity(e); }
+  void save_sensitivities(io::BinaryWriter& w) const override;
+  void load_sensitivities(io::BinaryReader& r) override;
 
   const element::ShellQ4& element(int e) const { return elements_[static_cast<std::size_t>(e)]; }
   element::ShellQ4& element(int e) { return elements_[static_cast<std::size_t>(e)]; }

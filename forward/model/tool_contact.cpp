@@ -201,6 +201,14 @@ void ToolContact::load_state(io::BinaryReader& r) {
   offset_release_ = r.f64();
 }
 
+void ToolContact::save_sensitivities(io::BinaryWriter& w, int count) const {
+  if (sensitivities_) contact_->save_sensitivities(w, count);
+}
+
+void ToolContact::load_sensitivities(io::BinaryReader& r, int count) {
+  if (sensitivities_) contact_->load_sensitivities(r, count);
+}
+
 ToolContact& attach_tool(FeModel& model, double radius, ToolContact::PathFunction path, const contact::ContactOptions& options,
                          double spin_per_load_factor) {
   return model.add_contribution(

@@ -81,6 +81,8 @@ class ToolContact final : public ElementContribution {
   void add_cell_data(std::vector<mesh::VtuField>* cell_data) const override;
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
+  void save_sensitivities(io::BinaryWriter& w, int count) const override;
+  void load_sensitivities(io::BinaryReader& r, int count) override;
 
  private:
   const mesh::Mesh* mesh_;          // the model's

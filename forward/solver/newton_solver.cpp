@@ -331,6 +331,8 @@ NewtonState NewtonSolver::state() const {
   s.damping = stabilisation_.damping();
   s.stabilised_left = stabilisation_.increments_left();
   s.counters = counters();
+  s.sensitivities = problem_.sensitivity_count() > 0;
+  if (s.sensitivities) s.sensitivity_solves = sensitivity_stats_;
   return s;
 }
 
@@ -346,6 +348,7 @@ void NewtonSolver::set_state(const NewtonState& s) {
   counters_.cholmod_factorisations -= cholmod_ ? cholmod_->numeric_factorisations() : 0;
   counters_.umfpack_factorisations -= umfpack_ ? umfpack_->numeric_factorisations() : 0;
   counters_.symbolic_analyses -= (cholmod_ ? cholmod_->symbolic_analyses() : 0) + (umfpack_ ? umfpack_->symbolic_analyses() : 0);
+  if (s.sensitivities) sensitivity_stats_ = s.sensitivity_solves;
 }
 
 NewtonSummary NewtonSolver::resume(double lambda_end, const IncrementCallback& callback) {

@@ -63,12 +63,7 @@ class NewtonSolver {
   // this call then computes.
   LinearSolver& linear_solver(const SparseMatrix** matrix);
   // The direct differentiation's solves so far (NonlinearProblem::sensitivity_count > 0).
-  struct SensitivitySolveStats {
-    int increments = 0;
-    int gmres_solves = 0, gmres_iterations = 0;  // right-hand sides GMRES solved, its back-substitutions (all tries)
-    int factorisations = 0;                      // of the exact tangent, where GMRES did not converge or had no factor
-    double solve_seconds = 0.0;                  // wall time of the solves and factorisations
-  };
+  using SensitivitySolveStats = solver::SensitivitySolveStats;
   const SensitivitySolveStats& sensitivity_stats() const { return sensitivity_stats_; }
 
  private:

@@ -25,6 +25,12 @@ void save_newton_state(io::BinaryWriter& w, const NewtonState& s) {
   for (double v : {c.viscous_work, c.max_viscous_force}) w.f64(v);
   w.section("assemblies");
   for (int n : {c.tangent_assemblies, c.residual_assemblies, c.tangent_reassemblies}) w.i64(n);
+  if (s.sensitivities) {  // a plain run's state is as it was
+    w.section("sensitivity_solves");
+    const SensitivitySolveStats& t = s.sensitivity_solves;
+    for (int n : {t.increments, t.gmres_solves, t.gmres_iterations, t.factorisations}) w.i64(n);
+    w.f64(t.solve_seconds);
+  }
 }
 
 namespace {
@@ -38,7 +44,7 @@ void read_counters(io::BinaryReader& r, std::initializer_list<int*> counters, co
 }
 }  // namespace
 
-NewtonState load_newton_state(io::BinaryReader& r) {
+NewtonState load_newton_state(io::BinaryReader& r, bool sensitivities) {
   r.section("newton_state");
   NewtonState s;
   s.lambda = r.f64();
@@ -62,6 +68,13 @@ NewtonState load_newton_state(io::BinaryReader& r) {
   r.section("assemblies");
   read_counters(r, {&c.tangent_assemblies, &c.residual_assemblies, &c.tangent_reassemblies}, "assembly");
   if (!(std::isfinite(s.lambda) && s.increment > 0.0 && s.ceiling > 0.0)) throw io::ArchiveError("invalid Newton stepping state");
+  if (sensitivities) {
+    r.section("sensitivity_solves");
+    SensitivitySolveStats& t = s.sensitivity_solves;
+    read_counters(r, {&t.increments, &t.gmres_solves, &t.gmres_iterations, &t.factorisations}, "sensitivity solve");
+    t.solve_seconds = r.f64();
+    s.sensitivities = true;
+  }
   return s;
 }
 

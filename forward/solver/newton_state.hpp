@@ -14,6 +14,15 @@ class BinaryReader;
 
 namespace spifit::solver {
 
+// The direct differentiation's solves after each converged increment (a problem with
+// sensitivities; summary.json "sensitivity_solves").
+struct SensitivitySolveStats {
+  int increments = 0;
+  int gmres_solves = 0, gmres_iterations = 0;  // right-hand sides GMRES solved, its back-substitutions (all tries)
+  int factorisations = 0;                      // of the exact tangent, where GMRES did not converge or had no factor
+  double solve_seconds = 0.0;                  // wall time of the solves and factorisations
+};
+
 struct NewtonState {
   double lambda = 0.0;           // last committed load factor
   double increment = 0.0;        // size of the next increment to try
@@ -27,10 +36,14 @@ struct NewtonState {
   double damping = 0.0;
   int stabilised_left = 0;
   NewtonCounters counters;       // totals so far (NewtonSummary::counters)
+  // A problem with sensitivities: their solves so far (stored only then).
+  bool sensitivities = false;
+  SensitivitySolveStats sensitivity_solves;
 };
 
-// Bit-exact (forward/io/binary_archive.hpp); load throws io::ArchiveError.
+// Bit-exact (forward/io/binary_archive.hpp); load throws io::ArchiveError. sensitivities: the
+// state was saved with s.sensitivities (a run with sensitivities); the reader must say so.
 void save_newton_state(io::BinaryWriter& w, const NewtonState& s);
-NewtonState load_newton_state(io::BinaryReader& r);
+NewtonState load_newton_state(io::BinaryReader& r, bool sensitivities = false);
 
 }  // namespace spifit::solver

@@ -3,10 +3,12 @@
 // exit 2 naming the file, the option and its value, before the output directory is touched.
 #include "tests/cli/cli_support.hpp"
 #include "tests/support/temp_files.hpp"
+#include "tests/support/tiny_scenes.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -19,6 +21,7 @@ namespace {
 
 using Result = spifit::test::CliResult;
 Result run(const std::string& args) { return spifit::test::run_spifit(args); }
+using spifit::test::slurp;
 using spifit::test::temp_path;
 
 const std::string kScenes = std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/";
@@ -88,10 +91,46 @@ TEST(SensitivityCli, RefusalsNameFileOptionAndValueBeforeTheOutputDirectory) {
     EXPECT_NE(r.err.find(c.expect), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(out)) << c.scene;
   }
-  const Result both = run("run " + kScenes + "indent.toml --out " + out.string() + " --resume --sensitivities swift.K");
-  EXPECT_NE(both.code, 0);
-  EXPECT_NE(both.err.find("--sensitivities"), std::string::npos) << both.err;
   fs::remove(phong);
+}
+
+// A run with sensitivities killed after a checkpoint resumes with the same parameters to the
+// uninterrupted run's derivatives; asked for others, the resume is refused naming both and the
+// checkpoint, and DIR is left as it was.
+TEST(SensitivityCli, AKilledRunResumesWithItsParametersAndRefusesOthers) {
+  const fs::path scene = spifit::test::write_tiny_line(temp_path("sens_resume.toml"), "checkpoint_increments = 10\n");
+  const fs::path ref = temp_path("sens_resume_ref"), out = temp_path("sens_resume");
+  fs::remove_all(ref);
+  const auto t0 = std::chrono::steady_clock::now();
+  const Result a = run("-q run " + scene.string() + " --out " + ref.string() + " --sensitivities swift.K,contact.penalty");
+  const auto ref_time = std::chrono::steady_clock::now() - t0;
+  ASSERT_EQ(a.code, 0) << a.err;
+  // Killed a fifth of the whole run's time after its first checkpoint (of about 10), as
+  // forming_resume_cli_test does.
+  fs::remove_all(out);
+  const fs::path state = out / "checkpoint" / "state.bin";
+  const bool killed = spifit::test::spifit_and_kill(
+      {"-q", "run", scene.string(), "--out", out.string(), "--sensitivities", "swift.K,contact.penalty"}, [&] { return fs::exists(state); },
+      std::chrono::duration_cast<std::chrono::milliseconds>(ref_time / 5));
+  ASSERT_TRUE(killed) << "the run finished before the kill: nothing to resume";
+  ASSERT_TRUE(fs::exists(state));
+  const std::string before = slurp(out / "sensitivities.csv") + slurp(out / "summary.json");
+  const Result other = run("-q run " + scene.string() + " --out " + out.string() + " --resume --sensitivities swift.K");
+  EXPECT_EQ(other.code, 2) << other.err;
+  EXPECT_NE(other.err.find("checkpoint/state.bin"), std::string::npos) << other.err;
+  EXPECT_NE(other.err.find("sensitivities swift.K,contact.penalty, not swift.K"), std::string::npos) << other.err;
+  EXPECT_EQ(slurp(out / "sensitivities.csv") + slurp(out / "summary.json"), before);
+  const Result resumed = run("-q run " + scene.string() + " --out " + out.string() + " --resume --sensitivities swift.K,contact.penalty");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  EXPECT_EQ(slurp(out / "sensitivities.csv"), slurp(ref / "sensitivities.csv"));
+  EXPECT_EQ(slurp(out / "force.csv"), slurp(ref / "force.csv"));
+  // The solves' counts travel with the checkpoint: those of the whole run.
+  const auto solves = spifit::test::read_summary(out)["sensitivity_solves"], ref_solves = spifit::test::read_summary(ref)["sensitivity_solves"];
+  for (const char* k : {"increments", "gmres_solves", "gmres_iterations", "factorisations"}) EXPECT_EQ(solves[k], ref_solves[k]) << k;
+  EXPECT_GT(solves["increments"].get<int>(), 50);
+  fs::remove_all(ref);
+  fs::remove_all(out);
+  fs::remove(scene);
 }
 
 TEST(SensitivityCli, CheckerFindsExactAndCentralDifferencesAgreeOnTheIndent) {

@@ -63,7 +63,6 @@ void FeRun::enable_sensitivities() {
   for (const std::string& n : control_.sensitivities) names += (names.empty() ? "" : ",") + n;
   auto refuse = [&](const std::string& why) { throw io::InputError(file, "--sensitivities", names, why); };
   if (setup_.explicit_scheme) refuse("the explicit scheme has no exact sensitivities; run the implicit scheme, or differentiate by central differences (a sweep)");
-  if (control_.resume) refuse("a run with sensitivities cannot be resumed (checkpoints do not hold the state's derivatives)");
   try {
     const std::vector<material::FieldSeed> seeds = material::sensitivity_seeds(setup_.material, card_sensitivity_names(control_.sensitivities), control_.sensitivity_h_follows_g);
     contact::ShellContact::ParameterSlots slots;
@@ -119,7 +118,8 @@ FeRunOutcome FeRun::run(const nlohmann::json& head) {
   auto t0 = Clock::now();
   // The input files' contents go into checkpoints (and are compared on resume): read only when
   // the run writes files; a sweep or fit point runs from the parsed scene alone.
-  const RunInputs inputs = files_.enabled() ? read_run_inputs(setup_.kind, setup_.input_files) : RunInputs{};
+  RunInputs inputs = files_.enabled() ? read_run_inputs(setup_.kind, setup_.input_files) : RunInputs{};
+  if (files_.enabled() && !control_.sensitivities.empty()) inputs.files.push_back(sensitivity_input(control_.sensitivities));
   RunLog restored;
   if (control_.resume) {
     // The checkpoint is read (and refused with an InputError) before any output is touched.

@@ -56,7 +56,7 @@ void save_scheme(io::BinaryWriter& w, const solver::NewtonState* newton, const C
   else solver::save_newton_state(w, *newton);
 }
 
-void load_scheme(io::BinaryReader& r, solver::NewtonState* newton, CheckpointPart* dynamics, int num_dofs) {
+void load_scheme(io::BinaryReader& r, solver::NewtonState* newton, CheckpointPart* dynamics, int num_dofs, bool sensitivities) {
   r.section("scheme");
   const bool saved_explicit = r.boolean();
   if (saved_explicit && !dynamics) throw io::ArchiveError("written by an explicit run, this run is implicit");
@@ -65,7 +65,7 @@ void load_scheme(io::BinaryReader& r, solver::NewtonState* newton, CheckpointPar
     dynamics->restore(r);
     return;
   }
-  *newton = solver::load_newton_state(r);
+  *newton = solver::load_newton_state(r, sensitivities);
   if (newton->last_increment.size() != 0 && newton->last_increment.size() != num_dofs)
     throw io::ArchiveError("Newton predictor of another model size");
 }
@@ -94,6 +94,26 @@ std::string other_scene(const std::string& kind, const std::string& path, const 
   return "of scene " + path + " (kind " + kind + "), not of scene " + mine->path + " (kind " + inputs.kind + ")";
 }
 
+constexpr char kSensitivitiesRole[] = "sensitivities";
+
+const RunInput* sensitivities_of(const std::vector<RunInput>& files) {
+  for (const auto& f : files)
+    if (f.role == kSensitivitiesRole) return &f;
+  return nullptr;
+}
+
+// The derivatives a checkpoint holds against those the resumed run asks for.
+void check_sensitivities(const std::vector<RunInput>& stored, const std::vector<RunInput>& mine, const std::filesystem::path& file) {
+  const RunInput* theirs = sensitivities_of(stored);
+  const RunInput* ours = sensitivities_of(mine);
+  const std::string afresh = ", or start the run afresh in a new output directory";
+  if (theirs && !ours) refuse(file, "written by a run with sensitivities " + theirs->text + ": resume with --sensitivities " + theirs->text + afresh);
+  if (!theirs && ours) refuse(file, "written by a run without sensitivities: resume without --sensitivities" + afresh);
+  if (theirs && ours && theirs->text != ours->text)
+    refuse(file, "written by a run with sensitivities " + theirs->text + ", not " + ours->text + ": resume with --sensitivities " +
+                     theirs->text + afresh);
+}
+
 // The stored inputs against the resumed run's: the same kind and the same contents file by file.
 void check_inputs(io::BinaryReader& r, const RunInputs& inputs, const std::filesystem::path& file) {
   r.section("inputs");
@@ -113,6 +133,7 @@ void check_inputs(io::BinaryReader& r, const RunInputs& inputs, const std::files
     if (const std::string why = other_scene(kind, theirs->path, inputs); !why.empty())
       refuse(file, "the checkpoint is " + why + ": resume with that scene, or run this one in another output directory");
   if (kind != inputs.kind) refuse(file, "written by a " + kind + " run, not a " + inputs.kind + " run");
+  check_sensitivities(stored, inputs.files, file);
   if (n != static_cast<int>(inputs.files.size()))
     refuse(file, "written for a run with " + std::to_string(n) + " input files, this one has " + std::to_string(inputs.files.size()));
   for (std::size_t i = 0; i < stored.size(); ++i) {
@@ -144,6 +165,12 @@ RunInputs read_run_inputs(const std::string& kind, const std::vector<std::pair<s
   in.kind = kind;
   for (const auto& [role, path] : files)
     if (!path.empty()) in.files.push_back({role, path, io::read_text_file(path)});
+  return in;
+}
+
+RunInput sensitivity_input(const std::vector<std::string>& names) {
+  RunInput in{kSensitivitiesRole, "--sensitivities", ""};
+  for (const std::string& n : names) in.text += (in.text.empty() ? "" : ",") + n;
   return in;
 }
 
@@ -192,7 +219,7 @@ void read_run_checkpoint(const io::OutputDirectory& out, const RunInputs& inputs
     io::BinaryReader r(io::read_binary_file(file), kKind, kLayout);
     check_inputs(r, inputs, file);
     model::load_model_state(r, model);
-    load_scheme(r, newton, dynamics, model->num_dofs());
+    load_scheme(r, newton, dynamics, model->num_dofs(), model->sensitivity_count() > 0);
     *log = load_log(r);
     r.section("observers");
     r.expect_count("observers", static_cast<std::int64_t>(observers.size()));

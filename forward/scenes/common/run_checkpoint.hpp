@@ -42,6 +42,10 @@ struct RunInputs {
 // files: (role, path); an empty path is skipped. Throws io::InputError naming a file that
 // cannot be read.
 RunInputs read_run_inputs(const std::string& kind, const std::vector<std::pair<std::string, std::string>>& files);
+// A run with sensitivities: the parameters it differentiates with respect to, as one more input
+// (role "sensitivities", text "swift.K,contact.friction"), so that a checkpoint holding their
+// derivatives resumes only with the same parameters in the same order.
+RunInput sensitivity_input(const std::vector<std::string>& names);
 
 // The skeleton's bookkeeping at a committed increment.
 struct RunLog {

@@ -1,5 +1,6 @@
 #include "forward/scenes/common/sensitivity_log.hpp"
 
+#include "forward/io/binary_archive.hpp"
 #include "forward/model/fe_model.hpp"
 
 namespace spifit::scene {
@@ -38,6 +39,22 @@ void SensitivityLog::after_increment(const IncrementView& v) {
 void SensitivityLog::write(WriteReason reason) {
   if (reason == WriteReason::increment) return;
   files_.write("sensitivities.csv", comment_ + "\n" + table_.csv());
+}
+
+void SensitivityLog::save(io::BinaryWriter& w) const {
+  w.i64(static_cast<std::int64_t>(table_.size()));
+  for (const auto& row : table_.rows()) w.f64s(row);
+}
+
+void SensitivityLog::restore(io::BinaryReader& r) {
+  table_.clear();
+  const std::int64_t n = r.i64();
+  if (n < 0 || n > 100'000'000) throw io::ArchiveError("invalid sensitivity row count " + std::to_string(n));
+  for (std::int64_t i = 0; i < n; ++i) {
+    std::vector<double> row = r.f64s();
+    if (row.size() != table_.columns().size()) throw io::ArchiveError("sensitivity row of another width (other parameters)");
+    table_.add_row(std::move(row));
+  }
 }
 
 }  // namespace spifit::scene

@@ -25,6 +25,8 @@ class SensitivityLog : public RunObserver {
   std::string name() const override { return "sensitivity_log"; }
   void after_increment(const IncrementView& v) override;
   void write(WriteReason reason) override;
+  void save(io::BinaryWriter& w) const override;
+  void restore(io::BinaryReader& r) override;
 
  private:
   std::vector<std::string> names_;

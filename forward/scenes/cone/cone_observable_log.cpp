@@ -232,6 +232,10 @@ void ConeObservableLog::save(io::BinaryWriter& w) const {
   save_series(w, stage_rows_);
   save_series(w, history_rows_);
   save_profiles(w, profiles_);
+  if (model_.sensitivity_count() > 0) {  // a plain run's state is as it was
+    w.i64(static_cast<std::int64_t>(depth_sensitivities_.size()));
+    for (const Eigen::RowVectorXd& d : depth_sensitivities_) w.vector(d.transpose());
+  }
 }
 
 void ConeObservableLog::restore(io::BinaryReader& r) {
@@ -239,6 +243,16 @@ void ConeObservableLog::restore(io::BinaryReader& r) {
   load_series(r, &stage_rows_);
   load_series(r, &history_rows_);
   load_profiles(r, &profiles_);
+  depth_sensitivities_.clear();
+  if (const int count = model_.sensitivity_count(); count > 0) {
+    const std::int64_t n = r.i64();
+    if (n < 0 || n > static_cast<std::int64_t>(stage_rows_.size())) throw io::ArchiveError("invalid count of centre depth derivatives " + std::to_string(n));
+    for (std::int64_t i = 0; i < n; ++i) {
+      const Eigen::VectorXd d = r.vector();
+      if (d.size() != count) throw io::ArchiveError("centre depth derivatives of another size");
+      depth_sensitivities_.push_back(d.transpose());
+    }
+  }
 }
 
 }  // namespace spifit::scene

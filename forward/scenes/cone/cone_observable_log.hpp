@@ -84,7 +84,7 @@ class ConeObservableLog : public RunObserver {
   element::ThicknessRule rule_;
   io::Series section_rows_, stage_rows_, history_rows_;
   std::vector<ConeSection> profiles_;
-  std::vector<Eigen::RowVectorXd> depth_sensitivities_;  // not checkpointed: runs with sensitivities do not resume
+  std::vector<Eigen::RowVectorXd> depth_sensitivities_;
   std::size_t stages_written_ = 0;
 };
 

@@ -154,7 +154,7 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
       "external work = the tool's work on the sheet (trapezoidal rule; a half model: on the half); " +
       std::string(scene.explicit_scheme ? "explicit: kinetic energy and damping work in their columns; " : "kinetic energy 0 (static implicit); ") +
       "balance_error = external_work - the other columns", run.files(), scene.explicit_scheme));
-  auto& sections = run.add_observer(std::make_unique<PathSectionLog>(scene.sections, scene.name, run.files()));
+  auto& sections = run.add_observer(std::make_unique<PathSectionLog>(scene.sections, scene.name, run.files(), run.model().sensitivity_count()));
   run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
 
   FormingResult r;

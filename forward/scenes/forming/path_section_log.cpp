@@ -8,8 +8,8 @@
 
 namespace spifit::scene {
 
-PathSectionLog::PathSectionLog(std::vector<std::string> points, std::string scene, const RunFiles& files)
-    : points_(std::move(points)), scene_(std::move(scene)), files_(files) {}
+PathSectionLog::PathSectionLog(std::vector<std::string> points, std::string scene, const RunFiles& files, int sensitivities)
+    : points_(std::move(points)), scene_(std::move(scene)), files_(files), sensitivities_(sensitivities) {}
 
 io::Series PathSectionLog::empty_section() {
   return io::Series({{"x0", "mm"}, {"x", "mm"}, {"y", "mm"}, {"z", "mm"}, {"thickness", "mm"}});
@@ -55,6 +55,11 @@ void PathSectionLog::save(io::BinaryWriter& w) const {
     w.string(s.point);
     w.i64(static_cast<std::int64_t>(s.nodes.size()));
     for (const auto& row : s.nodes.rows()) w.f64s(row);
+    if (sensitivities_ > 0) {  // a plain run's state is as it was
+      w.matrix(s.dx);
+      w.matrix(s.dz);
+      w.matrix(s.dthickness);
+    }
   }
 }
 
@@ -70,6 +75,13 @@ void PathSectionLog::restore(io::BinaryReader& r) {
       std::vector<double> row = r.f64s();
       if (row.size() != s.nodes.columns().size()) throw io::ArchiveError("section row of another width");
       s.nodes.add_row(std::move(row));
+    }
+    if (sensitivities_ > 0) {
+      s.dx = r.matrix();
+      s.dz = r.matrix();
+      s.dthickness = r.matrix();
+      for (const Eigen::MatrixXd* d : {&s.dx, &s.dz, &s.dthickness})
+        if (d->rows() != rows || d->cols() != sensitivities_) throw io::ArchiveError("section derivatives of another size");
     }
     sections_.push_back(std::move(s));
   }

@@ -13,8 +13,10 @@ namespace spifit::scene {
 
 class PathSectionLog : public RunObserver {
  public:
-  // points: the names of the path points to take sections at; scene: the scene's name (files).
-  PathSectionLog(std::vector<std::string> points, std::string scene, const RunFiles& files);
+  // points: the names of the path points to take sections at; scene: the scene's name (files);
+  // sensitivities: the parameters of a run with sensitivities (their derivatives are in the
+  // sections and in checkpoints), 0 otherwise.
+  PathSectionLog(std::vector<std::string> points, std::string scene, const RunFiles& files, int sensitivities = 0);
   const std::vector<PathSection>& sections() const { return sections_; }
 
   std::string name() const override { return "path_sections"; }
@@ -27,6 +29,7 @@ class PathSectionLog : public RunObserver {
   std::vector<std::string> points_;
   std::string scene_;
   const RunFiles& files_;
+  int sensitivities_ = 0;
   std::vector<PathSection> sections_;
   static io::Series empty_section();
   void write_file(const PathSection& s) const;

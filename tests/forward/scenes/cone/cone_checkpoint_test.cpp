@@ -136,6 +136,39 @@ TEST(ConeCheckpoint, ResumedAfterAContourOrAKillTheRunEndsAsAnUninterruptedOne) 
   fs::remove(file);
 }
 
+// A cone with sensitivities (cyclic ties, virtual tools, friction) stopped after its first contour
+// and resumed: the force's derivatives, the centre depth's and the contour means' are those of the
+// uninterrupted run, to the bit.
+TEST(ConeCheckpoint, ResumedWithSensitivitiesTheDerivativesAreThoseOfAnUninterruptedRun) {
+  const fs::path file = test::write_tiny_cone(temp_path("sens.toml"), "[contact]\nfriction = 0.1\n[output]\nhistory_element = { r = 10.0, theta = 45.0 }\n",
+                                              test::small_tiny_cone(2));
+  const ConeScene scene = read_cone_scene(file.string());
+  RunControl plain;
+  plain.sensitivities = {"swift.K", "contact.friction", "contact.penalty"};
+  const fs::path ref = temp_path("sens_ref"), dir = temp_path("sens_resume");
+  const ConeResult r0 = run(scene, ref, plain);
+  ASSERT_TRUE(r0.ok()) << r0.to_json().dump();
+  ASSERT_EQ(r0.centre_depth_sensitivity.size(), 3);
+  RunControl stop = plain;
+  stop.stop_after_marks = 1;
+  ASSERT_TRUE((run(scene, dir, stop).status == RunStatus::stopped));
+  RunControl resume = plain;
+  resume.resume = true;
+  const ConeResult r1 = run(scene, dir, resume);
+  ASSERT_TRUE(r1.ok()) << r1.to_json().dump();
+  EXPECT_EQ(r1.to_json()["resumed_at_contour"].get<int>(), 1);
+  expect_same_outputs(ref, r0, dir, r1);
+  test::expect_same_outputs(ref, dir, {"sensitivities.csv"}, {});
+  EXPECT_EQ(r1.centre_depth_sensitivity, r0.centre_depth_sensitivity);
+  for (const char* y : {"fr", "ftheta", "fz"}) {
+    const ResultCurve a = r0.contour_means(y), b = r1.contour_means(y);
+    ASSERT_EQ(a.dy.rows(), 2) << y;
+    EXPECT_EQ(b.dy, a.dy) << y;
+  }
+  for (const auto& d : {ref, dir}) fs::remove_all(d);
+  fs::remove(file);
+}
+
 // An InputError naming the checkpoint file, with this fragment in its message; the outputs in
 // DIR are untouched.
 void expect_refused(const ConeScene& scene, const fs::path& dir, const std::string& fragment) {

@@ -96,6 +96,95 @@ TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
   fs::remove(file);
 }
 
+// A run with sensitivities keeps the state's derivatives in its checkpoints: the layers', the
+// contact points' stick history, the nodes' and the tool force's, and the sections' so far. Stopped
+// after C (its section written) and again between C and D, each resumed run writes the force
+// history and its derivatives of the uninterrupted run, byte for byte, and its sections carry the
+// same derivatives.
+TEST(FormingResume, LineWithSensitivitiesResumesBitForBit) {
+  const fs::path file = test::write_tiny_line(temp_path("line_sens.toml"), "checkpoint_increments = 10\n[contact]\nfriction = 0.1\n");
+  const FormingScene s = read_forming_scene(file.string());
+  RunControl plain;
+  plain.sensitivities = {"swift.K", "contact.friction", "contact.penalty"};
+  const fs::path ref = temp_path("line_sens_ref");
+  const FormingResult a = run(s, ref, plain);
+  ASSERT_TRUE(a.ok()) << a.message;
+  ASSERT_EQ(a.sections.size(), 2u);
+  ASSERT_EQ(a.sections[1].dz.cols(), 3);
+  for (const int stop_marks : {2, 0}) {
+    const fs::path dir = temp_path("line_sens");
+    RunControl stop = plain;
+    if (stop_marks > 0) stop.stop_after_marks = stop_marks;
+    else stop.stop_after_increments = 57;
+    const FormingResult stopped = run(s, dir, stop);
+    ASSERT_EQ(stopped.status, RunStatus::stopped) << stopped.message;
+    RunControl resume = plain;
+    resume.resume = true;
+    const FormingResult b = run(s, dir, resume);
+    ASSERT_TRUE(b.ok()) << b.message;
+    expect_same(ref, a, dir, b);
+    test::expect_same_outputs(ref, dir, {"sensitivities.csv"}, {});
+    ASSERT_EQ(b.sections.size(), a.sections.size());
+    for (std::size_t i = 0; i < a.sections.size(); ++i) {
+      EXPECT_EQ(b.sections[i].dx, a.sections[i].dx) << a.sections[i].point;
+      EXPECT_EQ(b.sections[i].dz, a.sections[i].dz) << a.sections[i].point;
+      EXPECT_EQ(b.sections[i].dthickness, a.sections[i].dthickness) << a.sections[i].point;
+    }
+    fs::remove_all(dir);
+  }
+  fs::remove_all(ref);
+  fs::remove(file);
+}
+
+// A checkpoint holds the derivatives with respect to the parameters it was written with: a resume
+// asking for others, or for none, or a checkpoint without derivatives resumed with them, is
+// refused naming both, before any output is touched.
+TEST(FormingResume, OtherSensitivitiesAreRefusedBeforeAnyOutputIsTouched) {
+  const fs::path file = test::write_tiny_line(temp_path("line_sens_other.toml"), "checkpoint_increments = 10\n");
+  const FormingScene s = read_forming_scene(file.string());
+  const fs::path dir = temp_path("sens_refused");
+  RunControl stop;
+  stop.sensitivities = {"swift.K"};
+  stop.stop_after_increments = 15;
+  ASSERT_EQ(run(s, dir, stop).status, RunStatus::stopped);
+  const std::string before = slurp(dir / "force.csv") + slurp(dir / "summary.json") + slurp(dir / "sensitivities.csv");
+  struct Case {
+    std::vector<std::string> names;
+    std::string expect;
+  };
+  for (const Case& c : {Case{{"swift.n"}, "sensitivities swift.K, not swift.n"}, Case{{}, "with sensitivities swift.K"},
+                        Case{{"swift.K", "contact.penalty"}, "sensitivities swift.K, not swift.K,contact.penalty"}}) {
+    RunControl resume;
+    resume.resume = true;
+    resume.sensitivities = c.names;
+    try {
+      run(s, dir, resume);
+      ADD_FAILURE() << "resumed with other sensitivities: " << c.expect;
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(e.file(), (dir / "checkpoint" / "state.bin").string());
+      EXPECT_NE(std::string(e.what()).find(c.expect), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(slurp(dir / "force.csv") + slurp(dir / "summary.json") + slurp(dir / "sensitivities.csv"), before);
+  }
+  // A checkpoint of a plain run, resumed with sensitivities.
+  const fs::path plain_dir = temp_path("sens_refused_plain");
+  RunControl plain_stop;
+  plain_stop.stop_after_increments = 15;
+  ASSERT_EQ(run(s, plain_dir, plain_stop).status, RunStatus::stopped);
+  RunControl resume;
+  resume.resume = true;
+  resume.sensitivities = {"swift.K"};
+  try {
+    run(s, plain_dir, resume);
+    ADD_FAILURE() << "a plain checkpoint resumed with sensitivities";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("without sensitivities"), std::string::npos) << e.what();
+  }
+  fs::remove_all(dir);
+  fs::remove_all(plain_dir);
+  fs::remove(file);
+}
+
 TEST(FormingResume, AnotherSceneIsRefusedBeforeAnyOutputIsTouched) {
   const fs::path file = test::write_tiny_line(temp_path("line_a.toml"), "checkpoint_increments = 10\n");
   const fs::path dir = temp_path("refused");
