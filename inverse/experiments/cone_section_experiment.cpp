@@ -67,9 +67,10 @@ std::unique_ptr<Experiment> make_cone_section_experiment(ConeSectionSpec s) {
   const int contour = s.contour;
   const std::string x = s.x, y = s.y;
   FeCurve curve{s.x, s.y, "mm", "mm", std::move(s.xs), std::move(s.ys), std::move(s.point_weights)};
-  return make_fe_curve_experiment(s, "cone_section", std::move(curve), [contour, x, y](const scene::SceneResult& r, const ParameterPoint&) {
-    return cone_section_curve(r, contour, x, y);
-  });
+  // Exact: the section's z and thickness carry their derivatives (ConeResult::contour_section).
+  return make_fe_curve_experiment(
+      s, "cone_section", std::move(curve),
+      [contour, x, y](const scene::SceneResult& r, const ParameterPoint&) { return cone_section_curve(r, contour, x, y); }, true);
 }
 
 std::unique_ptr<Experiment> read_cone_section_experiment(const io::TomlTable& e, const std::string& path, FeExperimentBase base) {

@@ -234,12 +234,16 @@ class CurveFeExperiment : public FeExperiment {
 // A curve experiment whose simulated curve a function gives.
 class FunctionCurveExperiment final : public CurveFeExperiment {
  public:
-  FunctionCurveExperiment(const FeExperimentBase& b, const char* kind, FeCurve c, SimulatedCurve f)
-      : CurveFeExperiment(b, kind, {c.x, c.y, c.x_unit, c.y_unit, std::move(c.xs), std::move(c.ys), std::move(c.point_weights)}), f_(std::move(f)) {}
+  FunctionCurveExperiment(const FeExperimentBase& b, const char* kind, FeCurve c, SimulatedCurve f, bool differentiable)
+      : CurveFeExperiment(b, kind, {c.x, c.y, c.x_unit, c.y_unit, std::move(c.xs), std::move(c.ys), std::move(c.point_weights)}),
+        f_(std::move(f)),
+        differentiable_(differentiable) {}
 
  private:
   ForceCurve simulated(const scene::SceneResult& r, const ParameterPoint& p) const override { return f_(r, p); }
+  bool differentiable() const override { return differentiable_; }
   SimulatedCurve f_;
+  bool differentiable_;
 };
 
 class ForceCurveExperiment final : public CurveFeExperiment {
@@ -311,8 +315,9 @@ class ContourMeansExperiment final : public CurveFeExperiment {
 
 std::unique_ptr<Experiment> make_contour_means_experiment(ContourMeansSpec spec) { return std::make_unique<ContourMeansExperiment>(spec); }
 
-std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated) {
-  return std::make_unique<FunctionCurveExperiment>(base, kind, std::move(curve), std::move(simulated));
+std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated,
+                                                     bool differentiable) {
+  return std::make_unique<FunctionCurveExperiment>(base, kind, std::move(curve), std::move(simulated), differentiable);
 }
 
 std::unique_ptr<Experiment> make_section_experiment(SectionSpec spec) { return std::make_unique<SectionExperiment>(spec); }

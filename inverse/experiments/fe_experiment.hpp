@@ -54,7 +54,10 @@ struct FeCurve {
 // A simulated curve, with the derivatives of a run with sensitivities (ResultCurve::dx, dy).
 using ForceCurve = scene::ResultCurve;
 using SimulatedCurve = std::function<ForceCurve(const scene::SceneResult&, const ParameterPoint&)>;
-std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated);
+// differentiable: `simulated` gives the curve's derivatives in a run with sensitivities (the fit's
+// exact Jacobian); else the experiment's columns come from central differences.
+std::unique_ptr<Experiment> make_fe_curve_experiment(const FeExperimentBase& base, const char* kind, FeCurve curve, SimulatedCurve simulated,
+                                                     bool differentiable = false);
 
 // A section y = 0 of a forming scene at a named path point (its [output] sections): the
 // mid-surface height z or the thickness against x (deformed) or x0 (initial), mm.

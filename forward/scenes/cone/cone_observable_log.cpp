@@ -155,6 +155,26 @@ void ConeObservableLog::after_increment(const IncrementView& v) {
   }
 }
 
+// The section nodes are the shell's model nodes (the family with sensitivities): r = |(x, y)|
+// moves with (x dx + y dy) / r (zero on the axis, whose in-plane translations are tied to zero).
+void ConeObservableLog::add_section_sensitivities(ConeSection* section) const {
+  const int count = model_.sensitivity_count();
+  const auto n = static_cast<Eigen::Index>(line_.size());
+  section->dr.resize(n, count);
+  section->dz.resize(n, count);
+  section->dthickness.resize(n, count);
+  const Eigen::MatrixXd dh = model_.nodal_thickness_sensitivity();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const int node = line_[static_cast<std::size_t>(i)];
+    const Eigen::Vector3d& x = model_.position(node);
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> d = model_.position_sensitivity(node);
+    const double r = std::hypot(x.x(), x.y());
+    section->dr.row(i) = r > 0.0 ? Eigen::RowVectorXd((x.x() * d.row(0) + x.y() * d.row(1)) / r) : Eigen::RowVectorXd::Zero(count);
+    section->dz.row(i) = d.row(2);
+    section->dthickness.row(i) = dh.row(node);
+  }
+}
+
 void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
   (void)v;
   const ContourSpan& span = track_.contours()[static_cast<std::size_t>(m.index)];
@@ -175,7 +195,8 @@ void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
   files_.write(name, io::format_text("# spifit cone scene %s: radial elongation of the section's element edges after stage %d, contour %d\n",
                                      scene_.name.c_str(), span.stage, span.contour) +
                          elongation_csv(edges));
-  profiles_.push_back({span.stage, span.contour, points});
+  profiles_.push_back({span.stage, span.contour, points, {}, {}, {}});
+  if (model_.sensitivity_count() > 0) add_section_sensitivities(&profiles_.back());
   const double z = centre_z(mid);
   section_rows_.add_row({static_cast<double>(span.stage), static_cast<double>(span.contour), wall, static_cast<double>(s.plateau_nodes),
                            s.plateau_thickness, s.sine_law_thickness, s.plateau_thickness / s.sine_law_thickness, s.min_thickness,
@@ -235,6 +256,8 @@ void ConeObservableLog::save(io::BinaryWriter& w) const {
   if (model_.sensitivity_count() > 0) {  // a plain run's state is as it was
     w.i64(static_cast<std::int64_t>(depth_sensitivities_.size()));
     for (const Eigen::RowVectorXd& d : depth_sensitivities_) w.vector(d.transpose());
+    for (const ConeSection& p : profiles_)
+      for (const Eigen::MatrixXd* d : {&p.dr, &p.dz, &p.dthickness}) w.matrix(*d);
   }
 }
 
@@ -252,6 +275,11 @@ void ConeObservableLog::restore(io::BinaryReader& r) {
       if (d.size() != count) throw io::ArchiveError("centre depth derivatives of another size");
       depth_sensitivities_.push_back(d.transpose());
     }
+    for (ConeSection& p : profiles_)
+      for (Eigen::MatrixXd* d : {&p.dr, &p.dz, &p.dthickness}) {
+        *d = r.matrix();
+        if (d->rows() != static_cast<Eigen::Index>(p.points.size()) || d->cols() != count) throw io::ArchiveError("section derivatives of another size");
+      }
   }
 }
 

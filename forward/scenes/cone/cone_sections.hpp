@@ -45,6 +45,9 @@ struct SectionPoint {
 struct ConeSection {
   int stage = 1, contour = 0;
   std::vector<SectionPoint> points;
+  // A run with sensitivities: the derivatives of the points' r, z and thickness, one row per point
+  // (in the order of `points`), one column per parameter; empty otherwise.
+  Eigen::MatrixXd dr, dz, dthickness;
 };
 
 // The section points of `nodes` (sorted from the axis outwards) on the line at theta0_deg;

@@ -1,5 +1,5 @@
 // Fits with exact FE Jacobians (inverse/fit/exact_cost.hpp, docs/design/sensitivities.md): the
-// Jacobian of a force curve and of a section's z from one run with sensitivities, in the fit's
+// Jacobian of a force curve and of a section's z (a line's, a cone's) from one run with sensitivities, in the fit's
 // internal coordinates (a log-scaled parameter, hill.G with H = 2 - G, the contact penalty),
 // against central differences of whole runs; which scenes the fit file differentiates, and its
 // errors.
@@ -167,6 +167,33 @@ TEST(ExactFeJacobian, SectionThicknessAgreesWithCentralDifferences) {
   ASSERT_EQ(problem.experiments.size(), 1u);
   expect_columns_within_central_differences(problem);
   fs::remove(thickness);
+}
+
+// A cone's section after its last contour (z against the moving r, the nodes' r and z
+// derivatives through the pie's cyclic ties, virtual tools and friction), with respect to mu.
+TEST(ExactFeJacobian, ConeSectionAgreesWithCentralDifferences) {
+  const fs::path scene = test::write_tiny_cone(test::temp_path("cone.toml"), "[contact]\nfriction = 0.1\n", test::small_tiny_cone(2));
+  const auto r = scene::read_scene(scene.string())->run(scene::RunFiles(), {});
+  ASSERT_TRUE(r->ok()) << r->message;
+  const scene::ResultCurve c = r->contour_section(2, "r", "z");
+  ASSERT_GE(c.x.size(), 5u);
+  const fs::path data = test::temp_path("cone_section.csv");
+  {
+    std::ofstream out(data);
+    out << "r [mm],z [mm]\n";
+    out.precision(17);
+    for (std::size_t i = 0; i + 1 < c.x.size(); ++i) out << 0.5 * (c.x[i] + c.x[i + 1]) << "," << 0.5 * (c.y[i] + c.y[i + 1]) + 0.002 << "\n";
+  }
+  const auto problem = inverse::read_fit_file(
+      write_fit("[fit]\ncard = \"" + src("materials/aa3003o_c3c4.toml") + "\"\n" +
+                "[parameters.\"contact.friction\"]\ninitial = 0.12\nlower = 0.0\nupper = 0.5\n"
+                "[[experiment]]\nname = \"cone_shape\"\nscene = \"" + scene.string() + "\"\nsection = \"last\"\ndata = \"" + data.string() +
+                "\"\nnoise = 0.001\n")
+          .string());
+  ASSERT_EQ(problem.experiments.size(), 1u);
+  expect_columns_within_central_differences(problem);
+  fs::remove(data);
+  fs::remove(scene);
 }
 
 // The same fit with the exact Jacobian and with central differences: the same card within a

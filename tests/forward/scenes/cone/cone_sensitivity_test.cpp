@@ -1,7 +1,7 @@
 // Exact parameter derivatives of a cone run (direct differentiation through a pie with cyclic
 // ties, virtual tools and friction) against central differences of whole runs: the tool force at
-// every increment and the cone's observables (polar peaks, contour means, the steady state and
-// its ratios, the centre depth); and the warning of a run with sensitivities on a coarsened sheet.
+// every increment, the cone's observables (polar peaks, contour means, the steady state and its
+// ratios, the centre depth) and its sections' z and thickness; and the warning of a run with sensitivities on a coarsened sheet.
 #include "forward/scenes/common/scene.hpp"
 #include "forward/scenes/cone/cone_result.hpp"
 #include "forward/scenes/scene_registry.hpp"
@@ -92,6 +92,29 @@ TEST(ConeSensitivity, ForceAndObservablesMatchCentralDifferences) {
       EXPECT_NEAR(c.dy(i, static_cast<Eigen::Index>(k)), cd, 3e-4 * std::abs(cd) + 1e-6 * std::abs(c.y[static_cast<std::size_t>(i)] / value))
           << "contour " << i + 1 << " / " << names[k];
     }
+    // The section after contour 2: z and the thickness against r0 (fixed nodes) and r (moving
+    // ones: interpolated at the measured radii, the experiment moves with dx), each node.
+    for (const char* xs : {"r0", "r"})
+      for (const char* ys : {"z", "thickness"}) {
+        const ResultCurve s = exact->contour_section(2, xs, ys), sp = plus->contour_section(2, xs, ys), sm = minus->contour_section(2, xs, ys);
+        ASSERT_GT(s.x.size(), 5u) << xs << " " << ys;
+        ASSERT_EQ(s.dy.rows(), static_cast<Eigen::Index>(s.x.size())) << xs << " " << ys;
+        ASSERT_EQ(sp.x.size(), s.x.size());
+        ASSERT_EQ(sm.x.size(), s.x.size());
+        double scale_y = 0.0, worst_y = 0.0, scale_x = 0.0, worst_x = 0.0;
+        for (std::size_t i = 0; i < s.x.size(); ++i) {
+          const auto row = static_cast<Eigen::Index>(i);
+          const double cdy = (sp.y[i] - sm.y[i]) / (2.0 * h), cdx = (sp.x[i] - sm.x[i]) / (2.0 * h);
+          scale_y = std::max(scale_y, std::abs(cdy));
+          scale_x = std::max(scale_x, std::abs(cdx));
+          worst_y = std::max(worst_y, std::abs(s.dy(row, static_cast<Eigen::Index>(k)) - cdy));
+          worst_x = std::max(worst_x, std::abs(s.dx(row, static_cast<Eigen::Index>(k)) - cdx));
+        }
+        // Measured: within 4e-6 of the largest central difference (friction's thickness).
+        std::printf("  section %s(%s): largest |exact - cd| %.2e of %.2e (y), %.2e of %.2e (x)\n", ys, xs, worst_y, scale_y, worst_x, scale_x);
+        EXPECT_LE(worst_y, 2e-5 * scale_y + 1e-12) << ys << "(" << xs << ") / " << names[k];
+        EXPECT_LE(worst_x, 2e-5 * scale_x + 1e-12) << ys << "(" << xs << ") / " << names[k];
+      }
   }
   std::filesystem::remove(file);
 }
