@@ -1,6 +1,6 @@
 #include "forward/scenes/common/energy_log.hpp"
 
-#include "forward/io/binary_archive.hpp"
+#include "forward/io/series_archive.hpp"
 
 namespace spifit::scene {
 namespace {
@@ -63,20 +63,10 @@ void EnergyLog::write(WriteReason reason) {
   files_.write("energies.csv", comment_ + "\n" + table_.csv());
 }
 
-void EnergyLog::save(io::BinaryWriter& w) const {
-  w.i64(static_cast<std::int64_t>(table_.size()));
-  for (const auto& row : table_.rows()) w.f64s(row);
-}
+void EnergyLog::save(io::BinaryWriter& w) const { io::save_series_rows(w, table_); }
 
 void EnergyLog::restore(io::BinaryReader& r) {
-  table_.clear();
-  const std::int64_t n = r.i64();
-  if (n < 0 || n > 1'000'000'000) throw io::ArchiveError("invalid energy row count " + std::to_string(n));
-  for (std::int64_t i = 0; i < n; ++i) {
-    std::vector<double> row = r.f64s();
-    if (row.size() != table_.columns().size()) throw io::ArchiveError("energy row of another width");
-    table_.add_row(row);
-  }
+  io::load_series_rows(r, &table_, "energy");
   last_ = table_.empty() ? model::ModelEnergies{} : energies_of_row(table_.rows().back(), dynamic_);
 }
 

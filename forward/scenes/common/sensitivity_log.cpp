@@ -1,6 +1,6 @@
 #include "forward/scenes/common/sensitivity_log.hpp"
 
-#include "forward/io/binary_archive.hpp"
+#include "forward/io/series_archive.hpp"
 #include "forward/model/fe_model.hpp"
 
 namespace spifit::scene {
@@ -41,20 +41,8 @@ void SensitivityLog::write(WriteReason reason) {
   files_.write("sensitivities.csv", comment_ + "\n" + table_.csv());
 }
 
-void SensitivityLog::save(io::BinaryWriter& w) const {
-  w.i64(static_cast<std::int64_t>(table_.size()));
-  for (const auto& row : table_.rows()) w.f64s(row);
-}
+void SensitivityLog::save(io::BinaryWriter& w) const { io::save_series_rows(w, table_); }
 
-void SensitivityLog::restore(io::BinaryReader& r) {
-  table_.clear();
-  const std::int64_t n = r.i64();
-  if (n < 0 || n > 100'000'000) throw io::ArchiveError("invalid sensitivity row count " + std::to_string(n));
-  for (std::int64_t i = 0; i < n; ++i) {
-    std::vector<double> row = r.f64s();
-    if (row.size() != table_.columns().size()) throw io::ArchiveError("sensitivity row of another width (other parameters)");
-    table_.add_row(std::move(row));
-  }
-}
+void SensitivityLog::restore(io::BinaryReader& r) { io::load_series_rows(r, &table_, "sensitivity"); }
 
 }  // namespace spifit::scene

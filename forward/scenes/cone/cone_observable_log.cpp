@@ -2,6 +2,7 @@
 
 #include "forward/io/binary_archive.hpp"
 #include "forward/io/format_text.hpp"
+#include "forward/io/series_archive.hpp"
 #include "forward/model/shell_model.hpp"
 #include "forward/mesh/mesh.hpp"
 #include "forward/scenes/cone/cone_scene.hpp"
@@ -31,22 +32,6 @@ const std::vector<std::string> kSectionColumns{"stage", "contour", "wall_angle [
                                                "centre_depth [mm]"};
 const std::vector<std::string> kStageColumns{"stage", "wall_angle [deg]", "travel [mm]", "centre_z [mm]", "centre_depth [mm]",
                                              "max_elongation"};
-
-void save_series(io::BinaryWriter& w, const io::Series& s) {
-  w.i64(static_cast<std::int64_t>(s.size()));
-  for (const auto& row : s.rows()) w.f64s(row);
-}
-
-void load_series(io::BinaryReader& r, io::Series* s) {
-  s->clear();
-  const std::int64_t n = r.i64();
-  if (n < 0 || n > 1'000'000'000) throw io::ArchiveError("invalid row count " + std::to_string(n));
-  for (std::int64_t i = 0; i < n; ++i) {
-    std::vector<double> row = r.f64s();
-    if (row.size() != s->columns().size()) throw io::ArchiveError("observable row of another width");
-    s->add_row(std::move(row));
-  }
-}
 
 // A section point's fields in a fixed order (checkpoints).
 constexpr std::size_t kPointFields = 13;
@@ -249,9 +234,9 @@ json ConeObservableLog::summary() const {
 }
 
 void ConeObservableLog::save(io::BinaryWriter& w) const {
-  save_series(w, section_rows_);
-  save_series(w, stage_rows_);
-  save_series(w, history_rows_);
+  io::save_series_rows(w, section_rows_);
+  io::save_series_rows(w, stage_rows_);
+  io::save_series_rows(w, history_rows_);
   save_profiles(w, profiles_);
   if (model_.sensitivity_count() > 0) {  // a plain run's state is as it was
     w.i64(static_cast<std::int64_t>(depth_sensitivities_.size()));
@@ -262,9 +247,9 @@ void ConeObservableLog::save(io::BinaryWriter& w) const {
 }
 
 void ConeObservableLog::restore(io::BinaryReader& r) {
-  load_series(r, &section_rows_);
-  load_series(r, &stage_rows_);
-  load_series(r, &history_rows_);
+  io::load_series_rows(r, &section_rows_, "observable");
+  io::load_series_rows(r, &stage_rows_, "observable");
+  io::load_series_rows(r, &history_rows_, "observable");
   load_profiles(r, &profiles_);
   depth_sensitivities_.clear();
   if (const int count = model_.sensitivity_count(); count > 0) {
