@@ -8,7 +8,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -25,6 +27,17 @@ using spifit::test::slurp;
 using spifit::test::temp_path;
 
 const std::string kScenes = std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/";
+
+// The numbers of the ascii DataArray `name` of a VTU file's text; empty when there is none.
+std::vector<double> data_array(const std::string& vtu, const std::string& name) {
+  const auto at = vtu.find("Name=\"" + name + "\"");
+  if (at == std::string::npos) return {};
+  const auto begin = vtu.find('>', at) + 1, end = vtu.find("</DataArray>", begin);
+  std::stringstream ss(vtu.substr(begin, end - begin));
+  std::vector<double> v;
+  for (double x; ss >> x;) v.push_back(x);
+  return v;
+}
 
 std::vector<std::string> split(const std::string& line) {
   std::vector<std::string> out;
@@ -64,6 +77,19 @@ TEST(SensitivityCli, IndentWritesDerivativesBesideUnchangedForces) {
   EXPECT_NEAR(std::stod(last[7]), 282.82, 0.01);
   EXPECT_NEAR(std::stod(last[4]) * 180.0, std::stod(last[7]), 1e-9 * std::stod(last[7]));  // K = 180 MPa (card C.4)
   EXPECT_TRUE(fs::exists(out / "plots" / "run_sensitivities.svg"));  // the run report's plot
+  // The final VTU step carries the displacement's derivatives, raw and scaled by the value.
+  const std::string vtu = slurp(out / "vtu" / "sheet_000001.vtu");
+  const std::vector<double> u = data_array(vtu, "displacement"), du = data_array(vtu, "d(displacement)/d(swift.K)"),
+                            scaled = data_array(vtu, "swift.K*d(displacement)/d(swift.K)");
+  ASSERT_EQ(du.size(), u.size());
+  ASSERT_EQ(scaled.size(), u.size());
+  EXPECT_EQ(data_array(vtu, "d(displacement)/d(elastic.E)").size(), u.size());
+  double largest = 0.0;
+  for (std::size_t i = 0; i < du.size(); ++i) {
+    EXPECT_NEAR(scaled[i], 180.0 * du[i], 1e-12 + 1e-9 * std::abs(scaled[i])) << i;
+    largest = std::max(largest, std::abs(du[i]));
+  }
+  EXPECT_GT(largest, 0.0);  // the sheet's shape around the tool moves with K
   fs::remove_all(out);
 }
 

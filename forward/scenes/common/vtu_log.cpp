@@ -20,16 +20,16 @@ void VtuLog::open() {
 
 void VtuLog::at_start(const model::FeModel& model) {
   open();
-  if (pvd_) pvd_->write_step(0.0, model.mesh(), model::vtu_frame(model));
+  if (pvd_) pvd_->write_step(0.0, model.mesh(), frame(model));
 }
 
 void VtuLog::after_increment(const IncrementView& v) {
   ++increments_;
-  if (pvd_ && every_ > 0 && increments_ % every_ == 0) pvd_->write_step(v.time, v.model.mesh(), model::vtu_frame(v.model));
+  if (pvd_ && every_ > 0 && increments_ % every_ == 0) pvd_->write_step(v.time, v.model.mesh(), frame(v.model));
 }
 
 void VtuLog::at_end(const model::FeModel& model, double time) {
-  if (pvd_ && increments_ > 0 && (every_ == 0 || increments_ % every_ != 0)) pvd_->write_step(time, model.mesh(), model::vtu_frame(model));
+  if (pvd_ && increments_ > 0 && (every_ == 0 || increments_ % every_ != 0)) pvd_->write_step(time, model.mesh(), frame(model));
 }
 
 void VtuLog::save(io::BinaryWriter& w) const {

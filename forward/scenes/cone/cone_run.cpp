@@ -222,7 +222,7 @@ ConeResult run_cone_scene(const ConeScene& scene, const RunFiles& files, const R
                                         : "kinetic energy 0 (static implicit); ") +
       "balance_error = external_work - the other columns", run.files(), scene.explicit_scheme));
   auto& observables = run.add_observer(std::make_unique<ConeObservableLog>(scene, run.model(), run.setup().mesh, track, run.files()));
-  run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
+  run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every)).set_sensitivities(run.sensitivity_names(), run.sensitivity_values());
 
   ConeResult r;
   r.warnings = scene_warnings(scene, track, run);

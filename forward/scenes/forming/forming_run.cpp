@@ -155,7 +155,7 @@ FormingResult run_forming_scene(const FormingScene& scene, const RunFiles& files
       std::string(scene.explicit_scheme ? "explicit: kinetic energy and damping work in their columns; " : "kinetic energy 0 (static implicit); ") +
       "balance_error = external_work - the other columns", run.files(), scene.explicit_scheme));
   auto& sections = run.add_observer(std::make_unique<PathSectionLog>(scene.sections, scene.name, run.files(), run.model().sensitivity_count()));
-  run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every));
+  run.add_observer(std::make_unique<VtuLog>(run.files(), scene.vtu_every)).set_sensitivities(run.sensitivity_names(), run.sensitivity_values());
 
   FormingResult r;
   r.inputs = forming_inputs(scene, run.model(), length);
