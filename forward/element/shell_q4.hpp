@@ -111,6 +111,15 @@ class ShellQ4 {
   // Committed state of the four sections (checkpoints; ShellSection::save_state).
   void save_state(io::BinaryWriter& w) const;
   void load_state(io::BinaryReader& r);
+  // Whether the last compute()'s tangent was exact, and the switch (ShellSection::set_exact_tangents).
+  bool tangent_was_exact() const {
+    for (const auto& sec : sections_)
+      if (!sec.tangent_was_exact()) return false;
+    return true;
+  }
+  void set_exact_tangents(bool exact) {
+    for (auto& sec : sections_) sec.set_exact_tangents(exact);
+  }
   // Their committed derivatives, after enable_sensitivities (ShellSection::save_sensitivities).
   void save_sensitivities(io::BinaryWriter& w, int count) const;
   void load_sensitivities(io::BinaryReader& r, int count);

@@ -20,6 +20,7 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
   SectionStatus status;
   e_trial_ = e;
   kappa_trial_ = kappa;
+  tangent_exact_ = true;
   if (resultant) resultant->setZero();
   if (tangent) tangent->setZero();
   {
@@ -64,10 +65,14 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
       return status;
     }
     // Start of an increment (no strain change beyond round-off): the last converged
-    // consistent tangent instead of the elastic one.
+    // consistent tangent instead of the elastic one, for Newton (not for exact tangents).
     if (with_ct) {
-      if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_[l].cwiseAbs().maxCoeff())) ct = tangent_[l];
-      tangent_trial_[l] = ct;
+      const bool at_rest = d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_[l].cwiseAbs().maxCoeff());
+      tangent_trial_[l] = at_rest ? tangent_[l] : ct;
+      if (at_rest && !exact_tangents_) {
+        if (tangent && ct != tangent_[l]) tangent_exact_ = false;
+        ct = tangent_[l];
+      }
     }
     const Vec3& t = points_[l].trial().stress;
     const Vec3 s = ls.first.transpose() * t;

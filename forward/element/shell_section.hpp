@@ -63,6 +63,13 @@ class ShellSection {
   // false: a residual alone leaves the layers' consistent tangents out (explicit runs, where no
   // tangent is ever assembled); the committed tangent is then stale. true by default.
   void set_layer_tangents(bool keep) { keep_tangents_ = keep; }
+  // A layer starting an increment at rest (no strain change) gives Newton its last converged
+  // consistent tangent rather than the one of the zero step; the last update's tangent was then
+  // not the exact derivative of its resultants where the two differ (tangent_was_exact false).
+  // set_exact_tangents(true): updates give the exact tangent, and leave the state (trial layers,
+  // and the tangent the next increment starts from) as they would otherwise.
+  bool tangent_was_exact() const { return tangent_exact_; }
+  void set_exact_tangents(bool exact) { exact_tangents_ = exact; }
   // Committed state for checkpoints (forward/io/binary_archive.hpp), bit-exact: thickness,
   // membrane strain, and per layer the material state, log strain and consistent tangent.
   // load_state resets the trial state to it; io::ArchiveError on a layer-count mismatch.
@@ -117,6 +124,7 @@ class ShellSection {
   const ThicknessRule* rule_;
   double h0_, h_;
   bool keep_tangents_ = true;
+  bool exact_tangents_ = false, tangent_exact_ = true;
   Eigen::Matrix3d compliance_;  // inverse of the law's plane-stress elastic matrix
   std::vector<material::MaterialPoint<double, 3>> points_;
   std::vector<Vec3> eps_, eps_trial_;  // layer log strains (committed, trial)

@@ -116,6 +116,10 @@ class ElementFamily {
   virtual solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load);
   virtual solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                          Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force);
+  // Whether the last evaluation's tangents were the residual's exact derivative, and the switch
+  // to exact ones (solver::NonlinearProblem::tangent_was_exact); exact by default.
+  virtual bool tangent_was_exact() const { return true; }
+  virtual void set_exact_tangents(bool exact) { (void)exact; }
   // The committed derivative of element_thickness(e) (after enable_sensitivities).
   virtual material::SensitivityRow thickness_sensitivity(int e) const;
   // Committed element states, bit-exact (checkpoints); io::ArchiveError on a mismatch.

@@ -87,6 +87,8 @@ class FeModel : public solver::NonlinearProblem {
   int sensitivity_count() const override { return sensitivity_count_; }
   solver::ElementEvaluation sensitivity_load(Eigen::MatrixXd* load) override;
   solver::ElementEvaluation update_sensitivities(const Eigen::MatrixXd& du) override;
+  bool tangent_was_exact() const override { return family_->tangent_was_exact(); }
+  void set_exact_tangents(bool exact) override { family_->set_exact_tangents(exact); }
   // Committed derivative of the contributions' total force (rows x, y, z; one column per
   // parameter): with the tool's contact alone, of ToolContact::force(), the force on the tool.
   const Eigen::Matrix<double, 3, Eigen::Dynamic>& contribution_force_sensitivity() const { return force_sensitivity_; }

@@ -227,6 +227,16 @@ void ShellFamily::load_state(io::BinaryReader& r) {
   for (auto& el : elements_) el.load_state(r);
 }
 
+bool ShellFamily::tangent_was_exact() const {
+  for (const auto& el : elements_)
+    if (!el.tangent_was_exact()) return false;
+  return true;
+}
+
+void ShellFamily::set_exact_tangents(bool exact) {
+  for (auto& el : elements_) el.set_exact_tangents(exact);
+}
+
 void ShellFamily::save_sensitivities(io::BinaryWriter& w) const {
   for (const auto& el : elements_) el.save_sensitivities(w, sensitivity_count_);
 }

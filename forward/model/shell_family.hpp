@@ -67,6 +67,8 @@ class ShellFamily final : public ElementFamily {
   solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                  Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
   material::SensitivityRow thickness_sensitivity(int e) const override { return 2.0 * offset_sensitivity(e); }
+  bool tangent_was_exact() const override;
+  void set_exact_tangents(bool exact) override;
   void save_sensitivities(io::BinaryWriter& w) const override;
   void load_sensitivities(io::BinaryReader& r) override;
 

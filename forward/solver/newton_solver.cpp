@@ -382,9 +382,13 @@ bool NewtonSolver::after_failure(double lambda0, double lambda1, const ElementEv
 
 bool NewtonSolver::sensitivity_step(double lambda1, std::string* message) {
   // The tangent at the converged iterate: the last assembly's when it had one (a run with
-  // sensitivities assembles it at every iterate), else assembled now.
-  if (!tangent_at_iterate_) {
+  // sensitivities assembles it at every iterate) and it was exact, else assembled now, exact
+  // (where layers started the increment at rest, Newton had their last elastic-plastic tangents:
+  // a solve with those moved the derivatives at increments where nothing moved).
+  if (!tangent_at_iterate_ || !problem_.tangent_was_exact()) {
+    problem_.set_exact_tangents(true);
     const Assembly a = assemble(lambda1, true, nullptr);
+    problem_.set_exact_tangents(false);
     if (!a.failure.ok) {
       *message = "sensitivities at load factor " + std::to_string(lambda1) + ": " + a.failure.where + ": " + a.failure.reason;
       return false;

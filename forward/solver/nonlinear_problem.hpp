@@ -54,6 +54,13 @@ class NonlinearProblem {
     (void)du;
     return {false, "update_sensitivities", "the problem has no parameter sensitivities", 1.0};
   }
+  // Whether the tangent of the last assembly was the residual's exact derivative. A problem may
+  // give Newton another tangent where that helps it (a shell layer starting an increment at rest
+  // takes its last elastic-plastic tangent); the solve for the derivatives needs the exact one:
+  // set_exact_tangents(true) makes the next assemblies exact without changing the state they
+  // leave (the same trial states, and what the next increment starts from).
+  virtual bool tangent_was_exact() const { return true; }
+  virtual void set_exact_tangents(bool exact) { (void)exact; }
   // Names a DOF for messages (where a Newton correction was largest when an increment failed).
   virtual std::string describe_dof(int dof) const { return "DOF " + std::to_string(dof); }
 };
