@@ -25,6 +25,12 @@ struct ResultCurve {
   Eigen::MatrixXd dx, dy;
 };
 
+// A section's nodes as a curve sorted by x (stable), empty when two nodes share an x (it folds
+// over). dy (rows as xs, a column per parameter; null: none) gives the curve's derivatives, dx
+// those of x (null with dy: x does not move).
+ResultCurve sorted_section_curve(const std::vector<double>& xs, const std::vector<double>& ys, const Eigen::MatrixXd* dx,
+                                 const Eigen::MatrixXd* dy);
+
 // The components a contour mean can give: fr, ftheta, fz (polar, at the tool's polar angle), fx,
 // fy, and the ratios ftheta_over_fz, fr_over_fz.
 const char* contour_mean_names();

@@ -81,27 +81,15 @@ ResultCurve ConeResult::contour_section(int contour, const std::string& x, const
   ResultCurve c;
   if (contour < 1 || static_cast<std::size_t>(contour) > section_profiles.size()) return c;
   const ConeSection& s = section_profiles[static_cast<std::size_t>(contour - 1)];
-  std::vector<std::size_t> order(s.points.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return point_value(s.points[a], x) < point_value(s.points[b], x); });
-  for (std::size_t i : order) {
-    const SectionPoint& p = s.points[i];
-    if (!c.x.empty() && !(point_value(p, x) > c.x.back())) return {};  // two nodes at one r: a fold
-    c.x.push_back(point_value(p, x));
-    c.y.push_back(point_value(p, y));
+  std::vector<double> xs, ys;
+  for (const SectionPoint& p : s.points) {
+    xs.push_back(point_value(p, x));
+    ys.push_back(point_value(p, y));
   }
   // Derivatives where the section holds them: r moves, r0 does not; z and the thickness.
-  if (s.dz.rows() == static_cast<Eigen::Index>(order.size()) && (y == "z" || y == "thickness") && (x == "r" || x == "r0")) {
-    const auto n = static_cast<Eigen::Index>(order.size());
-    c.dx = Eigen::MatrixXd::Zero(n, s.dz.cols());
-    c.dy.resize(n, s.dz.cols());
-    for (Eigen::Index i = 0; i < n; ++i) {
-      const auto row = static_cast<Eigen::Index>(order[static_cast<std::size_t>(i)]);
-      if (x == "r") c.dx.row(i) = s.dr.row(row);
-      c.dy.row(i) = y == "z" ? s.dz.row(row) : s.dthickness.row(row);
-    }
-  }
-  return c;
+  const bool derivatives = s.dz.rows() == static_cast<Eigen::Index>(xs.size()) && (y == "z" || y == "thickness") && (x == "r" || x == "r0");
+  return sorted_section_curve(xs, ys, derivatives && x == "r" ? &s.dr : nullptr,
+                              derivatives ? (y == "z" ? &s.dz : &s.dthickness) : nullptr);
 }
 
 namespace {

@@ -26,32 +26,15 @@ std::string FormingResult::brief_report() const {
 }
 
 ResultCurve FormingResult::path_section(const std::string& point, const std::string& x, const std::string& y) const {
-  ResultCurve c;
   for (const auto& s : sections) {
     if (s.point != point) continue;
     const std::vector<double> xs = s.nodes.column(x), ys = s.nodes.column(y);
-    std::vector<std::size_t> order(xs.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return xs[a] < xs[b]; });
-    for (std::size_t i : order) {
-      if (!c.x.empty() && !(xs[i] > c.x.back())) return {};  // two nodes at one x: a fold
-      c.x.push_back(xs[i]);
-      c.y.push_back(ys[i]);
-    }
     // Derivatives where the section holds them: x moves, x0 does not; z and the thickness.
-    if (s.dz.rows() == static_cast<Eigen::Index>(xs.size()) && (y == "z" || y == "thickness") && (x == "x" || x == "x0")) {
-      const Eigen::Index n = static_cast<Eigen::Index>(order.size());
-      c.dx = Eigen::MatrixXd::Zero(n, s.dz.cols());
-      c.dy.resize(n, s.dz.cols());
-      for (Eigen::Index i = 0; i < n; ++i) {
-        const auto row = static_cast<Eigen::Index>(order[static_cast<std::size_t>(i)]);
-        if (x == "x") c.dx.row(i) = s.dx.row(row);
-        c.dy.row(i) = y == "z" ? s.dz.row(row) : s.dthickness.row(row);
-      }
-    }
-    break;
+    const bool derivatives = s.dz.rows() == static_cast<Eigen::Index>(xs.size()) && (y == "z" || y == "thickness") && (x == "x" || x == "x0");
+    return sorted_section_curve(xs, ys, derivatives && x == "x" ? &s.dx : nullptr,
+                                derivatives ? (y == "z" ? &s.dz : &s.dthickness) : nullptr);
   }
-  return c;
+  return {};
 }
 
 }  // namespace spifit::scene
