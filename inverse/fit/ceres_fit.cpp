@@ -2,12 +2,16 @@
 
 #include "forward/io/input_error.hpp"
 #include "inverse/fit/ceres_cost.hpp"
+#include "inverse/fit/relative_offset.hpp"
 #include "inverse/fit/solution_analysis.hpp"
 
 #include <ceres/ceres.h>
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <memory>
 
 namespace spifit::inverse {
 
@@ -26,6 +30,64 @@ class CostHistory final : public ceres::IterationCallback {
  private:
   std::vector<double>* h_;
   FitProgress* progress_;
+};
+
+// Ends the fit once the relative offset at an accepted point is at most the tolerance
+// (relative_offset.hpp). The residuals and Jacobian at that point are those Ceres has just
+// asked for: an FE run is not made again (SceneRuns keeps each point's run). Its evaluations count
+// with the fit's (`evaluations`), as the experiments count them.
+class OffsetStop final : public ceres::IterationCallback {
+ public:
+  OffsetStop(const FitProblem& fp, const std::vector<double>* x, double tolerance, std::atomic<long>* evaluations)
+      : fp_(fp), x_(x), tolerance_(tolerance) {
+    for (const auto& e : fp.experiments) costs_.emplace_back(make_experiment_cost(*fp.parameters, *e, evaluations));
+  }
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (s.iteration > 0 && !s.step_is_successful) return ceres::SOLVER_CONTINUE;
+    const int p = fp_.parameters->num_free();
+    Eigen::MatrixXd J;
+    Eigen::VectorXd r;
+    if (!evaluate(p, &J, &r)) return ceres::SOLVER_CONTINUE;
+    last_ = relative_offset(J, r);
+    if (!(last_.offset <= tolerance_)) return ceres::SOLVER_CONTINUE;
+    stopped_ = true;
+    return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+  }
+  bool stopped() const { return stopped_; }
+  std::string message() const {
+    char m[256];
+    std::snprintf(m, sizeof m,
+                  "CONVERGENCE: relative offset %.3g <= %.3g (the Gauss-Newton step left is below %.2g standard errors of any parameter)",
+                  last_.offset, tolerance_, last_.step_bound());
+    return m;
+  }
+
+ private:
+  bool evaluate(int p, Eigen::MatrixXd* J, Eigen::VectorXd* r) {
+    int m = 0;
+    for (const auto& c : costs_) m += c->num_residuals();
+    J->resize(m, p);
+    r->resize(m);
+    int row = 0;
+    for (const auto& c : costs_) {
+      const int n = c->num_residuals();
+      std::vector<double> jac(static_cast<std::size_t>(n) * static_cast<std::size_t>(p));
+      const double* params[] = {x_->data()};
+      double* jacobians[] = {jac.data()};
+      if (!c->Evaluate(params, r->data() + row, jacobians)) return false;
+      for (int i = 0; i < n; ++i)
+        for (int k = 0; k < p; ++k) (*J)(row + i, k) = jac[static_cast<std::size_t>(i) * static_cast<std::size_t>(p) + static_cast<std::size_t>(k)];
+      row += n;
+    }
+    return true;
+  }
+
+  const FitProblem& fp_;
+  const std::vector<double>* x_;
+  double tolerance_;
+  std::vector<std::unique_ptr<ceres::CostFunction>> costs_;
+  RelativeOffset last_;
+  bool stopped_ = false;
 };
 
 }  // namespace
@@ -82,9 +144,16 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
   so.logging_type = ceres::SILENT;
   CostHistory history(&out.cost_history, options.progress.get());
   so.callbacks.push_back(&history);
+  std::unique_ptr<OffsetStop> offset_stop;
+  if (fp.settings.offset_tolerance > 0.0) {
+    offset_stop = std::make_unique<OffsetStop>(fp, &x, fp.settings.offset_tolerance, &runs);
+    so.update_state_every_iteration = true;
+    so.callbacks.push_back(offset_stop.get());
+  }
   ceres::Solver::Summary summary;
   ceres::Solve(so, &problem, &summary);
   out.termination = ceres::TerminationTypeToString(summary.termination_type) + std::string(": ") + summary.message;
+  if (offset_stop && offset_stop->stopped()) out.termination = offset_stop->message();
   out.usable = summary.IsSolutionUsable();
   out.iterations = static_cast<int>(summary.iterations.size());
   out.cost_final = summary.final_cost;

@@ -60,7 +60,7 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   const auto ft = root.table("fit");
   if (!ft) root.fail("fit", "required table [fit] is missing");
   ft->allow_only({"name", "description", "card", "normalise_hill", "algorithm", "max_iterations", "function_tolerance",
-                  "parameter_tolerance", "gradient_tolerance", "per_experiment", "multistart", "run_time_limit", "jacobian"});
+                  "parameter_tolerance", "gradient_tolerance", "offset_tolerance", "per_experiment", "multistart", "run_time_limit", "jacobian"});
   fp.multistart = ft->integer("multistart", 1);
   if (fp.multistart < 1 || fp.multistart > 10000) ft->fail("multistart", "must lie in [1, 10000]");
   fp.per_experiment = ft->boolean("per_experiment", false);  // default: see read_fit_file
@@ -82,12 +82,15 @@ material::MaterialCard read_fit_table(const io::TomlTable& root, const std::stri
   st.function_tolerance = ft->number("function_tolerance", st.function_tolerance);
   st.parameter_tolerance = ft->number("parameter_tolerance", st.parameter_tolerance);
   st.gradient_tolerance = ft->number("gradient_tolerance", st.gradient_tolerance);
+  st.offset_tolerance = ft->number("offset_tolerance", st.offset_tolerance);
+  if (ft->has("offset_tolerance") && st.offset_tolerance > 0.0 && is_nlopt_algorithm(st.algorithm))
+    ft->fail("offset_tolerance", "stops Ceres's algorithms (levenberg_marquardt, dogleg) only, not " + st.algorithm);
   st.jacobian = ft->string("jacobian", "");
   if (ft->has("jacobian") && st.jacobian != "exact" && st.jacobian != "central")
     ft->fail("jacobian", "must be \"exact\" (through runs with sensitivities) or \"central\" (differences of whole runs)");
   st.run_time_limit = ft->number("run_time_limit", 0.0);
   if (!(st.run_time_limit >= 0.0)) ft->fail("run_time_limit", "must be >= 0 s (0: no limit)");
-  for (const char* k : {"function_tolerance", "parameter_tolerance", "gradient_tolerance"}) {
+  for (const char* k : {"function_tolerance", "parameter_tolerance", "gradient_tolerance", "offset_tolerance"}) {
     if (ft->has(k) && !(ft->number(k) >= 0)) ft->fail(k, "must be >= 0");
   }
   return card;
@@ -311,6 +314,7 @@ FitSettings fe_fit_settings() {
   s.function_tolerance = 1e-9;
   s.parameter_tolerance = 1e-8;
   s.gradient_tolerance = 1e-10;
+  s.offset_tolerance = 1e-3;
   return s;
 }
 
@@ -337,6 +341,7 @@ FitProblem read_fit_file(const std::string& path, const std::string& jacobian) {
     if (!ft->has("function_tolerance")) fp.settings.function_tolerance = fe.function_tolerance;
     if (!ft->has("parameter_tolerance")) fp.settings.parameter_tolerance = fe.parameter_tolerance;
     if (!ft->has("gradient_tolerance")) fp.settings.gradient_tolerance = fe.gradient_tolerance;
+    if (!ft->has("offset_tolerance")) fp.settings.offset_tolerance = fe.offset_tolerance;
   }
   read_parameters(root, card, normalise, fe_scenes, fp);
   if (exps.empty()) root.fail("experiment", "at least one [[experiment]] is required");

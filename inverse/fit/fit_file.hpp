@@ -17,6 +17,9 @@ struct FitSettings {
   double function_tolerance = 1e-14;
   double parameter_tolerance = 1e-12;
   double gradient_tolerance = 1e-14;
+  // Stop once the relative offset (relative_offset.hpp) at an accepted point is at most this:
+  // the Gauss-Newton step left is below sqrt(p) times it in standard errors (0: not used).
+  double offset_tolerance = 0.0;
   double run_time_limit = 0.0;  // s of wall time one FE forward run may take (0: no limit)
   // FE experiments' Jacobian: "exact" (through runs with sensitivities; refused where a scene
   // cannot give them), "central" (differences of whole runs), or "" (the fit file does not say:
@@ -27,7 +30,7 @@ struct FitSettings {
 // The defaults of a fit with FE experiments (unless the fit file states them): an FE run's cost
 // wobbles from one evaluation to the next by about 1e-11 of itself at the solution (the Newton
 // tolerances), so the tolerances above would keep Levenberg-Marquardt stepping on that noise
-// (docs/design/identification.md, "Stopping").
+// (docs/design/identification.md, "Stopping"); they stop on the relative offset instead, at 1e-3.
 FitSettings fe_fit_settings();
 
 struct FitProblem {

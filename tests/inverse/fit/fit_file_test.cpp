@@ -86,6 +86,10 @@ TEST(FitFile, Errors) {
   expect_error(base_fit("[parameters.\"hill.G\"]\nlower = 0.5\nupper = 3.5\n", curve(data)), "parameters.hill.G.upper", "3.5");
   expect_error("[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") + "\"\nparameter_tolerance = -1.0\n" + kParam + curve(data),
                "fit.parameter_tolerance", "-1");
+  expect_error("[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") + "\"\noffset_tolerance = -0.001\n" + kParam + curve(data),
+               "fit.offset_tolerance", "-0.001");
+  expect_error("[fit]\ncard = \"" + src("materials/aa3003o_c2.toml") + "\"\nalgorithm = \"bobyqa\"\noffset_tolerance = 0.001\n" + kParam + curve(data),
+               "fit.offset_tolerance", "bobyqa");
   expect_error(base_fit(kParam, "[[experiment]]\nscene = \"" + src("experiments/aa3003o/scenes/tensile_00.toml") +
                                     "\"\nobservable = \"reverse_yield_stress\"\nvalue = -40.0\n"),
                "experiment[0].observable", "reverses");

@@ -92,7 +92,7 @@ std::string fit_text(const fs::path& scene, const fs::path& data, const std::str
 
 // A fit with FE experiments stops at function, parameter and gradient tolerances of 1e-9, 1e-8
 // and 1e-10 (an FE cost is not smooth below about 1e-11 of itself; docs/design/identification.md,
-// "Stopping"); a tolerance the file states wins.
+// "Stopping"), or at a relative offset of 1e-3; a tolerance the file states wins.
 TEST(FitFile, FeFitsStopAtTheFeTolerancesUnlessTheFileSetsThem) {
   const fs::path scene = test::write_tiny_line(test::temp_path("line.toml"));
   const fs::path data = test::temp_path("fx.csv");
@@ -103,11 +103,14 @@ TEST(FitFile, FeFitsStopAtTheFeTolerancesUnlessTheFileSetsThem) {
   EXPECT_EQ(fe.settings.function_tolerance, 1e-9);
   EXPECT_EQ(fe.settings.parameter_tolerance, 1e-8);
   EXPECT_EQ(fe.settings.gradient_tolerance, 1e-10);
-  std::ofstream(f) << fit_text(scene, data, "function_tolerance = 1e-12\n");
+  EXPECT_EQ(fe.settings.offset_tolerance, 1e-3);
+  std::ofstream(f) << fit_text(scene, data, "function_tolerance = 1e-12\noffset_tolerance = 0.0\n");
   const auto stated = inverse::read_fit_file(f.string());
   EXPECT_EQ(stated.settings.function_tolerance, 1e-12);
   EXPECT_EQ(stated.settings.parameter_tolerance, 1e-8);
+  EXPECT_EQ(stated.settings.offset_tolerance, 0.0);
   EXPECT_EQ(inverse::FitSettings{}.function_tolerance, 1e-14);  // material-point fits keep theirs
+  EXPECT_EQ(inverse::FitSettings{}.offset_tolerance, 0.0);
 }
 
 }  // namespace
