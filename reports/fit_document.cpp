@@ -452,6 +452,9 @@ void add_singular_values(Document& d, const FitRecord& rec) {
   d.table(t);
   d.para({{"Singular values of the Jacobian scaled by the parameter magnitudes (relative sensitivities). Condition number " +
            fmt(rec.uncertainty.condition_number, 4) + ". A singular value near zero marks a parameter combination the experiments cannot see."}});
+  if (std::isfinite(rec.uncertainty.relative_offset))
+    d.para({{"Relative offset at the solution " + fmt(rec.uncertainty.relative_offset, 3) +
+             ": a Gauss-Newton step from the solution would move no parameter inside its bounds by more than the square root of their number times this, in standard errors."}});
 }
 
 void add_files(Document& d, const FitReportContent& c) {

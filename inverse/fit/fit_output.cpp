@@ -52,6 +52,7 @@ FitRecord::UncertaintySummary record_uncertainty(const Uncertainty& u) {
   s.t_quantile_975 = u.t_quantile;
   s.singular_values_scaled = u.singular_values;
   s.condition_number = u.condition_number;
+  s.relative_offset = u.relative_offset;
   return s;
 }
 

@@ -44,6 +44,7 @@ json uncertainty_json(const FitRecord::UncertaintySummary& u) {
   json uj{{"sse", number_or_null(u.sse)}, {"sigma2", number_or_null(u.sigma2)},
           {"t_quantile_975", number_or_null(u.t_quantile_975)}, {"singular_values_scaled", numbers_json(u.singular_values_scaled)},
           {"condition_number", number_or_null(u.condition_number)}};
+  if (std::isfinite(u.relative_offset)) uj["relative_offset"] = u.relative_offset;
   if (u.residuals) uj["residuals"] = *u.residuals;
   if (u.parameters) uj["parameters"] = *u.parameters;
   if (u.dof) uj["dof"] = *u.dof;
@@ -295,6 +296,7 @@ void read_uncertainty(const Reader& r, const json& j, FitRecord& rec) {
   s.sigma2 = r.number(*u, "sigma2", at);
   s.t_quantile_975 = r.number(*u, "t_quantile_975", at);
   s.condition_number = r.number(*u, "condition_number", at);
+  if (member(*u, "relative_offset")) s.relative_offset = r.number(*u, "relative_offset", at);
   s.singular_values_scaled = r.numbers(*u, "singular_values_scaled", at);
 }
 

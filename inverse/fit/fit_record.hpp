@@ -42,6 +42,7 @@ struct FitRecord {
   struct UncertaintySummary {
     std::optional<int> residuals, parameters, dof;
     double sse = kNaN, sigma2 = kNaN, t_quantile_975 = kNaN, condition_number = kNaN;
+    double relative_offset = kNaN;  // at the solution (absent from older records)
     std::vector<double> singular_values_scaled;
   };
   // per_experiment[i]: the fit of one experiment alone (conflicts.hpp).

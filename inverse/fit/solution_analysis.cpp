@@ -3,11 +3,13 @@
 #include "forward/io/input_error.hpp"
 #include "inverse/fit/ceres_cost.hpp"
 #include "inverse/fit/fit_assessment.hpp"
+#include "inverse/fit/relative_offset.hpp"
 
 #include <ceres/ceres.h>
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 namespace spifit::inverse {
@@ -24,6 +26,37 @@ bool evaluate_residuals(const FitProblem& fp, const std::vector<double>& interna
   }
   return true;
 }
+
+namespace {
+
+// A step from the solution larger than this many standard errors: the optimiser stopped short.
+constexpr double kUnconvergedStep = 0.1;
+
+// The relative offset at the solution over the parameters inside their bounds (one on a bound is
+// held there by it, and the step would leave the box), with a warning where the Gauss-Newton step
+// left would move one of them by more than a tenth of its standard error.
+void check_convergence(const ParameterSet& ps, const std::vector<double>& values, const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
+                       Uncertainty* u) {
+  std::vector<Eigen::Index> inside;
+  for (int k = 0; k < ps.num_free(); ++k)
+    if (bound_side(ps.specs()[ps.free_indices()[k]], values[k]) == 0) inside.push_back(k);
+  if (inside.empty()) return;
+  Eigen::MatrixXd Ji(J.rows(), static_cast<Eigen::Index>(inside.size()));
+  for (std::size_t c = 0; c < inside.size(); ++c) Ji.col(static_cast<Eigen::Index>(c)) = J.col(inside[c]);
+  const RelativeOffset o = relative_offset(Ji, r);
+  u->relative_offset = o.offset;
+  u->offset_step_bound = o.step_bound();
+  if (std::isfinite(o.offset) && o.step_bound() > kUnconvergedStep) {
+    char m[320];
+    std::snprintf(m, sizeof m,
+                  "the optimiser stopped short of the least-squares solution: a Gauss-Newton step from here would still move a parameter by up to "
+                  "%.2g standard errors (relative offset %.2g); allow more iterations or tighter tolerances",
+                  o.step_bound(), o.offset);
+    u->warnings.push_back(m);
+  }
+}
+
+}  // namespace
 
 void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int threads, FitResult* out_ptr) {
   FitResult& out = *out_ptr;
@@ -69,6 +102,7 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
                              "): the data push it further, or it is poorly determined; its interval is not meaningful.");
       }
     }
+    check_convergence(ps, out.values, J, r, &u);
     out.experiment_costs.clear();
     std::vector<int> rows;
     for (const auto& e : fp.experiments) rows.push_back(e->num_residuals());

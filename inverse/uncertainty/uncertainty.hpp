@@ -21,6 +21,11 @@ struct Uncertainty {
   double condition_number = 0.0;
   std::vector<bool> identifiable;
   std::vector<std::string> warnings;      // plain words
+  // The relative offset at the solution over the parameters inside their bounds
+  // (inverse/fit/relative_offset.hpp; NaN where it says nothing), and the Gauss-Newton step it
+  // bounds in standard errors: how far the optimiser stopped from the least-squares solution.
+  double relative_offset = std::numeric_limits<double>::quiet_NaN();
+  double offset_step_bound = std::numeric_limits<double>::quiet_NaN();
 };
 
 // J: m x p Jacobian of the conditioned residuals w.r.t. the physical parameter values.

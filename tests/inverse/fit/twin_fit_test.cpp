@@ -180,6 +180,27 @@ TEST(TwinFit, RelativeOffsetStopsWithinAHundredthOfAStandardError) {
   }
 }
 
+// The same noisy twin stopped after two iterations: the fit says that it stopped short (the
+// Gauss-Newton step left, in standard errors, from the relative offset at the solution), where the
+// converged fit has an offset below 1e-6 and no such warning.
+TEST(TwinFit, AFitStoppedShortSaysSo) {
+  TwinDir d;
+  for (const char* a : {"00", "45", "90"})
+    d.synth(std::string("experiments/aa3003o/scenes/tensile_") + a + ".toml", "materials/aa3003o_c2.toml", std::string("t") + a + ".csv", 2.0, 11);
+  d.synth("experiments/aa3003o/scenes/shear_00.toml", "materials/aa3003o_c2.toml", "s.csv", 2.0, 12);
+  const auto stopped_short = [](const inverse::FitResult& r) {
+    for (const auto& w : r.uncertainty.warnings)
+      if (w.find("stopped short of the least-squares solution") != std::string::npos) return true;
+    return false;
+  };
+  const auto converged = inverse::fit_with_ceres(inverse::read_fit_file(d.write("fit.toml", classic_fit_text("", 2.0, true, false))));
+  EXPECT_LT(converged.uncertainty.relative_offset, 1e-6);
+  EXPECT_FALSE(stopped_short(converged));
+  const auto early = inverse::fit_with_ceres(inverse::read_fit_file(d.write("early.toml", classic_fit_text("max_iterations = 2\n", 2.0, true, false))));
+  EXPECT_GT(early.uncertainty.offset_step_bound, 0.1);
+  EXPECT_TRUE(stopped_short(early)) << early.uncertainty.relative_offset;
+}
+
 // r-values alone say nothing about Swift: the fit reports K, eps0, n as not identifiable.
 TEST(TwinFit, RValuesAloneCannotIdentifySwift) {
   TwinDir d;
