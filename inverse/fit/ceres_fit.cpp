@@ -32,8 +32,8 @@ class CostHistory final : public ceres::IterationCallback {
   FitProgress* progress_;
 };
 
-// Ends the fit once the relative offset at an accepted point is at most the tolerance
-// (relative_offset.hpp). The residuals and Jacobian at that point are those Ceres has just
+// Ends the fit once the relative offset at an accepted point, over the parameters inside their
+// bounds, is at most the tolerance (relative_offset.hpp). The residuals and Jacobian at that point are those Ceres has just
 // asked for: an FE run is not made again (SceneRuns keeps each point's run). Its evaluations count
 // with the fit's (`evaluations`), as the experiments count them.
 class OffsetStop final : public ceres::IterationCallback {
@@ -48,7 +48,9 @@ class OffsetStop final : public ceres::IterationCallback {
     Eigen::MatrixXd J;
     Eigen::VectorXd r;
     if (!evaluate(p, &J, &r)) return ceres::SOLVER_CONTINUE;
-    last_ = relative_offset(J, r);
+    std::vector<double> values;
+    for (int k = 0; k < p; ++k) values.push_back(fp_.parameters->to_physical(k, (*x_)[static_cast<std::size_t>(k)]));
+    last_ = offset_inside_bounds(*fp_.parameters, values, J, r);
     if (!(last_.offset <= tolerance_)) return ceres::SOLVER_CONTINUE;
     stopped_ = true;
     return ceres::SOLVER_TERMINATE_SUCCESSFULLY;

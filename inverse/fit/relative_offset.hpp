@@ -17,9 +17,15 @@
 
 namespace spifit::inverse {
 
+// The residuals' scatter |Q2^T r| / sqrt(m - p) below which the criterion says nothing: the
+// residuals are conditioned (by a stated noise, or by the range of the measured values), so a
+// scatter of 1e-6 is a millionth of the noise, or of the range: an exact fit.
+constexpr double kMinimumScatter = 1e-6;
+
 struct RelativeOffset {
-  // NaN where the criterion says nothing: no more residuals than J's rank, a residual that lies
-  // in the tangent plane entirely (the model fits the data exactly), or a non-finite J or r.
+  // NaN where the criterion says nothing: no more residuals than J's rank, residuals without
+  // scatter (below kMinimumScatter, or in the tangent plane entirely: the model fits the data
+  // exactly), or a non-finite J or r.
   double offset = std::numeric_limits<double>::quiet_NaN();
   int rank = 0;  // J's numerical rank (p where the parameters are identifiable)
   // The Gauss-Newton step's bound in standard errors: sqrt(rank) * offset.

@@ -32,18 +32,12 @@ namespace {
 // A step from the solution larger than this many standard errors: the optimiser stopped short.
 constexpr double kUnconvergedStep = 0.1;
 
-// The relative offset at the solution over the parameters inside their bounds (one on a bound is
-// held there by it, and the step would leave the box), with a warning where the Gauss-Newton step
-// left would move one of them by more than a tenth of its standard error.
+// The relative offset at the solution over the parameters inside their bounds, with a warning
+// where the Gauss-Newton step left would move one of them by more than a tenth of its standard
+// error.
 void check_convergence(const ParameterSet& ps, const std::vector<double>& values, const Eigen::MatrixXd& J, const Eigen::VectorXd& r,
                        Uncertainty* u) {
-  std::vector<Eigen::Index> inside;
-  for (int k = 0; k < ps.num_free(); ++k)
-    if (bound_side(ps.specs()[ps.free_indices()[k]], values[k]) == 0) inside.push_back(k);
-  if (inside.empty()) return;
-  Eigen::MatrixXd Ji(J.rows(), static_cast<Eigen::Index>(inside.size()));
-  for (std::size_t c = 0; c < inside.size(); ++c) Ji.col(static_cast<Eigen::Index>(c)) = J.col(inside[c]);
-  const RelativeOffset o = relative_offset(Ji, r);
+  const RelativeOffset o = offset_inside_bounds(ps, values, J, r);
   u->relative_offset = o.offset;
   u->offset_step_bound = o.step_bound();
   if (std::isfinite(o.offset) && o.step_bound() > kUnconvergedStep) {
@@ -57,6 +51,16 @@ void check_convergence(const ParameterSet& ps, const std::vector<double>& values
 }
 
 }  // namespace
+
+RelativeOffset offset_inside_bounds(const ParameterSet& ps, const std::vector<double>& values, const Eigen::MatrixXd& J, const Eigen::VectorXd& r) {
+  std::vector<Eigen::Index> inside;
+  for (int k = 0; k < ps.num_free(); ++k)
+    if (bound_side(ps.specs()[ps.free_indices()[k]], values[k]) == 0) inside.push_back(k);
+  if (inside.empty()) return {};
+  Eigen::MatrixXd Ji(J.rows(), static_cast<Eigen::Index>(inside.size()));
+  for (std::size_t c = 0; c < inside.size(); ++c) Ji.col(static_cast<Eigen::Index>(c)) = J.col(inside[c]);
+  return relative_offset(Ji, r);
+}
 
 void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int threads, FitResult* out_ptr) {
   FitResult& out = *out_ptr;

@@ -3,6 +3,7 @@
 // card, the Jacobian-based uncertainty and the per-experiment costs; and the conditioned
 // residuals at a parameter vector.
 #include "inverse/fit/fit_result.hpp"
+#include "inverse/fit/relative_offset.hpp"
 
 #include <Eigen/Core>
 
@@ -13,6 +14,11 @@ namespace spifit::inverse {
 // Fills values, card, Jacobian-based uncertainty and per-experiment costs at the internal
 // point x (shared by the Ceres and NLopt drivers).
 void analyse_solution(const FitProblem& problem, const std::vector<double>& x, int threads, FitResult* out);
+
+// The relative offset over the free parameters inside their bounds (values: physical; J: the
+// Jacobian's columns in the free parameters' order, any scaling): one held at a bound stays
+// there, and the step would leave the box.
+RelativeOffset offset_inside_bounds(const ParameterSet& ps, const std::vector<double>& values, const Eigen::MatrixXd& J, const Eigen::VectorXd& r);
 
 // Conditioned residuals at an internal parameter vector (false: a forward run failed).
 bool evaluate_residuals(const FitProblem& problem, const std::vector<double>& internal, Eigen::VectorXd* residuals);

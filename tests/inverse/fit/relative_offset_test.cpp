@@ -58,13 +58,19 @@ TEST(RelativeOffset, BoundsTheGaussNewtonStepInStandardErrors) {
   EXPECT_LT(relative_offset(J, r_star).offset, 1e-12);
 }
 
-// Where it says nothing: as many residuals as parameters, and data the model fits exactly.
+// Where it says nothing: as many residuals as parameters, data the model fits exactly, residuals
+// of round-off size, non-finite entries.
 TEST(RelativeOffset, UndefinedWithoutResidualScatter) {
   Eigen::MatrixXd J(2, 2);
   J << 1, 0, 0, 1;
   EXPECT_TRUE(std::isnan(relative_offset(J, Eigen::Vector2d(0.1, 0.2)).offset));
   Eigen::MatrixXd K = Eigen::MatrixXd::Ones(3, 1);
   EXPECT_TRUE(std::isnan(relative_offset(K, Eigen::Vector3d(0.5, 0.5, 0.5)).offset));
+  // Residuals that are round-off (a noise-free fit at its solution): both parts are noise.
+  Eigen::MatrixXd L(4, 1);
+  L << 1, 2, 3, 4;
+  EXPECT_TRUE(std::isnan(relative_offset(L, Eigen::Vector4d(3e-9, -1e-9, 2e-9, 1e-9)).offset));
+  EXPECT_TRUE(std::isfinite(relative_offset(L, Eigen::Vector4d(3e-3, -1e-3, 2e-3, 1e-3)).offset));
   Eigen::MatrixXd bad = Eigen::MatrixXd::Ones(3, 1);
   bad(1, 0) = std::nan("");
   EXPECT_TRUE(std::isnan(relative_offset(bad, Eigen::Vector3d(0.5, 0.1, 0.5)).offset));

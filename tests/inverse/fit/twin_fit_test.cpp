@@ -180,6 +180,28 @@ TEST(TwinFit, RelativeOffsetStopsWithinAHundredthOfAStandardError) {
   }
 }
 
+// With swift.K held at a lower bound above its best value, Ceres's projected steps stall: it ends
+// on its parameter tolerance where the five parameters inside their bounds could still move by
+// several standard errors. The check at the solution, over those five, says so (and the card is not
+// usable anyway: a bound sets K).
+TEST(TwinFit, AStallAtABoundIsReported) {
+  TwinDir d;
+  for (const char* a : {"00", "45", "90"})
+    d.synth(std::string("experiments/aa3003o/scenes/tensile_") + a + ".toml", "materials/aa3003o_c2.toml", std::string("t") + a + ".csv", 2.0, 11);
+  d.synth("experiments/aa3003o/scenes/shear_00.toml", "materials/aa3003o_c2.toml", "s.csv", 2.0, 12);
+  std::string text = classic_fit_text("offset_tolerance = 1e-3\n", 2.0, true, false);
+  const std::string k = "[parameters.\"swift.K\"]\ninitial = 234.0\nlower = 50.0";
+  ASSERT_NE(text.find(k), std::string::npos);
+  text.replace(text.find(k), k.size(), "[parameters.\"swift.K\"]\ninitial = 234.0\nlower = 200.0");
+  const auto r = inverse::fit_with_ceres(inverse::read_fit_file(d.write("bound.toml", text)));
+  EXPECT_NEAR(r.values[3], 200.0, 1e-6);
+  EXPECT_EQ(r.termination.find("relative offset"), std::string::npos) << r.termination;
+  EXPECT_GT(r.uncertainty.offset_step_bound, 1.0) << r.uncertainty.relative_offset;
+  bool warned = false;
+  for (const auto& w : r.uncertainty.warnings) warned = warned || w.find("stopped short") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 // The same noisy twin stopped after two iterations: the fit says that it stopped short (the
 // Gauss-Newton step left, in standard errors, from the relative offset at the solution), where the
 // converged fit has an offset below 1e-6 and no such warning.
