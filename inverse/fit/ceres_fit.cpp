@@ -33,9 +33,10 @@ class CostHistory final : public ceres::IterationCallback {
 };
 
 // Ends the fit once the relative offset at an accepted point, over the parameters inside their
-// bounds, is at most the tolerance (relative_offset.hpp). The residuals and Jacobian at that point are those Ceres has just
-// asked for: an FE run is not made again (SceneRuns keeps each point's run). Its evaluations count
-// with the fit's (`evaluations`), as the experiments count them.
+// bounds, is at most the tolerance (relative_offset.hpp). The residuals and Jacobian at that
+// point are those Ceres has just asked for: an FE run is not made again (SceneRuns keeps each
+// point's run). Its evaluations count with the fit's (`evaluations`), as the experiments count
+// them.
 class OffsetStop final : public ceres::IterationCallback {
  public:
   OffsetStop(const FitProblem& fp, const std::vector<double>* x, double tolerance, std::atomic<long>* evaluations)
@@ -59,7 +60,7 @@ class OffsetStop final : public ceres::IterationCallback {
   std::string message() const {
     char m[256];
     std::snprintf(m, sizeof m,
-                  "CONVERGENCE: relative offset %.3g <= %.3g (the Gauss-Newton step left is below %.2g standard errors of any parameter)",
+                  "CONVERGENCE: relative offset %.3g <= %.3g (the Gauss-Newton step left is below %.2g standard errors of any parameter inside its bounds)",
                   last_.offset, tolerance_, last_.step_bound());
     return m;
   }
