@@ -455,7 +455,8 @@ void ShellQ4::enable_sensitivities() {
   for (auto& s : sections_) s.enable_sensitivities();
 }
 
-ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load, int count) {
+ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load, int count,
+                                     const NarrowLaw* narrow) {
   using material::kSensitivitySlots;
   using Slots = Eigen::Matrix<double, 6, kSensitivitySlots>;
   const SensDofs dp = du ? director_variable_derivatives(d, *du) : SensDofs::Zero();
@@ -479,7 +480,7 @@ ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d,
     Vec6S s6m;
     ShellSection& section = sections_[q];
     if (!du && count + 3 <= kSensitivitySlots) {
-      const SectionStatus ss = section.pseudo_resultants(law, emv, kmv, count, &s6m);
+      const SectionStatus ss = section.pseudo_resultants(law, narrow, emv, kmv, count, &s6m);
       if (!ss.ok) return point_failure(static_cast<int>(q), ss);
     } else if (du && !load && section.linearised()) {
       section.advance_sensitivities(em, km);

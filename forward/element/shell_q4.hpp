@@ -106,8 +106,9 @@ class ShellQ4 {
   // parameters in slots 0 .. count - 1; with room for three more slots, the pseudo-load pass
   // linearises the layers in their strains (ShellSection::pseudo_resultants) and the pass with du
   // that follows it only advances their derivatives: one Jet integration per increment, not two.
+  // narrow (optional): `law` with fewer slots, for that pass when they suffice.
   ElementStatus sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load,
-                              int count = material::kSensitivitySlots);
+                              int count = material::kSensitivitySlots, const NarrowLaw* narrow = nullptr);
   // Committed state of the four sections (checkpoints; ShellSection::save_state).
   void save_state(io::BinaryWriter& w) const;
   void load_state(io::BinaryReader& r);

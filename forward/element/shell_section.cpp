@@ -109,9 +109,11 @@ SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S
   return status;
 }
 
-SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant) {
+SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const NarrowLaw* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant) {
   if (count < 0 || count + 3 > material::kSensitivitySlots) throw std::logic_error("ShellSection::pseudo_resultants: no room for the strain's slots");
-  const SectionStatus status = integrate_sensitivities(law, e.cast<Sens>(), kappa.cast<Sens>(), count, resultant);
+  const SectionStatus status = narrow && count + 3 <= material::kNarrowSlots
+                                   ? integrate_layers(*narrow, e.cast<Sens>(), kappa.cast<Sens>(), count, resultant)
+                                   : integrate_sensitivities(law, e.cast<Sens>(), kappa.cast<Sens>(), count, resultant);
   sens_trial_set_ = false;  // the linearisation is not a trial state: advance_sensitivities() makes one
   linear_count_ = status.ok ? count : -1;
   for (int i = 0; i < 6; ++i) (*resultant)(i).v.tail(material::kSensitivitySlots - count).setZero();
@@ -126,11 +128,12 @@ void ShellSection::advance_sensitivities(const Vec3S& e, const Vec3S& kappa) {
     const double z = rule_->zeta[l] * 0.5 * h_;
     Eigen::Matrix<double, 3, material::kSensitivitySlots> de;
     for (int i = 0; i < 3; ++i) de.row(i) = material::derivatives_of(e(i)) + z * material::derivatives_of(kappa(i));
+    // Only the parameters' slots 0 .. q - 1 are nonzero, before (with the strain's q .. q + 2) and
+    // after; the strains' derivatives have none beyond them.
     auto advance = [&](Sens& x) {
-      const material::SensitivityRow d = material::derivatives_of(x);
-      material::SensitivityRow out = d;
-      out.segment(q, 3).setZero();
-      for (int i = 0; i < 3; ++i) out += d(q + i) * de.row(i);
+      material::SensitivityRow out = material::SensitivityRow::Zero();
+      out.head(q) = x.v.head(q).transpose();
+      for (int i = 0; i < 3; ++i) out.head(q) += x.v(q + i) * de.row(i).head(q);
       x.v = out.transpose();
     };
     material::MaterialState<Sens, 3>& s = sens_trial_[l].state;
@@ -151,50 +154,92 @@ void ShellSection::advance_sensitivities(const Vec3S& e, const Vec3S& kappa) {
   linear_count_ = -1;
 }
 
+namespace {
+
+// A state's Jets through f, field by field.
+template <typename U, typename T, typename F>
+material::MaterialState<U, 3> mapped_state(const material::MaterialState<T, 3>& s, F f) {
+  material::MaterialState<U, 3> o;
+  for (int i = 0; i < 3; ++i) {
+    o.stress(i) = f(s.stress(i));
+    o.plastic_strain(i) = f(s.plastic_strain(i));
+    o.back_stress(i) = f(s.back_stress(i));
+  }
+  o.back_stress_zz = f(s.back_stress_zz);
+  o.eqps = f(s.eqps);
+  o.plastic_work = f(s.plastic_work);
+  o.flow_stress = f(s.flow_stress);
+  return o;
+}
+
+}  // namespace
+
 SectionStatus ShellSection::integrate_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, int strain_slot, Vec6S* resultant) {
+  return integrate_layers(law, e, kappa, strain_slot, resultant);
+}
+
+template <typename J>
+SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>& law, const Vec3S& e_full, const Vec3S& kappa_full, int strain_slot,
+                                             Vec6S* resultant) {
   if (!sensitivities_enabled()) throw std::logic_error("ShellSection::update_sensitivities before enable_sensitivities");
+  constexpr int N = J::DIMENSION;
+  using VecJ = Eigen::Matrix<J, 3, 1>;
+  const auto narrow = [](const Sens& x) { return material::narrowed<N>(x); };
+  const auto widen = [](const J& x) { return material::widened<N>(x); };
+  const auto with = [](double v, const Eigen::Matrix<double, 1, N>& d) {
+    J out(v);
+    out.v = d.transpose();
+    return out;
+  };
   SectionStatus status;
-  resultant->setZero();
-  const Sens h = material::with_derivatives(h_, dh_);
+  Eigen::Matrix<J, 6, 1> sum = Eigen::Matrix<J, 6, 1>::Zero();
+  VecJ e, kappa;
+  for (int i = 0; i < 3; ++i) {
+    e(i) = narrow(e_full(i));
+    kappa(i) = narrow(kappa_full(i));
+  }
+  const J h = narrow(material::with_derivatives(h_, dh_));
   for (std::size_t l = 0; l < points_.size(); ++l) {
-    const Sens z = (rule_->zeta[l] * 0.5) * h;
+    const J z = (rule_->zeta[l] * 0.5) * h;
     const double w = rule_->weight[l] * 0.5 * h0_;
-    Vec3S green = e + z * kappa;
+    VecJ green = e + z * kappa;
     if (strain_slot >= 0)
       for (int i = 0; i < 3; ++i) green(i).v(strain_slot + i) += 1.0;
     // eps and d eps / d E with their derivatives by the chain rule through the closed-form first
     // and second derivatives of the logarithm.
     Vec3 gv;
-    Eigen::Matrix<double, 3, material::kSensitivitySlots> gd;
+    Eigen::Matrix<double, 3, N> gd;
     for (int i = 0; i < 3; ++i) {
       gv(i) = green(i).a;
-      gd.row(i) = material::derivatives_of(green(i));
+      gd.row(i) = green(i).v.transpose();
     }
     const LogStrain ls = log_strain_with_derivatives(gv, true);
-    Vec3S eps;
-    Eigen::Matrix<Sens, 3, 3> first;  // d eps_i / d E_j
+    VecJ eps;
+    Eigen::Matrix<J, 3, 3> first;  // d eps_i / d E_j
     for (int i = 0; i < 3; ++i) {
-      eps(i) = material::with_derivatives(ls.value(i), ls.first.row(i) * gd);
-      for (int j = 0; j < 3; ++j) first(i, j) = material::with_derivatives(ls.first(i, j), ls.second[static_cast<std::size_t>(i)].row(j) * gd);
+      eps(i) = with(ls.value(i), ls.first.row(i) * gd);
+      for (int j = 0; j < 3; ++j) first(i, j) = with(ls.first(i, j), ls.second[static_cast<std::size_t>(i)].row(j) * gd);
     }
-    Vec3S eps0;
-    for (int i = 0; i < 3; ++i) eps0(i) = material::with_derivatives(eps_[l](i), material::derivatives_of(sens_[l].eps(i)));
-    const material::MaterialState<Sens, 3> s0 = material::seeded_state(points_[l].committed(), sens_[l].state);
-    material::MaterialState<Sens, 3> s1;
-    const material::UpdateResult r = law.integrate(s0, Vec3S(eps - eps0), s1, nullptr);
+    VecJ eps0;
+    for (int i = 0; i < 3; ++i) eps0(i) = narrow(material::with_derivatives(eps_[l](i), material::derivatives_of(sens_[l].eps(i))));
+    const material::MaterialState<J, 3> s0 = material::seeded_state<J>(points_[l].committed(), sens_[l].state);
+    material::MaterialState<J, 3> s1;
+    const material::UpdateResult r = law.integrate(s0, VecJ(eps - eps0), s1, nullptr);
     if (!r.ok()) {
       status.ok = false;
       status.layer = static_cast<int>(l);
       status.reason = std::string("sensitivities: ") + r.reason;
       status.suggested_scale = r.suggested_scale;
+      resultant->setZero();
       return status;
     }
-    const Vec3S stress = first.transpose() * s1.stress;
-    resultant->head<3>() += w * stress;
-    resultant->tail<3>() += (w * z) * stress;
-    sens_trial_[l].state = s1;
-    sens_trial_[l].eps = eps;
+    const VecJ stress = first.transpose() * s1.stress;
+    sum.template head<3>() += w * stress;
+    sum.template tail<3>() += (w * z) * stress;
+    sens_trial_[l].state = mapped_state<Sens>(s1, widen);
+    for (int i = 0; i < 3; ++i) sens_trial_[l].eps(i) = widen(eps(i));
   }
+  for (int i = 0; i < 6; ++i) (*resultant)(i) = widen(sum(i));
   return status;
 }
 

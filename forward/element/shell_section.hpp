@@ -34,6 +34,7 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Sens = material::SensitivityScalar;
 using SensLaw = material::ReturnMapping<Sens, 3>;
+using NarrowLaw = material::ReturnMapping<material::NarrowScalar, 3>;  // the same law, fewer slots
 using Vec3S = Eigen::Matrix<Sens, 3, 1>;
 using Vec6S = Eigen::Matrix<Sens, 6, 1>;
 
@@ -95,8 +96,9 @@ class ShellSection {
   // the derivatives with respect to the layer's Green-Lagrange strain (count + 3 <=
   // kSensitivitySlots), so that advance_sensitivities() gives the layers' trial derivatives for
   // any strain derivatives without integrating again. The resultant's slots from count on are
-  // zero.
-  SectionStatus pseudo_resultants(const SensLaw& law, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant);
+  // zero. With `narrow` (the law with kNarrowSlots slots) and count + 3 <= kNarrowSlots, the pass
+  // runs on the narrower Jets: the same derivatives to round-off, at less cost.
+  SectionStatus pseudo_resultants(const SensLaw& law, const NarrowLaw* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant);
   // After pseudo_resultants() at the same strains: the layers' trial derivatives for strains with
   // the derivatives of e and kappa (what update_sensitivities(law, e, kappa, ...) gives, to
   // round-off: the Jet pass is linear in its seeds).
@@ -148,6 +150,9 @@ class ShellSection {
   void commit_sensitivities();
   // update_sensitivities' pass over the layers; strain_slot >= 0 seeds each layer's strain there.
   SectionStatus integrate_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, int strain_slot, Vec6S* resultant);
+  // Its body, on the Jets of `law` (the slots past theirs come back zero).
+  template <typename J>
+  SectionStatus integrate_layers(const material::ReturnMapping<J, 3>& law, const Vec3S& e, const Vec3S& kappa, int strain_slot, Vec6S* resultant);
 };
 
 }  // namespace spifit::element

@@ -31,6 +31,21 @@ struct MaterialParams {
   // dX = CA (sigma - X) dp / sigma_F - GA X dp.
   Kinematic<T> kinematic;
 
+  // Every parameter through f (the laws and flags kept), e.g. to fewer derivative slots.
+  template <typename U, typename Fn>
+  MaterialParams<U> map(Fn f) const {
+    MaterialParams<U> o;
+    o.E = f(E); o.nu = f(nu);
+    o.F = f(F); o.G = f(G); o.H = f(H); o.L = f(L); o.M = f(M); o.N = f(N);
+    o.yield.law = yield.law;
+    for (int i = 0; i < kMaxYieldCoefficients; ++i) o.yield[i] = f(yield[i]);
+    o.plastic = plastic; o.hardening.law = hardening.law;
+    for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = f(hardening[i]);
+    o.kinematic.law = kinematic.law;
+    for (int i = 0; i < kMaxKinematicCoefficients; ++i) o.kinematic[i] = f(kinematic[i]);
+    return o;
+  }
+
   template <typename U>
   MaterialParams<U> cast() const {
     MaterialParams<U> o;

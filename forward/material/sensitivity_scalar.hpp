@@ -27,17 +27,51 @@ inline SensitivityScalar with_derivatives(double v, const SensitivityRow& d) {
 }
 inline SensitivityRow derivatives_of(const SensitivityScalar& s) { return s.v.transpose(); }
 
+// A narrower scalar for the pass that costs most, the sections' return mapping, when a run's
+// parameters and a layer's three strain slots fit in fewer slots (one parameter): the Jet
+// arithmetic scales with the slots. Slot k of a narrowed value is slot k of the full one; the
+// slots beyond are zero on the way back.
+constexpr int kNarrowSlots = 4;
+using NarrowScalar = ceres::Jet<double, kNarrowSlots>;
+
+template <int N>
+ceres::Jet<double, N> narrowed(const SensitivityScalar& s) {
+  static_assert(N <= kSensitivitySlots);
+  ceres::Jet<double, N> out(s.a);
+  out.v = s.v.template head<N>();
+  return out;
+}
+template <int N>
+SensitivityScalar widened(const ceres::Jet<double, N>& s) {
+  static_assert(N <= kSensitivitySlots);
+  SensitivityScalar out(s.a);
+  out.v.template head<N>() = s.v;
+  return out;
+}
+template <>
+inline SensitivityScalar narrowed<kSensitivitySlots>(const SensitivityScalar& s) { return s; }
+template <>
+inline SensitivityScalar widened<kSensitivitySlots>(const SensitivityScalar& s) { return s; }
+
+// The seeded parameters with their first N slots.
+inline MaterialParams<NarrowScalar> narrowed_params(const MaterialParams<SensitivityScalar>& p) {
+  return p.map<NarrowScalar>([](const SensitivityScalar& x) { return narrowed<kNarrowSlots>(x); });
+}
+
 // A state whose values are those of `values` and whose derivatives are those of `sens` (the
-// committed state's sensitivities, kept beside the double state). The kept flow stress is
-// dropped (negative), so that the law recomputes it from eqps with its derivatives.
-template <int Dim>
-MaterialState<SensitivityScalar, Dim> seeded_state(const MaterialState<double, Dim>& values, const MaterialState<SensitivityScalar, Dim>& sens) {
-  const auto at = [](double v, const SensitivityScalar& d) {
-    SensitivityScalar out(v);
-    out.v = d.v;
+// committed state's sensitivities, kept beside the double state), in the first slots of the Jet
+// J (all of them by default). The kept flow stress is dropped (negative), so that the law
+// recomputes it from eqps with its derivatives.
+template <typename J = ceres::Jet<double, kSensitivitySlots>, int Dim>
+MaterialState<J, Dim> seeded_state(const MaterialState<double, Dim>& values, const MaterialState<ceres::Jet<double, kSensitivitySlots>, Dim>& sens) {
+  constexpr int N = J::DIMENSION;
+  static_assert(N <= kSensitivitySlots);
+  const auto at = [](double v, const ceres::Jet<double, kSensitivitySlots>& d) {
+    J out(v);
+    out.v = d.v.template head<N>();
     return out;
   };
-  MaterialState<SensitivityScalar, Dim> s;
+  MaterialState<J, Dim> s;
   for (int i = 0; i < Dim; ++i) {
     s.stress(i) = at(values.stress(i), sens.stress(i));
     s.plastic_strain(i) = at(values.plastic_strain(i), sens.plastic_strain(i));
@@ -46,7 +80,7 @@ MaterialState<SensitivityScalar, Dim> seeded_state(const MaterialState<double, D
   s.back_stress_zz = at(values.back_stress_zz, sens.back_stress_zz);
   s.eqps = at(values.eqps, sens.eqps);
   s.plastic_work = at(values.plastic_work, sens.plastic_work);
-  s.flow_stress = SensitivityScalar(-1.0);
+  s.flow_stress = J(-1.0);
   return s;
 }
 
