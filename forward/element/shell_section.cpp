@@ -243,21 +243,44 @@ SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>
   return status;
 }
 
-// The thickness at constant volume and the layers' reference log strains with its new lever
-// arm, as commit() computes their values, here with their derivatives.
+// The committed derivatives: the layers' trial ones, and the thickness's and the layers'
+// reference log strains with the new lever arm.
 void ShellSection::commit_sensitivities() {
   if (!sens_trial_set_) throw std::logic_error("a section with sensitivities committed without update_sensitivities");
-  using std::sqrt;
   sens_.swap(sens_trial_);  // the next increment's Jet pass writes every layer's trial derivatives anew
-  const Sens c11 = 1.0 + 2.0 * e_sens_(0), c22 = 1.0 + 2.0 * e_sens_(1);
-  const Sens det = c11 * c22 - e_sens_(2) * e_sens_(2);
-  if (value_of(det) > 0.0) {
-    const Sens h = h0_ / sqrt(det);
-    dh_ = material::derivatives_of(h);
-    for (std::size_t l = 0; l < points_.size(); ++l)
-      sens_[l].eps = log_strain_of_green(Vec3S(e_sens_ + ((rule_->zeta[l] * 0.5) * h) * kappa_sens_));
-  }
+  // On the narrower Jets when the strains' derivatives fit them (a run with one parameter).
+  bool narrow = true;
+  for (int i = 0; i < 3; ++i)
+    narrow = narrow && e_sens_(i).v.tail<material::kSensitivitySlots - material::kNarrowSlots>().isZero(0.0) &&
+             kappa_sens_(i).v.tail<material::kSensitivitySlots - material::kNarrowSlots>().isZero(0.0);
+  if (narrow)
+    commit_thickness<material::NarrowScalar>();
+  else
+    commit_thickness<Sens>();
   sens_trial_set_ = false;
+}
+
+// The thickness at constant volume and the layers' reference log strains with its new lever
+// arm, as commit() computes their values, here with their derivatives on the Jets J.
+template <typename J>
+void ShellSection::commit_thickness() {
+  using std::sqrt;
+  constexpr int N = J::DIMENSION;
+  Eigen::Matrix<J, 3, 1> e, kappa;
+  for (int i = 0; i < 3; ++i) {
+    e(i) = material::narrowed<N>(e_sens_(i));
+    kappa(i) = material::narrowed<N>(kappa_sens_(i));
+  }
+  const J c11 = 1.0 + 2.0 * e(0), c22 = 1.0 + 2.0 * e(1);
+  const J det = c11 * c22 - e(2) * e(2);
+  if (value_of(det) > 0.0) {
+    const J h = h0_ / sqrt(det);
+    dh_ = material::derivatives_of(material::widened<N>(h));
+    for (std::size_t l = 0; l < points_.size(); ++l) {
+      const Eigen::Matrix<J, 3, 1> eps = log_strain_of_green(Eigen::Matrix<J, 3, 1>(e + ((rule_->zeta[l] * 0.5) * h) * kappa));
+      for (int i = 0; i < 3; ++i) sens_[l].eps(i) = material::widened<N>(eps(i));
+    }
+  }
 }
 
 SectionEnergy ShellSection::energy() const {

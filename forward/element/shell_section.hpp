@@ -148,6 +148,8 @@ class ShellSection {
   bool sens_trial_set_ = false;
   int linear_count_ = -1;  // >= 0: the trial derivatives hold pseudo_resultants()'s linearisation
   void commit_sensitivities();
+  template <typename J>
+  void commit_thickness();
   // update_sensitivities' pass over the layers; strain_slot >= 0 seeds each layer's strain there.
   SectionStatus integrate_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, int strain_slot, Vec6S* resultant);
   // Its body, on the Jets of `law` (the slots past theirs come back zero).
