@@ -456,7 +456,7 @@ void ShellQ4::enable_sensitivities() {
 }
 
 ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load, int count,
-                                     const NarrowLaw* narrow) {
+                                     const NarrowLaws* narrow) {
   using material::kSensitivitySlots;
   using Slots = Eigen::Matrix<double, 6, kSensitivitySlots>;
   const SensDofs dp = du ? director_variable_derivatives(d, *du) : SensDofs::Zero();

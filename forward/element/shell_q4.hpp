@@ -108,7 +108,7 @@ class ShellQ4 {
   // that follows it only advances their derivatives: one Jet integration per increment, not two.
   // narrow (optional): `law` with fewer slots, for that pass when they suffice.
   ElementStatus sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load,
-                              int count = material::kSensitivitySlots, const NarrowLaw* narrow = nullptr);
+                              int count = material::kSensitivitySlots, const NarrowLaws* narrow = nullptr);
   // Committed state of the four sections (checkpoints; ShellSection::save_state).
   void save_state(io::BinaryWriter& w) const;
   void load_state(io::BinaryReader& r);

@@ -5,6 +5,7 @@
 
 #include <Eigen/LU>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -109,11 +110,19 @@ SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S
   return status;
 }
 
-SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const NarrowLaw* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant) {
+NarrowLaws::NarrowLaws(const material::MaterialParams<Sens>& law, const material::ReturnMappingOptions& options, int count) {
+  if (count + 3 <= 4)
+    four = std::make_unique<FourSlotLaw>(material::narrowed_params<4>(law), options);
+  else if (count + 3 <= 6)
+    six = std::make_unique<SixSlotLaw>(material::narrowed_params<6>(law), options);
+}
+
+SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const NarrowLaws* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant) {
   if (count < 0 || count + 3 > material::kSensitivitySlots) throw std::logic_error("ShellSection::pseudo_resultants: no room for the strain's slots");
-  const SectionStatus status = narrow && count + 3 <= material::kNarrowSlots
-                                   ? integrate_layers(*narrow, e.cast<Sens>(), kappa.cast<Sens>(), count, resultant)
-                                   : integrate_sensitivities(law, e.cast<Sens>(), kappa.cast<Sens>(), count, resultant);
+  const Vec3S es = e.cast<Sens>(), ks = kappa.cast<Sens>();
+  const SectionStatus status = narrow && narrow->four && count + 3 <= 4  ? integrate_layers(*narrow->four, es, ks, count, resultant)
+                               : narrow && narrow->six && count + 3 <= 6 ? integrate_layers(*narrow->six, es, ks, count, resultant)
+                                                                         : integrate_sensitivities(law, es, ks, count, resultant);
   sens_trial_set_ = false;  // the linearisation is not a trial state: advance_sensitivities() makes one
   linear_count_ = status.ok ? count : -1;
   for (int i = 0; i < 6; ++i) (*resultant)(i).v.tail(material::kSensitivitySlots - count).setZero();
@@ -248,13 +257,15 @@ SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>
 void ShellSection::commit_sensitivities() {
   if (!sens_trial_set_) throw std::logic_error("a section with sensitivities committed without update_sensitivities");
   sens_.swap(sens_trial_);  // the next increment's Jet pass writes every layer's trial derivatives anew
-  // On the narrower Jets when the strains' derivatives fit them (a run with one parameter).
-  bool narrow = true;
+  // On the narrowest Jets that hold the strains' derivatives (those of the parameters).
+  int used = 0;
   for (int i = 0; i < 3; ++i)
-    narrow = narrow && e_sens_(i).v.tail<material::kSensitivitySlots - material::kNarrowSlots>().isZero(0.0) &&
-             kappa_sens_(i).v.tail<material::kSensitivitySlots - material::kNarrowSlots>().isZero(0.0);
-  if (narrow)
-    commit_thickness<material::NarrowScalar>();
+    for (int k = 0; k < material::kSensitivitySlots; ++k)
+      if (e_sens_(i).v(k) != 0.0 || kappa_sens_(i).v(k) != 0.0) used = std::max(used, k + 1);
+  if (used <= 4)
+    commit_thickness<material::FourSlotScalar>();
+  else if (used <= 6)
+    commit_thickness<material::SixSlotScalar>();
   else
     commit_thickness<Sens>();
   sens_trial_set_ = false;

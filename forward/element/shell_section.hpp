@@ -19,6 +19,7 @@
 
 #include <Eigen/Core>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -34,9 +35,19 @@ using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 using Sens = material::SensitivityScalar;
 using SensLaw = material::ReturnMapping<Sens, 3>;
-using NarrowLaw = material::ReturnMapping<material::NarrowScalar, 3>;  // the same law, fewer slots
+using FourSlotLaw = material::ReturnMapping<material::FourSlotScalar, 3>;
+using SixSlotLaw = material::ReturnMapping<material::SixSlotScalar, 3>;
 using Vec3S = Eigen::Matrix<Sens, 3, 1>;
 using Vec6S = Eigen::Matrix<Sens, 6, 1>;
+
+// The seeded law on the narrowest Jets that hold `count` parameters and a layer's three strain
+// slots, for ShellSection::pseudo_resultants (none when it takes all of them).
+struct NarrowLaws {
+  NarrowLaws() = default;
+  NarrowLaws(const material::MaterialParams<Sens>& law, const material::ReturnMappingOptions& options, int count);
+  std::unique_ptr<FourSlotLaw> four;
+  std::unique_ptr<SixSlotLaw> six;
+};
 
 // Energies per unit reference area of a section's committed state [N mm / mm^2].
 struct SectionEnergy {
@@ -96,9 +107,9 @@ class ShellSection {
   // the derivatives with respect to the layer's Green-Lagrange strain (count + 3 <=
   // kSensitivitySlots), so that advance_sensitivities() gives the layers' trial derivatives for
   // any strain derivatives without integrating again. The resultant's slots from count on are
-  // zero. With `narrow` (the law with kNarrowSlots slots) and count + 3 <= kNarrowSlots, the pass
-  // runs on the narrower Jets: the same derivatives to round-off, at less cost.
-  SectionStatus pseudo_resultants(const SensLaw& law, const NarrowLaw* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant);
+  // zero. With `narrow` holding a law whose slots take them, the pass runs on its narrower Jets:
+  // the same derivatives, at less cost.
+  SectionStatus pseudo_resultants(const SensLaw& law, const NarrowLaws* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant);
   // After pseudo_resultants() at the same strains: the layers' trial derivatives for strains with
   // the derivatives of e and kappa (what update_sensitivities(law, e, kappa, ...) gives, to
   // round-off: the Jet pass is linear in its seeds).

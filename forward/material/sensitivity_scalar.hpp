@@ -27,12 +27,12 @@ inline SensitivityScalar with_derivatives(double v, const SensitivityRow& d) {
 }
 inline SensitivityRow derivatives_of(const SensitivityScalar& s) { return s.v.transpose(); }
 
-// A narrower scalar for the pass that costs most, the sections' return mapping, when a run's
-// parameters and a layer's three strain slots fit in fewer slots (one parameter): the Jet
-// arithmetic scales with the slots. Slot k of a narrowed value is slot k of the full one; the
+// Narrower scalars for the pass that costs most, the sections' return mapping, when a run's
+// parameters and a layer's three strain slots fit in fewer slots (up to three parameters): the
+// Jet arithmetic scales with the slots. Slot k of a narrowed value is slot k of the full one; the
 // slots beyond are zero on the way back.
-constexpr int kNarrowSlots = 4;
-using NarrowScalar = ceres::Jet<double, kNarrowSlots>;
+using FourSlotScalar = ceres::Jet<double, 4>;  // one parameter
+using SixSlotScalar = ceres::Jet<double, 6>;   // two or three
 
 template <int N>
 ceres::Jet<double, N> narrowed(const SensitivityScalar& s) {
@@ -54,8 +54,9 @@ template <>
 inline SensitivityScalar widened<kSensitivitySlots>(const SensitivityScalar& s) { return s; }
 
 // The seeded parameters with their first N slots.
-inline MaterialParams<NarrowScalar> narrowed_params(const MaterialParams<SensitivityScalar>& p) {
-  return p.map<NarrowScalar>([](const SensitivityScalar& x) { return narrowed<kNarrowSlots>(x); });
+template <int N>
+MaterialParams<ceres::Jet<double, N>> narrowed_params(const MaterialParams<SensitivityScalar>& p) {
+  return p.template map<ceres::Jet<double, N>>([](const SensitivityScalar& x) { return narrowed<N>(x); });
 }
 
 // A state whose values are those of `values` and whose derivatives are those of `sens` (the

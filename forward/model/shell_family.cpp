@@ -250,9 +250,8 @@ void ShellFamily::enable_sensitivities(const material::MaterialParams<material::
   material::ReturnMappingOptions o;
   o.single_jet_evaluation = true;
   sensitivity_law_ = std::make_unique<element::SensLaw>(law, o);
-  // One parameter and a layer's three strain slots fit the narrower Jets (sensitivities.md, Cost).
-  narrow_law_.reset();
-  if (count + 3 <= material::kNarrowSlots) narrow_law_ = std::make_unique<element::NarrowLaw>(material::narrowed_params(law), o);
+  // Up to three parameters and a layer's three strain slots fit narrower Jets (sensitivities.md, Cost).
+  narrow_laws_ = element::NarrowLaws(law, o, count);
   for (auto& el : elements_) el.enable_sensitivities();
 }
 
@@ -291,7 +290,7 @@ solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInpu
   element::NodeVectors x, d;
   corner_vectors(q, in.x, in.d, &x, &d);
   element::SensDofs l;
-  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, nullptr, &l, sensitivity_count_, narrow_law_.get());
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, nullptr, &l, sensitivity_count_, &narrow_laws_);
   if (!s.ok) return element_failure(e, s);
   element::SensDofs drc;
   Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
@@ -313,7 +312,7 @@ solver::ElementEvaluation ShellFamily::update_sensitivities(int e, const Element
   element::NodeVectors x, d;
   corner_vectors(q, in.x, in.d, &x, &d);
   const element::SensDofs dus = du;
-  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, &dus, nullptr, sensitivity_count_, narrow_law_.get());
+  const element::ElementStatus s = elements_[static_cast<std::size_t>(e)].sensitivities(x, d, *sensitivity_law_, &dus, nullptr, sensitivity_count_, &narrow_laws_);
   if (!s.ok) return element_failure(e, s);
   // Every element, so that the contributions keep their trial derivatives (zero out of reach).
   element::SensDofs drc;

@@ -89,7 +89,7 @@ class ShellFamily final : public ElementFamily {
   std::vector<std::string> warnings_;
   double max_t_over_l_ = 0.0;
   std::unique_ptr<element::SensLaw> sensitivity_law_;  // the law with derivative slots
-  std::unique_ptr<element::NarrowLaw> narrow_law_;     // the same with fewer, when they suffice
+  element::NarrowLaws narrow_laws_;                   // the same with fewer, when they suffice
   int sensitivity_count_ = 0;                          // the slots in use
   // The derivatives of the contributions' forces on element e (p-variables) and of the force on
   // the tool through it (ElementContribution::add_derivatives), from the committed DOFs'
