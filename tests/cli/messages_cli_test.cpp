@@ -126,4 +126,27 @@ TEST(MessagesCli, ABinaryCloudIsQuotedAndCut) {
   fs::remove(cloud);
 }
 
+// --algorithm with an NLopt algorithm over a fit whose offset_tolerance stops Ceres only: a note
+// says the stop is left out, rather than nothing.
+TEST(MessagesCli, AnNloptAlgorithmOverAnOffsetStopSaysItIsLeftOut) {
+  std::string text = spifit::test::slurp(src("experiments/aa3003o/fit_classic.toml"));
+  const auto replace_all = [&](const std::string& from, const std::string& to) {
+    for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size())) text.replace(at, from.size(), to);
+  };
+  replace_all("\"../../materials/", "\"" + src("materials/"));
+  replace_all("\"scenes/", "\"" + src("experiments/aa3003o/scenes/"));
+  replace_all("\"data/", "\"" + src("experiments/aa3003o/data/"));
+  replace_all("algorithm = \"levenberg_marquardt\"", "algorithm = \"levenberg_marquardt\"\noffset_tolerance = 1e-3\nmax_iterations = 2");
+  const fs::path fit = spifit::test::write_temp_file("offset_stop_fit.toml", text);
+  const auto r = run_spifit("fit " + fit.string() + " --algorithm bobyqa --out " + spifit::test::fresh_temp_path("offset_stop_out").string());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("note: bobyqa stops on its own tolerances; offset_tolerance = 0.001 stops Ceres's algorithms only and is left out"),
+            std::string::npos)
+      << r.err;
+  const auto ceres = run_spifit("fit " + fit.string() + " --out " + spifit::test::fresh_temp_path("offset_stop_ceres").string());
+  EXPECT_EQ(ceres.code, 0) << ceres.err;
+  EXPECT_EQ(ceres.err.find("note:"), std::string::npos) << ceres.err;
+  fs::remove(fit);
+}
+
 }  // namespace
