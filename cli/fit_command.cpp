@@ -103,16 +103,16 @@ void add_fit_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
       throw io::InputError("", "--algorithm", o->algorithm, "unknown algorithm (known: " + inverse::fit_algorithm_names() + ")");
     }
     const auto problem = inverse::read_fit_file(o->file, o->jacobian);
-    if (!g.quiet && inverse::is_nlopt_algorithm(o->algorithm) && problem.settings.offset_tolerance > 0.0)
-      std::fprintf(stderr,
-                   "note: %s stops on its own tolerances; offset_tolerance = %g stops Ceres's algorithms only and is left out (the fit still "
-                   "checks its convergence at the solution)\n",
-                   o->algorithm.c_str(), problem.settings.offset_tolerance);
     if (mpi::is_worker()) {  // another rank of an MPI job: the FE evaluations rank 0 hands out
       serve_fit_jobs(problem, g, o->file, o->jacobian);
       exit_code = 0;
       return;
     }
+    if (!g.quiet && inverse::is_nlopt_algorithm(o->algorithm) && problem.settings.offset_tolerance > 0.0)
+      std::fprintf(stderr,
+                   "note: %s stops on its own tolerances; offset_tolerance = %g stops Ceres's algorithms only and is left out (the fit still "
+                   "checks its convergence at the solution)\n",
+                   o->algorithm.c_str(), problem.settings.offset_tolerance);
     const auto dir = o->resume ? existing_output(o->out, o->file, g.quiet) : prepare_output(o->out, o->force, problem.input_files, g.quiet);
     if (problem.scene_runs) {
       prepare_fe_runs(problem, dir, o->resume, g.quiet);

@@ -171,26 +171,6 @@ void ShellSection::advance_sensitivities(const Vec3S& e, const Vec3S& kappa) {
   linear_count_ = -1;
 }
 
-namespace {
-
-// A state's Jets through f, field by field.
-template <typename U, typename T, typename F>
-material::MaterialState<U, 3> mapped_state(const material::MaterialState<T, 3>& s, F f) {
-  material::MaterialState<U, 3> o;
-  for (int i = 0; i < 3; ++i) {
-    o.stress(i) = f(s.stress(i));
-    o.plastic_strain(i) = f(s.plastic_strain(i));
-    o.back_stress(i) = f(s.back_stress(i));
-  }
-  o.back_stress_zz = f(s.back_stress_zz);
-  o.eqps = f(s.eqps);
-  o.plastic_work = f(s.plastic_work);
-  o.flow_stress = f(s.flow_stress);
-  return o;
-}
-
-}  // namespace
-
 SectionStatus ShellSection::integrate_sensitivities(const SensLaw& law, const Vec3S& e, const Vec3S& kappa, int strain_slot, Vec6S* resultant) {
   return integrate_layers(law, e, kappa, strain_slot, resultant);
 }
@@ -253,7 +233,7 @@ SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>
     const VecJ stress = first.transpose() * s1.stress;
     sum.template head<3>() += w * stress;
     sum.template tail<3>() += (w * z) * stress;
-    sens_trial_[l].state = mapped_state<Sens>(s1, widen);
+    sens_trial_[l].state = s1.template map<Sens>(widen);
     for (int i = 0; i < 3; ++i) sens_trial_[l].eps(i) = widen(eps(i));
   }
   for (int i = 0; i < 6; ++i) (*resultant)(i) = widen(sum(i));

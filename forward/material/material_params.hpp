@@ -48,32 +48,14 @@ struct MaterialParams {
 
   template <typename U>
   MaterialParams<U> cast() const {
-    MaterialParams<U> o;
-    o.E = U(E); o.nu = U(nu);
-    o.F = U(F); o.G = U(G); o.H = U(H); o.L = U(L); o.M = U(M); o.N = U(N);
-    o.yield.law = yield.law;
-    for (int i = 0; i < kMaxYieldCoefficients; ++i) o.yield[i] = U(yield[i]);
-    o.plastic = plastic; o.hardening.law = hardening.law;
-    for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = U(hardening[i]);
-    o.kinematic.law = kinematic.law;
-    for (int i = 0; i < kMaxKinematicCoefficients; ++i) o.kinematic[i] = U(kinematic[i]);
-    return o;
+    return map<U>([](const T& x) { return U(x); });
   }
 };
 
 // Values of a (possibly Jet) parameter set.
 template <typename T>
 MaterialParams<double> values_of(const MaterialParams<T>& p) {
-  MaterialParams<double> o;
-  o.E = value_of(p.E); o.nu = value_of(p.nu);
-  o.F = value_of(p.F); o.G = value_of(p.G); o.H = value_of(p.H); o.L = value_of(p.L); o.M = value_of(p.M); o.N = value_of(p.N);
-  o.yield.law = p.yield.law;
-  for (int i = 0; i < kMaxYieldCoefficients; ++i) o.yield[i] = value_of(p.yield[i]);
-  o.plastic = p.plastic; o.hardening.law = p.hardening.law;
-  for (int i = 0; i < kMaxHardeningCoefficients; ++i) o.hardening[i] = value_of(p.hardening[i]);
-  o.kinematic.law = p.kinematic.law;
-  for (int i = 0; i < kMaxKinematicCoefficients; ++i) o.kinematic[i] = value_of(p.kinematic[i]);
-  return o;
+  return p.template map<double>([](const T& x) { return value_of(x); });
 }
 
 }  // namespace spifit::material

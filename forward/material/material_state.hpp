@@ -23,21 +23,27 @@ struct MaterialState {
   // needs no pow (bit for bit the value it would compute). Negative: not known (a fresh state,
   // or one read from a checkpoint); the return mapping then computes it.
   T flow_stress = T(-1.0);
+
+  // Every scalar through f, e.g. to values or to other derivative slots.
+  template <typename U, typename Fn>
+  MaterialState<U, Dim> map(Fn f) const {
+    MaterialState<U, Dim> o;
+    for (int i = 0; i < Dim; ++i) {
+      o.stress(i) = f(stress(i));
+      o.plastic_strain(i) = f(plastic_strain(i));
+      o.back_stress(i) = f(back_stress(i));
+    }
+    o.back_stress_zz = f(back_stress_zz);
+    o.eqps = f(eqps);
+    o.plastic_work = f(plastic_work);
+    o.flow_stress = f(flow_stress);
+    return o;
+  }
 };
 
 template <typename T, int Dim>
 MaterialState<double, Dim> values_of(const MaterialState<T, Dim>& s) {
-  MaterialState<double, Dim> o;
-  for (int i = 0; i < Dim; ++i) {
-    o.stress(i) = value_of(s.stress(i));
-    o.plastic_strain(i) = value_of(s.plastic_strain(i));
-    o.back_stress(i) = value_of(s.back_stress(i));
-  }
-  o.back_stress_zz = value_of(s.back_stress_zz);
-  o.eqps = value_of(s.eqps);
-  o.plastic_work = value_of(s.plastic_work);
-  o.flow_stress = value_of(s.flow_stress);
-  return o;
+  return s.template map<double>([](const T& x) { return value_of(x); });
 }
 
 enum class UpdateStatus { ok, failed };
