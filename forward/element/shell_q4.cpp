@@ -450,9 +450,9 @@ ElementStatus ShellQ4::compute_reduced(const NodeVectors& x, const NodeVectors& 
   return dof_results(d, rp, tangent ? &kp : nullptr, false, options_.drilling_factor, area_, residual, tangent);
 }
 
-void ShellQ4::enable_sensitivities() {
+void ShellQ4::enable_sensitivities(int count) {
   if (sections_.size() != 4) throw std::invalid_argument("the one-point shell (hourglass_stiffness > 0) has no parameter sensitivities; use the 2 x 2 element");
-  for (auto& s : sections_) s.enable_sensitivities();
+  for (auto& s : sections_) s.enable_sensitivities(count);
 }
 
 ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load, int count,
@@ -470,7 +470,9 @@ ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d,
     const Vec3 &e = p.e, &kappa = p.kappa;
     Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
     strain_operator(pg, p.ps, tying_, p.k, p.c, shear.a_t, shear.d_t, B);
-    const Slots ds = B.topRows<6>() * dp;  // d (e, kappa) / d p, element frame
+    // d (e, kappa) / d p, element frame (zero for the pseudo-loads); coefficient-wise products:
+    // Eigen's blocked ones cost more at these sizes.
+    const Slots ds = du ? Slots(B.topRows<6>().lazyProduct(dp)) : Slots(Slots::Zero());
     Vec3S em, km;
     const Vec3 emv = pg.Q * e, kmv = pg.Q * kappa;
     for (int i = 0; i < 3; ++i) {
@@ -496,10 +498,11 @@ ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d,
     ds6.topRows<3>() = pg.Q.transpose() * dsm.topRows<3>();
     ds6.bottomRows<3>() = pg.Q.transpose() * dsm.bottomRows<3>();
     const Eigen::Matrix<double, 2, kSensitivitySlots> dQ = shear.gamma[q] * dks;
-    rp.noalias() += pg.weight * (B.topRows<6>().transpose() * ds6 + B.bottomRows<2>().transpose() * dQ);
+    rp.noalias() += pg.weight * (B.topRows<6>().transpose().lazyProduct(ds6) + B.bottomRows<2>().transpose().lazyProduct(dQ));
   }
   if (load) {
-    for (int k = 0; k < kSensitivitySlots; ++k) {
+    load->setZero();
+    for (int k = 0; k < count; ++k) {
       Vec24 ru;
       director_to_dofs(d, Vec24(rp.col(k)), nullptr, &ru, nullptr);
       load->col(k) = ru;

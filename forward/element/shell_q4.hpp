@@ -95,9 +95,9 @@ class ShellQ4 {
   void commit();
   void revert();
   // Direct differentiation (docs/design/sensitivities.md): the sections keep their committed
-  // states' derivatives with respect to the parameters seeded in the law passed below.
+  // states' derivatives with respect to the `count` parameters seeded in the law passed below.
   // std::invalid_argument for the one-point element (hourglass_stiffness > 0), which has none.
-  void enable_sensitivities();
+  void enable_sensitivities(int count = material::kSensitivitySlots);
   // At the nodes x, d of the converged iterate (compute() there first). du null: the
   // pseudo-load, the derivative of the residual with respect to the parameters at fixed nodes
   // (through the law's parameters and the committed state's derivatives), into *load (DOF

@@ -93,9 +93,11 @@ SectionStatus ShellSection::update(const Vec3& e, const Vec3& kappa, Vec6* resul
   return status;
 }
 
-void ShellSection::enable_sensitivities() {
-  sens_.assign(points_.size(), LayerSensitivity{});
+void ShellSection::enable_sensitivities(int slots) {
+  if (slots < 1 || slots > material::kSensitivitySlots) throw std::logic_error("ShellSection::enable_sensitivities: 1 to 8 slots");
+  sens_ = LayerDerivatives(layers(), slots);
   sens_trial_ = sens_;
+  linear_ = LayerDerivatives();
   dh_.setZero();
   sens_trial_set_ = false;
   linear_count_ = -1;
@@ -127,6 +129,8 @@ NarrowLaws::NarrowLaws(const material::MaterialParams<Sens>& law, const material
 
 SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const NarrowLaws* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant) {
   if (count < 0 || count + 3 > material::kSensitivitySlots) throw std::logic_error("ShellSection::pseudo_resultants: no room for the strain's slots");
+  if (!sensitivities_enabled() || count > sens_.slots()) throw std::logic_error("ShellSection::pseudo_resultants: more parameters than slots enabled");
+  if (linear_.slots() != count + 3) linear_ = LayerDerivatives(layers(), count + 3);
   const Vec3S es = e.cast<Sens>(), ks = kappa.cast<Sens>();
   const SectionStatus status = narrow && narrow->four && count + 3 <= 4  ? integrate_layers(*narrow->four, es, ks, count, resultant)
                                : narrow && narrow->six && count + 3 <= 6 ? integrate_layers(*narrow->six, es, ks, count, resultant)
@@ -139,31 +143,24 @@ SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const NarrowLa
 
 void ShellSection::advance_sensitivities(const Vec3S& e, const Vec3S& kappa) {
   if (linear_count_ < 0) throw std::logic_error("ShellSection::advance_sensitivities without pseudo_resultants");
-  const auto q = static_cast<Eigen::Index>(linear_count_);
-  for (std::size_t l = 0; l < points_.size(); ++l) {
+  const int q = linear_count_, slots = sens_trial_.slots();
+  for (int l = 0; l < layers(); ++l) {
     // The strain's derivatives beyond the explicit part the Jets already carry (the lever arm's).
-    const double z = rule_->zeta[l] * 0.5 * h_;
+    const double z = rule_->zeta[static_cast<std::size_t>(l)] * 0.5 * h_;
     Eigen::Matrix<double, 3, material::kSensitivitySlots> de;
     for (int i = 0; i < 3; ++i) de.row(i) = material::derivatives_of(e(i)) + z * material::derivatives_of(kappa(i));
     // Only the parameters' slots 0 .. q - 1 are nonzero, before (with the strain's q .. q + 2) and
     // after; the strains' derivatives have none beyond them.
-    auto advance = [&](Sens& x) {
-      material::SensitivityRow out = material::SensitivityRow::Zero();
-      out.head(q) = x.v.head(q).transpose();
-      for (int i = 0; i < 3; ++i) out.head(q) += x.v(q + i) * de.row(i).head(q);
-      x.v = out.transpose();
-    };
-    material::MaterialState<Sens, 3>& s = sens_trial_[l].state;
-    for (int i = 0; i < 3; ++i) {
-      advance(s.stress(i));
-      advance(s.plastic_strain(i));
-      advance(s.back_stress(i));
-      advance(sens_trial_[l].eps(i));
+    for (int f = 0; f < LayerDerivatives::kFields; ++f) {
+      const double* x = linear_.at(l, f);
+      double* out = sens_trial_.at(l, f);
+      for (int k = 0; k < q; ++k) {
+        double v = x[k];
+        for (int i = 0; i < 3; ++i) v += x[q + i] * de(i, k);
+        out[k] = v;
+      }
+      for (int k = q; k < slots; ++k) out[k] = 0.0;
     }
-    advance(s.back_stress_zz);
-    advance(s.eqps);
-    advance(s.plastic_work);
-    advance(s.flow_stress);
   }
   e_sens_ = e;
   kappa_sens_ = kappa;
@@ -188,6 +185,8 @@ SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>
     out.v = d.transpose();
     return out;
   };
+  // The trial derivatives, or with the strain's slots the linearisation.
+  LayerDerivatives& out = strain_slot >= 0 ? linear_ : sens_trial_;
   SectionStatus status;
   Eigen::Matrix<J, 6, 1> sum = Eigen::Matrix<J, 6, 1>::Zero();
   VecJ e, kappa;
@@ -218,8 +217,9 @@ SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>
       for (int j = 0; j < 3; ++j) first(i, j) = with(ls.first(i, j), ls.second[static_cast<std::size_t>(i)].row(j) * gd);
     }
     VecJ eps0;
-    for (int i = 0; i < 3; ++i) eps0(i) = narrow(material::with_derivatives(eps_[l](i), material::derivatives_of(sens_[l].eps(i))));
-    const material::MaterialState<J, 3> s0 = material::seeded_state<J>(points_[l].committed(), sens_[l].state);
+    const int li = static_cast<int>(l);
+    for (int i = 0; i < 3; ++i) eps0(i) = sens_.seeded<J>(li, 4 * i + 3, eps_[l](i));
+    const material::MaterialState<J, 3> s0 = sens_.seeded_state<J>(li, points_[l].committed());
     material::MaterialState<J, 3> s1;
     const material::UpdateResult r = law.integrate(s0, VecJ(eps - eps0), s1, nullptr);
     if (!r.ok()) {
@@ -233,8 +233,7 @@ SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>
     const VecJ stress = first.transpose() * s1.stress;
     sum.template head<3>() += w * stress;
     sum.template tail<3>() += (w * z) * stress;
-    sens_trial_[l].state = s1.template map<Sens>(widen);
-    for (int i = 0; i < 3; ++i) sens_trial_[l].eps(i) = widen(eps(i));
+    out.store(li, s1, eps);
   }
   for (int i = 0; i < 6; ++i) (*resultant)(i) = widen(sum(i));
   return status;
@@ -244,7 +243,7 @@ SectionStatus ShellSection::integrate_layers(const material::ReturnMapping<J, 3>
 // reference log strains with the new lever arm.
 void ShellSection::commit_sensitivities() {
   if (!sens_trial_set_) throw std::logic_error("a section with sensitivities committed without update_sensitivities");
-  sens_.swap(sens_trial_);  // the next increment's Jet pass writes every layer's trial derivatives anew
+  sens_.swap(sens_trial_);  // the next increment's passes write every layer's trial derivatives anew
   // On the narrowest Jets that hold the strains' derivatives (those of the parameters).
   int used = 0;
   for (int i = 0; i < 3; ++i)
@@ -277,7 +276,7 @@ void ShellSection::commit_thickness() {
     dh_ = material::derivatives_of(material::widened<N>(h));
     for (std::size_t l = 0; l < points_.size(); ++l) {
       const Eigen::Matrix<J, 3, 1> eps = log_strain_of_green(Eigen::Matrix<J, 3, 1>(e + ((rule_->zeta[l] * 0.5) * h) * kappa));
-      for (int i = 0; i < 3; ++i) sens_[l].eps(i) = material::widened<N>(eps(i));
+      for (int i = 0; i < 3; ++i) sens_.store(static_cast<int>(l), 4 * i + 3, eps(i));
     }
   }
 }
@@ -364,49 +363,33 @@ void ShellSection::load_state(io::BinaryReader& r) {
 
 namespace {
 
-// The committed layer derivatives a checkpoint keeps: every Jet of the state the next increment
-// reads (seeded_state drops the flow stress) and of the log strain.
-template <typename State, typename Eps, typename F>
-void each_kept_jet(State& s, Eps& eps, F&& f) {
-  for (int i = 0; i < 3; ++i) {
-    f(s.stress(i));
-    f(s.plastic_strain(i));
-    f(s.back_stress(i));
-    f(eps(i));
-  }
-  f(s.back_stress_zz);
-  f(s.eqps);
-  f(s.plastic_work);
-}
-
-void write_slots(io::BinaryWriter& w, const material::SensitivityRow& d, int count) {
-  for (int k = 0; k < count; ++k) w.f64(d(k));
-}
-
-material::SensitivityRow read_slots(io::BinaryReader& r, int count) {
-  material::SensitivityRow d = material::SensitivityRow::Zero();
-  for (int k = 0; k < count; ++k) d(k) = r.f64();
-  return d;
+void write_slots(io::BinaryWriter& w, const double* d, int count) {
+  for (int k = 0; k < count; ++k) w.f64(d[k]);
 }
 
 }  // namespace
 
+// Every field the next increment reads, in the table's order (layer_derivatives.hpp).
 void ShellSection::save_sensitivities(io::BinaryWriter& w, int count) const {
   if (!sensitivities_enabled()) throw std::logic_error("ShellSection::save_sensitivities before enable_sensitivities");
-  write_slots(w, dh_, count);
-  w.i64(static_cast<std::int64_t>(sens_.size()));
-  for (const LayerSensitivity& l : sens_)
-    each_kept_jet(l.state, l.eps, [&](const Sens& x) { write_slots(w, material::derivatives_of(x), count); });
+  if (count > sens_.slots()) throw std::logic_error("ShellSection::save_sensitivities: more parameters than slots enabled");
+  write_slots(w, dh_.data(), count);
+  w.i64(static_cast<std::int64_t>(sens_.layers()));
+  for (int l = 0; l < sens_.layers(); ++l)
+    for (int f = 0; f < LayerDerivatives::kFields; ++f) write_slots(w, sens_.at(l, f), count);
 }
 
 void ShellSection::load_sensitivities(io::BinaryReader& r, int count) {
   if (!sensitivities_enabled()) throw std::logic_error("ShellSection::load_sensitivities before enable_sensitivities");
-  dh_ = read_slots(r, count);
-  r.expect_count("layers with sensitivities", static_cast<std::int64_t>(sens_.size()));
-  for (LayerSensitivity& l : sens_) {
-    l = LayerSensitivity{};
-    each_kept_jet(l.state, l.eps, [&](Sens& x) { x.v = read_slots(r, count).transpose(); });
-  }
+  if (count > sens_.slots()) throw std::logic_error("ShellSection::load_sensitivities: more parameters than slots enabled");
+  dh_.setZero();
+  for (int k = 0; k < count; ++k) dh_(k) = r.f64();
+  r.expect_count("layers with sensitivities", static_cast<std::int64_t>(sens_.layers()));
+  for (int l = 0; l < sens_.layers(); ++l)
+    for (int f = 0; f < LayerDerivatives::kFields; ++f) {
+      double* d = sens_.at(l, f);
+      for (int k = 0; k < sens_.slots(); ++k) d[k] = k < count ? r.f64() : 0.0;
+    }
   sens_trial_ = sens_;
   sens_trial_set_ = false;
   linear_count_ = -1;

@@ -13,6 +13,7 @@
 // h = h0 / sqrt(det(I + 2e)) (thesis §9.2.2), and the layers' reference log strains are
 // re-evaluated with the new lever arm, so the bending strain accumulates with the current
 // thickness and the next increment starts without a spurious strain jump.
+#include "forward/element/layer_derivatives.hpp"
 #include "forward/element/thickness_rule.hpp"
 #include "forward/material/material_point.hpp"
 #include "forward/material/sensitivity_scalar.hpp"
@@ -92,8 +93,9 @@ class ShellSection {
   // beside its committed state that state's derivatives with respect to the parameters of a
   // run (zero at the start: the initial state depends on none of them), and commit() advances
   // them from the trial derivatives of the increment's last update_sensitivities() (a commit
-  // without one is a std::logic_error). revert() discards the trial derivatives.
-  void enable_sensitivities();
+  // without one is a std::logic_error). revert() discards the trial derivatives. The section
+  // keeps `slots` derivatives: a run's parameters, in slots 0 .. slots - 1.
+  void enable_sensitivities(int slots = material::kSensitivitySlots);
   bool sensitivities_enabled() const { return !sens_.empty(); }
   // The resultants (N, M) at the strains (e, kappa), whose derivatives are the strains' own,
   // integrated from the committed state and its derivatives by `law`: the section's law with
@@ -106,7 +108,7 @@ class ShellSection {
   // slots 0 .. count - 1 and each layer linearised in its strain: slots count .. count + 2 carry
   // the derivatives with respect to the layer's Green-Lagrange strain (count + 3 <=
   // kSensitivitySlots), so that advance_sensitivities() gives the layers' trial derivatives for
-  // any strain derivatives without integrating again. The resultant's slots from count on are
+  // any strain derivatives without integrating again (count <= the slots enabled). The resultant's slots from count on are
   // zero. With `narrow` holding a law whose slots take them, the pass runs on its narrower Jets:
   // the same derivatives, at less cost.
   SectionStatus pseudo_resultants(const SensLaw& law, const NarrowLaws* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant);
@@ -120,9 +122,10 @@ class ShellSection {
   // resets the trial derivatives to them; io::ArchiveError on a layer-count mismatch.
   void save_sensitivities(io::BinaryWriter& w, int count) const;
   void load_sensitivities(io::BinaryReader& r, int count);
-  // Derivatives of the committed thickness, and of a layer's committed state (values unused).
+  // Derivatives of the committed thickness, and of a layer's committed state (values zero; the
+  // flow stress's are not kept: the law recomputes it from eqps).
   const material::SensitivityRow& thickness_sensitivity() const { return dh_; }
-  const material::MaterialState<Sens, 3>& layer_state_sensitivity(int l) const { return sens_[static_cast<std::size_t>(l)].state; }
+  material::MaterialState<Sens, 3> layer_state_sensitivity(int l) const { return sens_.state(l); }
 
   double reference_thickness() const { return h0_; }
   double thickness() const { return h_; }  // committed, constant-volume
@@ -148,12 +151,9 @@ class ShellSection {
   std::vector<Eigen::Matrix3d> tangent_, tangent_trial_;
   Vec3 e_committed_ = Vec3::Zero(), e_trial_ = Vec3::Zero(), kappa_trial_ = Vec3::Zero();
   // Direct differentiation: per layer the derivatives of the material state and of the log
-  // strain (committed, trial), of the thickness, and the trial strains with their derivatives.
-  struct LayerSensitivity {
-    material::MaterialState<Sens, 3> state;
-    Vec3S eps = Vec3S::Zero();
-  };
-  std::vector<LayerSensitivity> sens_, sens_trial_;
+  // strain (committed, trial, and pseudo_resultants()'s linearisation with the strain's three
+  // slots), of the thickness, and the trial strains with their derivatives.
+  LayerDerivatives sens_, sens_trial_, linear_;
   material::SensitivityRow dh_ = material::SensitivityRow::Zero();
   Vec3S e_sens_ = Vec3S::Zero(), kappa_sens_ = Vec3S::Zero();
   bool sens_trial_set_ = false;

@@ -59,32 +59,6 @@ MaterialParams<ceres::Jet<double, N>> narrowed_params(const MaterialParams<Sensi
   return p.template map<ceres::Jet<double, N>>([](const SensitivityScalar& x) { return narrowed<N>(x); });
 }
 
-// A state whose values are those of `values` and whose derivatives are those of `sens` (the
-// committed state's sensitivities, kept beside the double state), in the first slots of the Jet
-// J (all of them by default). The kept flow stress is dropped (negative), so that the law
-// recomputes it from eqps with its derivatives.
-template <typename J = ceres::Jet<double, kSensitivitySlots>, int Dim>
-MaterialState<J, Dim> seeded_state(const MaterialState<double, Dim>& values, const MaterialState<ceres::Jet<double, kSensitivitySlots>, Dim>& sens) {
-  constexpr int N = J::DIMENSION;
-  static_assert(N <= kSensitivitySlots);
-  const auto at = [](double v, const ceres::Jet<double, kSensitivitySlots>& d) {
-    J out(v);
-    out.v = d.v.template head<N>();
-    return out;
-  };
-  MaterialState<J, Dim> s;
-  for (int i = 0; i < Dim; ++i) {
-    s.stress(i) = at(values.stress(i), sens.stress(i));
-    s.plastic_strain(i) = at(values.plastic_strain(i), sens.plastic_strain(i));
-    s.back_stress(i) = at(values.back_stress(i), sens.back_stress(i));
-  }
-  s.back_stress_zz = at(values.back_stress_zz, sens.back_stress_zz);
-  s.eqps = at(values.eqps, sens.eqps);
-  s.plastic_work = at(values.plastic_work, sens.plastic_work);
-  s.flow_stress = J(-1.0);
-  return s;
-}
-
 // A parameter's seed: the derivative slots of one field of MaterialParams (a parameter sets its
 // field and the fields tied to it with the same row; hill.G with normalise_hill also sets H = 2 - G
 // with the negated row).

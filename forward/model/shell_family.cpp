@@ -252,7 +252,7 @@ void ShellFamily::enable_sensitivities(const material::MaterialParams<material::
   sensitivity_law_ = std::make_unique<element::SensLaw>(law, o);
   // Up to three parameters and a layer's three strain slots fit narrower Jets (sensitivities.md, Cost).
   narrow_laws_ = element::NarrowLaws(law, o, count);
-  for (auto& el : elements_) el.enable_sensitivities();
+  for (auto& el : elements_) el.enable_sensitivities(count);
 }
 
 material::SensitivityRow ShellFamily::offset_sensitivity(int e) const {

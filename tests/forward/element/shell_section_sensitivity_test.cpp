@@ -1,6 +1,7 @@
 // Direct differentiation through a shell section: the derivatives of the resultants along a
 // path of strains against central differences of whole paths with perturbed parameters.
 #include "forward/element/shell_section.hpp"
+#include "forward/io/binary_archive.hpp"
 #include "forward/material/kinematic/kinematic_laws.hpp"
 #include "tests/support/central_differences.hpp"
 #include "tests/support/hex_elements.hpp"
@@ -172,8 +173,9 @@ TEST(ShellSectionSensitivity, OnePassLinearisationEqualsTwoPasses) {
 }
 
 // A run with one parameter linearises the layers on Jets of four slots (the parameter and the
-// strain's three), one with two or three on six, rather than eight: the same pseudo-resultants
-// and committed derivatives, for parameters of the law that also move the strains.
+// strain's three), one with two or three on six, rather than eight, and keeps `count` derivatives
+// per layer field rather than eight: the same pseudo-resultants and committed derivatives, for
+// parameters of the law that also move the strains, and the same after a checkpoint.
 TEST(ShellSectionSensitivity, TheNarrowPassesEqualTheFullOne) {
   const material::MaterialParams<double> p = test::aa3003_af();
   const material::ReturnMapping<double, 3> law(p);
@@ -189,13 +191,17 @@ TEST(ShellSectionSensitivity, TheNarrowPassesEqualTheFullOne) {
     const NarrowLaws nlaws(seeded, options, count);
     EXPECT_EQ(nlaws.four != nullptr, count == 1);
     EXPECT_EQ(nlaws.six != nullptr, count > 1);
-    ShellSection narrow(law, rule, 1.2), full(law, rule, 1.2);
-    narrow.enable_sensitivities();
+    ShellSection narrow(law, rule, 1.2), full(law, rule, 1.2), restored(law, rule, 1.2);
+    narrow.enable_sensitivities(count);
     full.enable_sensitivities();
+    restored.enable_sensitivities(count);
+    EXPECT_THROW(narrow.pseudo_resultants(slaw, nullptr, Vec3::Zero(), Vec3::Zero(), count + 1, nullptr), std::logic_error);  // beyond its slots
     double worst = 0.0;
     const auto compare = [&](const Sens& a, const Sens& b) {
       for (int k = 0; k < material::kSensitivitySlots; ++k) {
-        if (k >= count) EXPECT_EQ(a.v(k), 0.0);
+        if (k >= count) {
+          EXPECT_EQ(a.v(k), 0.0);
+        }
         worst = std::max(worst, std::abs(a.v(k) - b.v(k)) / (1.0 + std::abs(b.v(k))));
       }
     };
@@ -239,6 +245,23 @@ TEST(ShellSectionSensitivity, TheNarrowPassesEqualTheFullOne) {
         compare(x.eqps, y.eqps);
         compare(x.plastic_work, y.plastic_work);
       }
+    }
+    // A checkpoint of the compact derivatives restores them bit for bit.
+    io::BinaryWriter w("section-sensitivity-test", 1);
+    narrow.save_state(w);
+    narrow.save_sensitivities(w, count);
+    io::BinaryReader r(w.finish(), "section-sensitivity-test", 1);
+    restored.load_state(r);
+    restored.load_sensitivities(r, count);
+    r.finish();
+    EXPECT_EQ(restored.thickness_sensitivity(), narrow.thickness_sensitivity());
+    for (int l = 0; l < narrow.layers(); ++l) {
+      const auto &x = restored.layer_state_sensitivity(l), &y = narrow.layer_state_sensitivity(l);
+      for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(x.stress(i).v, y.stress(i).v);
+        EXPECT_EQ(x.back_stress(i).v, y.back_stress(i).v);
+      }
+      EXPECT_EQ(x.eqps.v, y.eqps.v);
     }
     std::printf("%d of eight slots in use, narrow Jets against eight: largest relative difference %.2e\n", count, worst);
     EXPECT_LT(worst, 1e-12);
