@@ -231,8 +231,14 @@ std::string fit_table(const FitProblem& fp, const FitResult& r) {
   const auto& u = r.uncertainty;
   std::string s;
   char line[256];
-  std::snprintf(line, sizeof line, "fit %s: %s, %d iterations, %ld forward runs, %.3f s\n", fp.name.c_str(), r.algorithm.c_str(),
-                r.iterations, r.forward_runs, r.wall_seconds);
+  // With FE experiments the scene runs are what cost; their results answer the experiments'
+  // further evaluations (the stopping rule's, the analysis at the solution) from the cache.
+  if (fp.scene_runs)
+    std::snprintf(line, sizeof line, "fit %s: %s, %d iterations, %ld FE scene runs (%ld evaluations of the experiments), %.3f s\n", fp.name.c_str(),
+                  r.algorithm.c_str(), r.iterations, r.scene_runs, r.forward_runs, r.wall_seconds);
+  else
+    std::snprintf(line, sizeof line, "fit %s: %s, %d iterations, %ld forward runs, %.3f s\n", fp.name.c_str(), r.algorithm.c_str(), r.iterations,
+                  r.forward_runs, r.wall_seconds);
   s += line;
   std::snprintf(line, sizeof line, "cost %.6g -> %.6g   (%s)\n", r.cost_initial, r.cost_final, r.termination.c_str());
   s += line;

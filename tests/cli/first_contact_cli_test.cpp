@@ -212,6 +212,14 @@ TEST(FirstContactCli, AnFeFitSaysWhichIterationItIsInWithoutVerbose) {
   EXPECT_TRUE(has(r.err, "spifit: iteration 0: cost ")) << r.err;
   EXPECT_TRUE(has(r.err, ", 1 FE runs (1 in all), ")) << r.err;
   EXPECT_TRUE(has(r.err, "spifit: iteration 1: cost ")) << r.err;
+  // The closing line counts the scene runs the fit made, as fit.json does, beside the
+  // evaluations of the experiments (the Jacobian's at the solution among them, from the runs'
+  // cache): not the evaluations alone as if each had been a forward run.
+  const auto fit_json = nlohmann::json::parse(slurp(out / "fit.json"));
+  const long runs = fit_json["scene_runs"].get<long>(), evaluations = fit_json["forward_runs"].get<long>();
+  EXPECT_GT(evaluations, runs);
+  EXPECT_TRUE(has(r.out, " iterations, " + std::to_string(runs) + " FE scene runs (" + std::to_string(evaluations) + " evaluations of the experiments), "))
+      << r.out;
   fs::remove_all(out);
 }
 
