@@ -129,7 +129,8 @@ NarrowLaws::NarrowLaws(const material::MaterialParams<Sens>& law, const material
 
 SectionStatus ShellSection::pseudo_resultants(const SensLaw& law, const NarrowLaws* narrow, const Vec3& e, const Vec3& kappa, int count, Vec6S* resultant) {
   if (count < 0 || count + 3 > material::kSensitivitySlots) throw std::logic_error("ShellSection::pseudo_resultants: no room for the strain's slots");
-  if (!sensitivities_enabled() || count > sens_.slots()) throw std::logic_error("ShellSection::pseudo_resultants: more parameters than slots enabled");
+  if (!sensitivities_enabled()) throw std::logic_error("ShellSection::pseudo_resultants before enable_sensitivities");
+  if (count > sens_.slots()) throw std::logic_error("ShellSection::pseudo_resultants: more parameters than slots enabled");
   if (linear_.slots() != count + 3) linear_ = LayerDerivatives(layers(), count + 3);
   const Vec3S es = e.cast<Sens>(), ks = kappa.cast<Sens>();
   const SectionStatus status = narrow && narrow->four && count + 3 <= 4  ? integrate_layers(*narrow->four, es, ks, count, resultant)
