@@ -39,16 +39,14 @@ class CostHistory final : public ceres::IterationCallback {
 // them.
 class OffsetStop final : public ceres::IterationCallback {
  public:
-  OffsetStop(const FitProblem& fp, const std::vector<double>* x, double tolerance, std::atomic<long>* evaluations)
-      : fp_(fp), x_(x), tolerance_(tolerance) {
-    for (const auto& e : fp.experiments) costs_.emplace_back(make_experiment_cost(*fp.parameters, *e, evaluations));
-  }
+  OffsetStop(const FitProblem& fp, const std::vector<double>* x, double tolerance, int threads, std::atomic<long>* evaluations)
+      : fp_(fp), x_(x), tolerance_(tolerance), threads_(threads), evaluations_(evaluations) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     if (s.iteration > 0 && !s.step_is_successful) return ceres::SOLVER_CONTINUE;
     const int p = fp_.parameters->num_free();
     Eigen::MatrixXd J;
     Eigen::VectorXd r;
-    if (!evaluate(p, &J, &r)) return ceres::SOLVER_CONTINUE;
+    if (!stacked_jacobian(fp_, *x_, threads_, evaluations_, &J, &r)) return ceres::SOLVER_CONTINUE;
     std::vector<double> values;
     for (int k = 0; k < p; ++k) values.push_back(fp_.parameters->to_physical(k, (*x_)[static_cast<std::size_t>(k)]));
     last_ = offset_inside_bounds(*fp_.parameters, values, J, r);
@@ -66,29 +64,11 @@ class OffsetStop final : public ceres::IterationCallback {
   }
 
  private:
-  bool evaluate(int p, Eigen::MatrixXd* J, Eigen::VectorXd* r) {
-    int m = 0;
-    for (const auto& c : costs_) m += c->num_residuals();
-    J->resize(m, p);
-    r->resize(m);
-    int row = 0;
-    for (const auto& c : costs_) {
-      const int n = c->num_residuals();
-      std::vector<double> jac(static_cast<std::size_t>(n) * static_cast<std::size_t>(p));
-      const double* params[] = {x_->data()};
-      double* jacobians[] = {jac.data()};
-      if (!c->Evaluate(params, r->data() + row, jacobians)) return false;
-      for (int i = 0; i < n; ++i)
-        for (int k = 0; k < p; ++k) (*J)(row + i, k) = jac[static_cast<std::size_t>(i) * static_cast<std::size_t>(p) + static_cast<std::size_t>(k)];
-      row += n;
-    }
-    return true;
-  }
-
   const FitProblem& fp_;
   const std::vector<double>* x_;
   double tolerance_;
-  std::vector<std::unique_ptr<ceres::CostFunction>> costs_;
+  int threads_;
+  std::atomic<long>* evaluations_;
   RelativeOffset last_;
   bool stopped_ = false;
 };
@@ -149,7 +129,7 @@ FitResult fit_with_ceres(const FitProblem& fp, const FitRunOptions& options) {
   so.callbacks.push_back(&history);
   std::unique_ptr<OffsetStop> offset_stop;
   if (fp.settings.offset_tolerance > 0.0) {
-    offset_stop = std::make_unique<OffsetStop>(fp, &x, fp.settings.offset_tolerance, &runs);
+    offset_stop = std::make_unique<OffsetStop>(fp, &x, fp.settings.offset_tolerance, so.num_threads, &runs);
     so.update_state_every_iteration = true;
     so.callbacks.push_back(offset_stop.get());
   }

@@ -27,6 +27,26 @@ bool evaluate_residuals(const FitProblem& fp, const std::vector<double>& interna
   return true;
 }
 
+bool stacked_jacobian(const FitProblem& fp, const std::vector<double>& x_in, int threads, std::atomic<long>* evaluations, Eigen::MatrixXd* J,
+                      Eigen::VectorXd* r) {
+  std::vector<double> x = x_in;  // the problem's parameter block
+  ceres::Problem::Options popts;
+  popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+  ceres::Problem problem(popts);
+  for (const auto& e : fp.experiments) problem.AddResidualBlock(make_experiment_cost(*fp.parameters, *e, evaluations), nullptr, x.data());
+  ceres::Problem::EvaluateOptions eo;
+  eo.num_threads = std::max(1, threads);
+  double cost = 0.0;
+  std::vector<double> res;
+  ceres::CRSMatrix crs;
+  if (!problem.Evaluate(eo, &cost, &res, nullptr, &crs)) return false;
+  *J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
+  for (int i = 0; i < crs.num_rows; ++i)
+    for (int j = crs.rows[i]; j < crs.rows[i + 1]; ++j) (*J)(i, crs.cols[j]) = crs.values[j];
+  *r = Eigen::Map<const Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
+  return true;
+}
+
 namespace {
 
 // A step from the solution larger than this many standard errors: the optimiser stopped short.
@@ -71,22 +91,10 @@ void analyse_solution(const FitProblem& fp, const std::vector<double>& x_in, int
   for (int k = 0; k < p; ++k) out.values.push_back(ps.to_physical(k, x[k]));
   out.card = ps.card_for(x);
   std::atomic<long> runs{0};
-  ceres::Problem::Options popts;
-  popts.cost_function_ownership = ceres::TAKE_OWNERSHIP;
-  ceres::Problem problem(popts);
-  for (const auto& e : fp.experiments) problem.AddResidualBlock(make_experiment_cost(ps, *e, &runs), nullptr, x.data());
-  ceres::Problem::EvaluateOptions eo;
-  eo.num_threads = std::max(1, threads);
-  double cost = 0.0;
-  std::vector<double> res;
-  ceres::CRSMatrix crs;
-  if (problem.Evaluate(eo, &cost, &res, nullptr, &crs)) {
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(crs.num_rows, crs.num_cols);
-    for (int i = 0; i < crs.num_rows; ++i) {
-      for (int j = crs.rows[i]; j < crs.rows[i + 1]; ++j) J(i, crs.cols[j]) = crs.values[j];
-    }
+  Eigen::MatrixXd J;
+  Eigen::VectorXd r;
+  if (stacked_jacobian(fp, x, threads, &runs, &J, &r)) {
     for (int k = 0; k < p; ++k) J.col(k) /= ps.physical_per_internal(k, x[k]);
-    const Eigen::VectorXd r = Eigen::Map<const Eigen::VectorXd>(res.data(), static_cast<Eigen::Index>(res.size()));
     std::vector<std::string> names;
     for (int idx : ps.free_indices()) names.push_back(ps.specs()[idx].name);
     bool known_noise = true;

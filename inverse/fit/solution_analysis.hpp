@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include <atomic>
 #include <vector>
 
 namespace spifit::inverse {
@@ -19,6 +20,13 @@ void analyse_solution(const FitProblem& problem, const std::vector<double>& x, i
 // Jacobian's columns in the free parameters' order, any scaling): one held at a bound stays
 // there, and the step would leave the box.
 RelativeOffset offset_inside_bounds(const ParameterSet& ps, const std::vector<double>& values, const Eigen::MatrixXd& J, const Eigen::VectorXd& r);
+
+// The conditioned residuals and their Jacobian in the internal parameters at x, stacked over the
+// experiments in fit order, evaluated by Ceres with `threads` threads (an FE experiment's point
+// comes from SceneRuns' cache when it was run); each experiment's evaluation counts in
+// `evaluations`. False: a forward run failed.
+bool stacked_jacobian(const FitProblem& problem, const std::vector<double>& x, int threads, std::atomic<long>* evaluations, Eigen::MatrixXd* J,
+                      Eigen::VectorXd* r);
 
 // Conditioned residuals at an internal parameter vector (false: a forward run failed).
 bool evaluate_residuals(const FitProblem& problem, const std::vector<double>& internal, Eigen::VectorXd* residuals);
