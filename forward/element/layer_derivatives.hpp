@@ -8,7 +8,8 @@
 //
 // Fields, in the order checkpoints write them: for i = 0, 1, 2 the stress, plastic strain, back
 // stress and log strain component i; then the out-of-plane back stress, the equivalent plastic
-// strain and the plastic work. The flow stress is not kept: the law recomputes it from eqps.
+// strain and the plastic work. The flow stress's derivatives are not kept: the law recomputes
+// them from eqps when a step is plastic.
 #include "forward/material/material_state.hpp"
 #include "forward/material/sensitivity_scalar.hpp"
 
