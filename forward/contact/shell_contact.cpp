@@ -197,11 +197,30 @@ SensVec point_force(const SensVec& xp, const SensVec& xp0, const SphereTool& too
   }
   return n * pressure + *t;
 }
+
+// A point of the curved (Phong) surface and the rows of its Jacobian with respect to the 24
+// p-variables, all with their parameter derivatives (the flat facets' Jacobian, N_I and
+// offset N_I, holds none but the offset's): nested Jets, the p-variables' slots outside.
+struct PhongPoint {
+  SensVec x;
+  Eigen::Matrix<SensJet, 3, 24> J;
+};
+
+PhongPoint phong_point(const std::array<SensJet, 24>& pj, const Eigen::Vector4d& N, const SensJet& offset) {
+  using Outer = ceres::Jet<SensJet, 24>;
+  std::array<Outer, 24> po;
+  for (int i = 0; i < 24; ++i) po[static_cast<std::size_t>(i)] = Outer(pj[static_cast<std::size_t>(i)], i);
+  const Eigen::Matrix<Outer, 3, 1> xo = surface_at(po.data(), N, Outer(offset), true);
+  PhongPoint out;
+  for (int k = 0; k < 3; ++k) {
+    out.x(k) = xo(k).a;
+    for (int i = 0; i < 24; ++i) out.J(k, i) = xo(k).v(i);
+  }
+  return out;
+}
 }  // namespace
 
 void ShellContact::enable_sensitivities(const ParameterSlots& slots) {
-  if (options_.surface != ContactOptions::Surface::flat)
-    throw std::invalid_argument("contact.surface = \"phong\": the curved contact surface has no parameter sensitivities yet");
   slots_ = slots;
   sensitivities_ = true;
   committed_dt_.assign(committed_.size(), TractionDerivatives::Zero());
@@ -230,19 +249,26 @@ bool ShellContact::element_derivatives(int e, const element::NodeVectors& x, con
   const SensJet kt = options_.tangential_penalty > 0.0 ? SensJet(options_.tangential_penalty) : kp;
   const SensJet mu = parameter(options_.friction, slots_.friction);
   const bool friction = options_.friction > 0.0 || slots_.friction >= 0;
+  const bool phong = options_.surface == ContactOptions::Surface::phong;
   bool any = false;
   for (int p = 0; p < per_element_; ++p) {
     const std::size_t id = base + static_cast<std::size_t>(p), sid = state + static_cast<std::size_t>(p);
     if (!trial_[sid].active) continue;
     any = true;
     const Eigen::Vector4d& N = points_[static_cast<std::size_t>(p)].N;
-    const SensVec xp = surface_at(pj.data(), N, o, false), xp0 = surface_at(pj0.data(), N, o, false);
+    PhongPoint curved;
+    if (phong) curved = phong_point(pj, N, o);
+    const SensVec xp = phong ? curved.x : surface_at(pj.data(), N, o, false), xp0 = surface_at(pj0.data(), N, o, phong);
     SensVec tc;
     for (int k = 0; k < 3; ++k) tc(k) = material::with_derivatives(committed_[sid].traction(k), committed_dt_[sid].row(k));
     SensVec t;
     const SensVec f = point_force(xp, xp0, tool, tc, kp, kt, mu, friction, trial_[sid].sliding, &t) * SensJet(-areas_[id]);
     if (keep)
       for (int k = 0; k < 3; ++k) trial_dt_[sid].row(k) = t(k).v.transpose();
+    if (phong) {  // r_p = J^T f, J moving with the nodes, the directors and the offset
+      for (int i = 0; i < 24; ++i) drp->row(i) += (curved.J(0, i) * f(0) + curved.J(1, i) * f(1) + curved.J(2, i) * f(2)).v.transpose();
+      continue;
+    }
     for (int I = 0; I < 4; ++I)
       for (int k = 0; k < 3; ++k) {
         drp->row(6 * I + k) += (f(k) * N(I)).v.transpose();

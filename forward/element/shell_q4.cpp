@@ -451,63 +451,129 @@ ElementStatus ShellQ4::compute_reduced(const NodeVectors& x, const NodeVectors& 
 }
 
 void ShellQ4::enable_sensitivities(int count) {
-  if (sections_.size() != 4) throw std::invalid_argument("the one-point shell (hourglass_stiffness > 0) has no parameter sensitivities; use the 2 x 2 element");
   for (auto& s : sections_) s.enable_sensitivities(count);
 }
+
+namespace {
+
+using SensSlots = Eigen::Matrix<double, 6, material::kSensitivitySlots>;
+
+// One section's part of ShellQ4::sensitivities at strains (e, kappa) and their derivatives ds
+// (element frame; Q: element to material frame): the pseudo-resultants (pseudo), or the
+// derivatives advanced along ds. With want_resultants, *ds6 receives the resultants'
+// derivatives in the element frame; otherwise a linearised section only advances.
+SectionStatus section_sensitivities(ShellSection& section, const Eigen::Matrix3d& Q, const Vec3& e, const Vec3& kappa, const SensSlots& ds,
+                                    const SensLaw& law, const NarrowLaws* narrow, bool pseudo, bool want_resultants, int count, SensSlots* ds6) {
+  Vec3S em, km;
+  const Vec3 emv = Q * e, kmv = Q * kappa;
+  for (int i = 0; i < 3; ++i) {
+    em(i) = material::with_derivatives(emv(i), (Q.row(i) * ds.topRows<3>()));
+    km(i) = material::with_derivatives(kmv(i), (Q.row(i) * ds.bottomRows<3>()));
+  }
+  Vec6S s6m;
+  if (pseudo && count + 3 <= material::kSensitivitySlots) {
+    const SectionStatus ss = section.pseudo_resultants(law, narrow, emv, kmv, count, &s6m);
+    if (!ss.ok) return ss;
+  } else if (!pseudo && !want_resultants && section.linearised()) {
+    section.advance_sensitivities(em, km);
+    return {};
+  } else {
+    const SectionStatus ss = section.update_sensitivities(law, em, km, &s6m);
+    if (!ss.ok) return ss;
+  }
+  if (!want_resultants) return {};
+  SensSlots dsm;
+  for (int i = 0; i < 6; ++i) dsm.row(i) = material::derivatives_of(s6m(i));
+  ds6->topRows<3>() = Q.transpose() * dsm.topRows<3>();
+  ds6->bottomRows<3>() = Q.transpose() * dsm.bottomRows<3>();
+  return {};
+}
+
+// From the derivatives of the p-variables' residual (positions and directors) to the DOFs',
+// column by column.
+void to_dof_loads(const NodeVectors& d, const SensDofs& rp, int count, SensDofs* load) {
+  load->setZero();
+  for (int k = 0; k < count; ++k) {
+    Vec24 ru;
+    director_to_dofs(d, Vec24(rp.col(k)), nullptr, &ru, nullptr);
+    load->col(k) = ru;
+  }
+}
+
+}  // namespace
 
 ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load, int count,
                                      const NarrowLaws* narrow) {
   using material::kSensitivitySlots;
-  using Slots = Eigen::Matrix<double, 6, kSensitivitySlots>;
   const SensDofs dp = du ? director_variable_derivatives(d, *du) : SensDofs::Zero();
   const auto& lp = law.params();
   const material::SensitivityRow dks = options_.shear_factor * h0_ * material::derivatives_of(lp.E / (2.0 * (1.0 + lp.nu)));
   const TransverseShear shear = transverse_shear(x, d);
+  if (sections_.size() == 1) return sensitivities_reduced(x, d, law, dp, du == nullptr, load, count, narrow, shear, dks);
   SensDofs rp = SensDofs::Zero();
   for (std::size_t q = 0; q < 4; ++q) {
     const auto p = point_strains(points_[q], centre_, options_.centre_membrane_shear, x, d);
     const PointGeometry& pg = p.pg;
-    const Vec3 &e = p.e, &kappa = p.kappa;
     Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
     strain_operator(pg, p.ps, tying_, p.k, p.c, shear.a_t, shear.d_t, B);
     // d (e, kappa) / d p, element frame (zero for the pseudo-loads); coefficient-wise products:
     // Eigen's blocked ones cost more at these sizes.
-    const Slots ds = du ? Slots(B.topRows<6>().lazyProduct(dp)) : Slots(Slots::Zero());
-    Vec3S em, km;
-    const Vec3 emv = pg.Q * e, kmv = pg.Q * kappa;
-    for (int i = 0; i < 3; ++i) {
-      em(i) = material::with_derivatives(emv(i), (pg.Q.row(i) * ds.topRows<3>()));
-      km(i) = material::with_derivatives(kmv(i), (pg.Q.row(i) * ds.bottomRows<3>()));
-    }
-    Vec6S s6m;
-    ShellSection& section = sections_[q];
-    if (!du && count + 3 <= kSensitivitySlots) {
-      const SectionStatus ss = section.pseudo_resultants(law, narrow, emv, kmv, count, &s6m);
-      if (!ss.ok) return point_failure(static_cast<int>(q), ss);
-    } else if (du && !load && section.linearised()) {
-      section.advance_sensitivities(em, km);
-      continue;
-    } else {
-      const SectionStatus ss = section.update_sensitivities(law, em, km, &s6m);
-      if (!ss.ok) return point_failure(static_cast<int>(q), ss);
-    }
+    const SensSlots ds = du ? SensSlots(B.topRows<6>().lazyProduct(dp)) : SensSlots(SensSlots::Zero());
+    SensSlots ds6;
+    const SectionStatus ss = section_sensitivities(sections_[q], pg.Q, p.e, p.kappa, ds, law, narrow, du == nullptr, load != nullptr, count, &ds6);
+    if (!ss.ok) return point_failure(static_cast<int>(q), ss);
     if (!load) continue;
-    Slots dsm;
-    for (int i = 0; i < 6; ++i) dsm.row(i) = material::derivatives_of(s6m(i));
-    Slots ds6;
-    ds6.topRows<3>() = pg.Q.transpose() * dsm.topRows<3>();
-    ds6.bottomRows<3>() = pg.Q.transpose() * dsm.bottomRows<3>();
     const Eigen::Matrix<double, 2, kSensitivitySlots> dQ = shear.gamma[q] * dks;
     rp.noalias() += pg.weight * (B.topRows<6>().transpose().lazyProduct(ds6) + B.bottomRows<2>().transpose().lazyProduct(dQ));
   }
-  if (load) {
-    load->setZero();
-    for (int k = 0; k < count; ++k) {
-      Vec24 ru;
-      director_to_dofs(d, Vec24(rp.col(k)), nullptr, &ru, nullptr);
-      load->col(k) = ru;
-    }
+  if (load) to_dof_loads(d, rp, count, load);
+  return {};
+}
+
+ElementStatus ShellQ4::sensitivities_reduced(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs& dp, bool pseudo,
+                                             SensDofs* load, int count, const NarrowLaws* narrow, const TransverseShear& shear,
+                                             const material::SensitivityRow& dks) {
+  using material::kSensitivitySlots;
+  // The centre's section, as compute_reduced weighs it: over the whole area.
+  const PointGeometry& pc = centre_;
+  PointKinematics kc;
+  const Vec6 ec = centre_strains(pc, x, d, &kc);
+  const double cc[4] = {0.5, 0.5, 0.5, 0.5};
+  Eigen::Matrix<double, 8, 24> Bc = Eigen::Matrix<double, 8, 24>::Zero();
+  strain_operator(pc, pc, tying_, kc, cc, shear.a_t, shear.d_t, Bc);
+  const SensSlots ds = pseudo ? SensSlots(SensSlots::Zero()) : SensSlots(Bc.topRows<6>().lazyProduct(dp));
+  SensSlots ds6;
+  const SectionStatus ss = section_sensitivities(sections_[0], pc.Q, ec.head<3>(), ec.tail<3>(), ds, law, narrow, pseudo, load != nullptr, count, &ds6);
+  if (!ss.ok) return point_failure(0, ss);
+  if (!load) return {};  // the hourglass part and the shear keep no state
+  // The hourglass stiffness H = fraction (h0 C, h0^3/12 C) moves with the law's elasticity C;
+  // the strains' variations dv_q are the nodes' alone. Forces as compute_reduced's:
+  // sum_q w_q B_q^T (dH dv_q + dQ_q) + B_c^T (area ds6 - sum_q w_q dH dv_q).
+  const auto& C = law.elastic_matrix();
+  const double membrane = options_.hourglass_stiffness * h0_, bending = membrane * h0_ * h0_ / 12.0;
+  std::array<PointKinematics, 4> kq;
+  const std::array<Vec6, 4> dv = strain_variation(x, d, ec, &kq);
+  SensSlots centre_force = area_ * ds6;
+  SensDofs rp = SensDofs::Zero();
+  for (std::size_t q = 0; q < 4; ++q) {
+    const PointGeometry& pg = points_[q];
+    const PointGeometry& ps = options_.centre_membrane_shear ? centre_ : pg;
+    const double c[4] = {0.5 * (1.0 - pg.eta), 0.5 * (1.0 + pg.eta), 0.5 * (1.0 - pg.xi), 0.5 * (1.0 + pg.xi)};
+    SensSlots dhdv = SensSlots::Zero();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) {
+        const material::SensitivityRow dc = material::derivatives_of(C(i, j));
+        dhdv.row(i) += (membrane * dv[q](j)) * dc;
+        dhdv.row(3 + i) += (bending * dv[q](3 + j)) * dc;
+      }
+    centre_force -= pg.weight * dhdv;
+    Eigen::Matrix<double, 8, 24> B = Eigen::Matrix<double, 8, 24>::Zero();
+    strain_operator(pg, ps, tying_, kq[q], c, shear.a_t, shear.d_t, B);
+    const Eigen::Matrix<double, 2, kSensitivitySlots> dQ = shear.gamma[q] * dks;
+    rp.noalias() += pg.weight * (B.topRows<6>().transpose().lazyProduct(dhdv) + B.bottomRows<2>().transpose().lazyProduct(dQ));
   }
+  rp.noalias() += Bc.topRows<6>().transpose().lazyProduct(centre_force);
+  to_dof_loads(d, rp, count, load);
   return {};
 }
 

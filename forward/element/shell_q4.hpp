@@ -96,7 +96,6 @@ class ShellQ4 {
   void revert();
   // Direct differentiation (docs/design/sensitivities.md): the sections keep their committed
   // states' derivatives with respect to the `count` parameters seeded in the law passed below.
-  // std::invalid_argument for the one-point element (hourglass_stiffness > 0), which has none.
   void enable_sensitivities(int count = material::kSensitivitySlots);
   // At the nodes x, d of the converged iterate (compute() there first). du null: the
   // pseudo-load, the derivative of the residual with respect to the parameters at fixed nodes
@@ -163,6 +162,12 @@ class ShellQ4 {
     std::array<Eigen::Vector2d, 4> gamma;  // per Gauss point
   };
   TransverseShear transverse_shear(const NodeVectors& x, const NodeVectors& d) const;
+  // The one-point version of sensitivities(): the centre's section, the hourglass stiffness's
+  // derivatives through the law's elasticity, the shear's (dp: the p-variables' derivatives;
+  // pseudo: the pseudo-load).
+  ElementStatus sensitivities_reduced(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs& dp, bool pseudo,
+                                      SensDofs* load, int count, const NarrowLaws* narrow, const TransverseShear& shear,
+                                      const material::SensitivityRow& dks);
   ShellOptions options_;
   double h0_;
   double shear_modulus_;

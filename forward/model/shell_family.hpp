@@ -61,7 +61,7 @@ class ShellFamily final : public ElementFamily {
   void add_vtu_data(const FeModel& model, mesh::VtuFrame* frame) const override;
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
-  // The 2 x 2 element only (the one-point element refuses).
+  // Both the 2 x 2 element and the one-point one.
   void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) override;
   solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) override;
   solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,

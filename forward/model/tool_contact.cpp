@@ -242,11 +242,7 @@ bool ToolContact::add_derivatives(int e, const ElementConfiguration& c, const Co
   return touched;
 }
 
-std::string ToolContact::sensitivity_refusal() const {
-  const contact::ContactOptions& o = contact_->options();
-  if (passive_) return "";
-  if (o.surface != contact::ContactOptions::Surface::flat) return "contact.surface = \"phong\": the curved contact surface has no parameter sensitivities yet";
-  return "";
-}
+// Both contact surfaces (flat facets and Phong's) and every tool differentiate.
+std::string ToolContact::sensitivity_refusal() const { return ""; }
 
 }  // namespace spifit::model

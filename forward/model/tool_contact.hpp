@@ -62,7 +62,7 @@ class ToolContact final : public ElementContribution {
 
   // ElementContribution
   std::string name() const override { return "tool_contact"; }
-  // Flat facets only: the curved (phong) surface has no sensitivities yet.
+  // None: both surfaces (flat facets and Phong's) differentiate.
   std::string sensitivity_refusal() const override;
   // The penalty K_p and the friction coefficient mu as parameters of a run's sensitivities, in
   // these derivative slots (-1: not); set before FeModel::enable_sensitivities.

@@ -2,8 +2,8 @@
 // Whether a scene can be run with exact parameter sensitivities (RunControl::sensitivities;
 // docs/design/sensitivities.md) with respect to given names, asked before anything is written
 // or a fit relies on it: the scene kind, friction, the names against the card and the contact
-// penalty, and the model's own refusals (the explicit scheme, the one-point shell, solid
-// families, the phong surface, virtual tools), found by building the model without running it.
+// penalty, and the model's own refusals (the explicit scheme, solid families), found by building
+// the model without running it.
 #include "forward/scenes/common/scene.hpp"
 
 #include <optional>
