@@ -27,6 +27,7 @@ struct SensitivityCheckRow {
 struct SensitivityCheck {
   std::vector<SensitivityCheckRow> rows;
   int runs = 0;
+  double tolerance = 0.0;  // the Newton tolerance every run took (0: the scene's own)
   bool agrees() const {
     for (const auto& r : rows)
       if (!r.agrees()) return false;

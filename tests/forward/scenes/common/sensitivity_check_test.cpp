@@ -60,5 +60,26 @@ TEST(SensitivityCheck, ZieglerOnTheIndent) { expect_agreement("aa3003o_c8_ziegle
 
 TEST(SensitivityCheck, HillCoefficientsOnTheIndent) { expect_agreement("aa3003o_c3c4.toml", {"hill.F", "hill.H", "hill.N"}); }
 
+// A disagreement at the scene's own tolerance also points to --tolerance (the runs' own error);
+// one at a tolerance asked for points to smaller steps alone.
+TEST(SensitivityCheck, ADisagreementSaysWhatMaySettleIt) {
+  SensitivityCheck c;
+  SensitivityCheckRow row;
+  row.name = "contact.friction";
+  row.difference = 1e-4;
+  row.spread = 1e-8;
+  c.rows.push_back(row);
+  const std::string own = format_sensitivity_check(c);
+  EXPECT_NE(own.find("DIFFERS"), std::string::npos) << own;
+  EXPECT_NE(own.find("--relative-step"), std::string::npos) << own;
+  EXPECT_NE(own.find("--tolerance 1e-10"), std::string::npos) << own;
+  c.tolerance = 1e-10;
+  const std::string tight = format_sensitivity_check(c);
+  EXPECT_NE(tight.find("--relative-step"), std::string::npos) << tight;
+  EXPECT_EQ(tight.find("--tolerance"), std::string::npos) << tight;
+  c.rows[0].difference = 1e-9;
+  EXPECT_NE(format_sensitivity_check(c).find("agree"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace spifit::scene
