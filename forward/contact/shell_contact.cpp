@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -256,9 +257,9 @@ bool ShellContact::element_derivatives(int e, const element::NodeVectors& x, con
     if (!trial_[sid].active) continue;
     any = true;
     const Eigen::Vector4d& N = points_[static_cast<std::size_t>(p)].N;
-    PhongPoint curved;
+    std::optional<PhongPoint> curved;
     if (phong) curved = phong_point(pj, N, o);
-    const SensVec xp = phong ? curved.x : surface_at(pj.data(), N, o, false), xp0 = surface_at(pj0.data(), N, o, phong);
+    const SensVec xp = phong ? curved->x : surface_at(pj.data(), N, o, false), xp0 = surface_at(pj0.data(), N, o, phong);
     SensVec tc;
     for (int k = 0; k < 3; ++k) tc(k) = material::with_derivatives(committed_[sid].traction(k), committed_dt_[sid].row(k));
     SensVec t;
@@ -266,7 +267,7 @@ bool ShellContact::element_derivatives(int e, const element::NodeVectors& x, con
     if (keep)
       for (int k = 0; k < 3; ++k) trial_dt_[sid].row(k) = t(k).v.transpose();
     if (phong) {  // r_p = J^T f, J moving with the nodes, the directors and the offset
-      for (int i = 0; i < 24; ++i) drp->row(i) += (curved.J(0, i) * f(0) + curved.J(1, i) * f(1) + curved.J(2, i) * f(2)).v.transpose();
+      for (int i = 0; i < 24; ++i) drp->row(i) += (curved->J(0, i) * f(0) + curved->J(1, i) * f(1) + curved->J(2, i) * f(2)).v.transpose();
       continue;
     }
     for (int I = 0; I < 4; ++I)

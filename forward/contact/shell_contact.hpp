@@ -80,7 +80,7 @@ class ShellContact {
     int penalty = -1, friction = -1;
   };
   // From the next increment on, the contact points keep the derivatives of their committed
-  // tangential traction (the friction's stick history). Flat facets only (std::invalid_argument).
+  // tangential traction (the friction's stick history). Both surfaces (flat facets and Phong's).
   void enable_sensitivities(const ParameterSlots& slots);
   // The committed traction derivatives for checkpoints, bit-exact, slots 0 .. count - 1 (the
   // others are zero); load_sensitivities resets the trial ones to them.

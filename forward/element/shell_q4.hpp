@@ -101,7 +101,8 @@ class ShellQ4 {
   // pseudo-load, the derivative of the residual with respect to the parameters at fixed nodes
   // (through the law's parameters and the committed state's derivatives), into *load (DOF
   // order, rotations about x, y, z). du (the nodal DOFs' derivatives, rotations about x, y, z):
-  // the sections' trial derivatives, which commit() keeps; load may then be null. count: the
+  // the sections' trial derivatives, which commit() keeps; load may then be null (given, it
+  // receives the sections' part alone, not the total derivative: callers ask with du null). count: the
   // parameters in slots 0 .. count - 1; with room for three more slots, the pseudo-load pass
   // linearises the layers in their strains (ShellSection::pseudo_resultants) and the pass with du
   // that follows it only advances their derivatives: one Jet integration per increment, not two.

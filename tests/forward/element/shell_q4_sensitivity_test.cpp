@@ -19,7 +19,7 @@ using material::FieldSeed;
 using material::MaterialField;
 using material::SensitivityRow;
 
-constexpr int kSlots = 5;  // Swift K, n, AF CX, E; slot 4 moves the nodes
+constexpr int kSlots = 6;  // Swift K, n, AF CX, E; slot 4 moves the nodes; slot 5 nu
 
 SensitivityRow unit(int k) {
   SensitivityRow r = SensitivityRow::Zero();
@@ -31,7 +31,8 @@ std::vector<FieldSeed> seeds(const material::MaterialParams<double>& p) {
   return {{{MaterialField::hardening, p.hardening.law, 0}, unit(0)},
           {{MaterialField::hardening, p.hardening.law, 2}, unit(1)},
           {{MaterialField::kinematic, p.kinematic.law, 0}, unit(2)},
-          {{MaterialField::E, -1, 0}, unit(3)}};
+          {{MaterialField::E, -1, 0}, unit(3)},
+          {{MaterialField::nu, -1, 0}, unit(5)}};
 }
 
 // A distorted, slightly warped quad with non-parallel directors.
@@ -112,14 +113,15 @@ void expect_path_derivatives_match(const ShellOptions& o) {
   }
   EXPECT_GT(el.section(0).layer_state(4).eqps, 0.005);
   for (int k = 0; k < kSlots; ++k) {
-    const double h = k == 0 ? 0.5 : k == 1 ? 1e-4 : k == 2 ? 0.05 : k == 3 ? 50.0 : 1e-5;
+    const double h = k == 0 ? 0.5 : k == 1 ? 1e-4 : k == 2 ? 0.05 : k == 3 ? 50.0 : k == 4 ? 1e-5 : 1e-4;
     std::vector<Vec24> cd(6), cd4(6);
     for (double step : {h, h / 4.0}) {
       material::MaterialParams<double> pp = p, pm = p;
       double sp = 0.0, sm = 0.0;
-      if (k < 4) {
-        material::material_field(pp, sd[static_cast<std::size_t>(k)].field) += step;
-        material::material_field(pm, sd[static_cast<std::size_t>(k)].field) -= step;
+      if (k != 4) {
+        const std::size_t seed = static_cast<std::size_t>(k < 4 ? k : 4);
+        material::material_field(pp, sd[seed].field) += step;
+        material::material_field(pm, sd[seed].field) -= step;
       } else {
         sp = step;
         sm = -step;

@@ -53,6 +53,7 @@ struct SheetSetup {
   contact::ContactOptions contact;
   std::function<Eigen::Vector3d(double)> centre;  // the tool's centre against the load factor
   int increments = 10;                            // equal, converged to 1e-11
+  double hourglass = 0.0;                         // > 0: the one-point shell
   bool robust = false;                            // line search, 40 iterations, no divergence rule
   // With sensitivities: the card's seeds in `count` slots, the contact's own slots.
   std::vector<FieldSeed> seeds;
@@ -69,6 +70,7 @@ SheetRun run_sheet(const material::MaterialParams<double>& p, const SheetSetup& 
   const mesh::Mesh mesh = mesh::square_sheet(so);
   ShellModelOptions mo;
   mo.shell.thickness_points = 3;
+  mo.shell.hourglass_stiffness = setup.hourglass;
   ShellModel model(mesh, 0.5, p, mo);
   ToolContact& tool = attach_tool(model, kToolRadius, setup.centre, setup.contact);
   solver::DofConstraints c(model.num_dofs());
@@ -100,8 +102,10 @@ SheetRun run_sheet(const material::MaterialParams<double>& p, const SheetSetup& 
 }
 
 // The sheet indented 1.2 mm in ten equal increments.
-SheetRun indent(const material::MaterialParams<double>& p, bool sensitivities, double penalty = 1000.0) {
+SheetRun indent(const material::MaterialParams<double>& p, bool sensitivities, double penalty = 1000.0, double hourglass = 0.0) {
   SheetSetup setup;
+  setup.hourglass = hourglass;
+  setup.robust = hourglass > 0.0;  // the one-point sheet needs the line search at 0.6 mm and beyond
   setup.contact.penalty = penalty;
   setup.centre = [](double lambda) { return Eigen::Vector3d(0.3, -0.2, 0.25 + kToolRadius - 1.2 * lambda); };
   if (sensitivities) {
@@ -112,11 +116,11 @@ SheetRun indent(const material::MaterialParams<double>& p, bool sensitivities, d
   return run_sheet(p, setup);
 }
 
-TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
+void expect_indent_derivatives_match(double hourglass) {
   const material::MaterialParams<double> p = card();
-  const SheetRun ddm = indent(p, true);
+  const SheetRun ddm = indent(p, true, 1000.0, hourglass);
   ASSERT_EQ(ddm.force.size(), 10u);
-  const SheetRun plain = indent(p, false);
+  const SheetRun plain = indent(p, false, 1000.0, hourglass);
   for (std::size_t n = 0; n < ddm.force.size(); ++n) EXPECT_EQ(ddm.force[n], plain.force[n]) << "increment " << n;
   const std::vector<FieldSeed> sd = seeds();
   const char* names[kCount] = {"swift.K", "swift.n", "elastic.E", "hill.G", "contact.penalty"};
@@ -140,7 +144,7 @@ TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
         pp.H = 2.0 - pp.G;
         pm.H = 2.0 - pm.G;
       }
-      const SheetRun rp = indent(pp, false, kp), rm = indent(pm, false, km);
+      const SheetRun rp = indent(pp, false, kp, hourglass), rm = indent(pm, false, km, hourglass);
       for (std::size_t n = 0; n < 10; ++n) (step == steps[k] ? cd : cd4)[n] = (rp.force[n] - rm.force[n]) / (2.0 * step);
     }
     std::vector<Eigen::Vector3d> exact;
@@ -149,6 +153,12 @@ TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) {
     std::printf("%s: largest relative difference to central differences (h/4) %.2e\n", names[k], worst);
   }
 }
+
+TEST(ShellModelSensitivity, ToolForceDerivativesMatchCentralDifferences) { expect_indent_derivatives_match(0.0); }
+
+// The one-point shell: its centre's section carries the thickness and the contact's offset, and
+// the hourglass stiffness follows E.
+TEST(ShellModelSensitivity, OnePointShellToolForceDerivativesMatchCentralDifferences) { expect_indent_derivatives_match(0.03); }
 
 // The indentation continued by a drag: pressed 0.8 mm into the sheet in 8 increments, then moved
 // 1 mm along x in 16 more, with Coulomb friction: the stick history (the committed tangential

@@ -60,8 +60,8 @@ TEST(SensitivityCheck, ZieglerOnTheIndent) { expect_agreement("aa3003o_c8_ziegle
 
 TEST(SensitivityCheck, HillCoefficientsOnTheIndent) { expect_agreement("aa3003o_c3c4.toml", {"hill.F", "hill.H", "hill.N"}); }
 
-// A disagreement at the scene's own tolerance also points to --tolerance (the runs' own error);
-// one at a tolerance asked for points to smaller steps alone.
+// A disagreement at the scene's own tolerance, or one looser than 1e-10, also points to
+// --tolerance (the runs' own error); one at 1e-10 points to smaller steps alone.
 TEST(SensitivityCheck, ADisagreementSaysWhatMaySettleIt) {
   SensitivityCheck c;
   SensitivityCheckRow row;
@@ -73,6 +73,8 @@ TEST(SensitivityCheck, ADisagreementSaysWhatMaySettleIt) {
   EXPECT_NE(own.find("DIFFERS"), std::string::npos) << own;
   EXPECT_NE(own.find("--relative-step"), std::string::npos) << own;
   EXPECT_NE(own.find("--tolerance 1e-10"), std::string::npos) << own;
+  c.tolerance = 1e-8;
+  EXPECT_NE(format_sensitivity_check(c).find("--tolerance 1e-10"), std::string::npos);
   c.tolerance = 1e-10;
   const std::string tight = format_sensitivity_check(c);
   EXPECT_NE(tight.find("--relative-step"), std::string::npos) << tight;
