@@ -72,6 +72,16 @@ SensDofs director_variable_derivatives(const NodeVectors& d, const SensDofs& du)
   return dp;
 }
 
+SensDofs director_force_derivatives(const NodeVectors& d, const SensDofs& rp, int count) {
+  SensDofs out = SensDofs::Zero();
+  for (int k = 0; k < count; ++k) {
+    Vec24 ru;
+    director_to_dofs(d, Vec24(rp.col(k)), nullptr, &ru, nullptr);
+    out.col(k) = ru;
+  }
+  return out;
+}
+
 ElementStatus dof_results(const NodeVectors& d, const Vec24& rp, const Mat24* kp, bool symmetric, double drilling_factor, double area,
                           Vec24* residual, Mat24* tangent) {
   Vec24 ru;

@@ -13,6 +13,11 @@ void mirror_upper_blocks(Mat24& k);
 // sensitivity slot) as derivatives of the positions and directors: dd_I = dpsi_I x d_I.
 SensDofs director_variable_derivatives(const NodeVectors& d, const SensDofs& du);
 
+// The other way, for forces: the derivatives of forces on the positions and directors (a column
+// per slot, the first `count`) as derivatives of the forces and moments on the DOFs
+// (director_to_dofs, linear in the forces); the other columns zero.
+SensDofs director_force_derivatives(const NodeVectors& d, const SensDofs& rp, int count);
+
 // The element's residual and tangent on its DOFs from their derivatives rp and kp (kp null:
 // the residual alone) with respect to the positions and directors (director_to_dofs), the
 // drilling stiffness added; a failure if the forces are not finite.

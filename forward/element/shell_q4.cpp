@@ -489,17 +489,6 @@ SectionStatus section_sensitivities(ShellSection& section, const Eigen::Matrix3d
   return {};
 }
 
-// From the derivatives of the p-variables' residual (positions and directors) to the DOFs',
-// column by column.
-void to_dof_loads(const NodeVectors& d, const SensDofs& rp, int count, SensDofs* load) {
-  load->setZero();
-  for (int k = 0; k < count; ++k) {
-    Vec24 ru;
-    director_to_dofs(d, Vec24(rp.col(k)), nullptr, &ru, nullptr);
-    load->col(k) = ru;
-  }
-}
-
 }  // namespace
 
 ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d, const SensLaw& law, const SensDofs* du, SensDofs* load, int count,
@@ -526,7 +515,7 @@ ElementStatus ShellQ4::sensitivities(const NodeVectors& x, const NodeVectors& d,
     const Eigen::Matrix<double, 2, kSensitivitySlots> dQ = shear.gamma[q] * dks;
     rp.noalias() += pg.weight * (B.topRows<6>().transpose().lazyProduct(ds6) + B.bottomRows<2>().transpose().lazyProduct(dQ));
   }
-  if (load) to_dof_loads(d, rp, count, load);
+  if (load) *load = director_force_derivatives(d, rp, count);
   return {};
 }
 
@@ -551,6 +540,9 @@ ElementStatus ShellQ4::sensitivities_reduced(const NodeVectors& x, const NodeVec
   // sum_q w_q B_q^T (dH dv_q + dQ_q) + B_c^T (area ds6 - sum_q w_q dH dv_q).
   const auto& C = law.elastic_matrix();
   const double membrane = options_.hourglass_stiffness * h0_, bending = membrane * h0_ * h0_ / 12.0;
+  std::array<material::SensitivityRow, 9> dC;  // row-major
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) dC[static_cast<std::size_t>(3 * i + j)] = material::derivatives_of(C(i, j));
   std::array<PointKinematics, 4> kq;
   const std::array<Vec6, 4> dv = strain_variation(x, d, ec, &kq);
   SensSlots centre_force = area_ * ds6;
@@ -562,7 +554,7 @@ ElementStatus ShellQ4::sensitivities_reduced(const NodeVectors& x, const NodeVec
     SensSlots dhdv = SensSlots::Zero();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
-        const material::SensitivityRow dc = material::derivatives_of(C(i, j));
+        const material::SensitivityRow& dc = dC[static_cast<std::size_t>(3 * i + j)];
         dhdv.row(i) += (membrane * dv[q](j)) * dc;
         dhdv.row(3 + i) += (bending * dv[q](3 + j)) * dc;
       }
@@ -573,7 +565,7 @@ ElementStatus ShellQ4::sensitivities_reduced(const NodeVectors& x, const NodeVec
     rp.noalias() += pg.weight * (B.topRows<6>().transpose().lazyProduct(dhdv) + B.bottomRows<2>().transpose().lazyProduct(dQ));
   }
   rp.noalias() += Bc.topRows<6>().transpose().lazyProduct(centre_force);
-  to_dof_loads(d, rp, count, load);
+  *load = director_force_derivatives(d, rp, count);
   return {};
 }
 

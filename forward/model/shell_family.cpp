@@ -296,11 +296,8 @@ solver::ElementEvaluation ShellFamily::sensitivity_load(int e, const ElementInpu
   Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
   if (contribution_derivatives(e, in, x, d, du0, nullptr, &drc, &force)) {
     // The moment rows are d x r_d: linear in the p-variables' forces, column by column.
-    element::Vec24 ru;
-    for (int k = 0; k < sensitivity_count_; ++k) {
-      element::director_to_dofs(d, element::Vec24(drc.col(k)), nullptr, &ru, nullptr);
-      l.col(k) += ru;
-    }
+    const element::SensDofs dru = element::director_force_derivatives(d, drc, sensitivity_count_);
+    for (int k = 0; k < sensitivity_count_; ++k) l.col(k) += dru.col(k);
   }
   *load = l;
   return {};
