@@ -7,6 +7,7 @@
 #include "forward/io/input_error.hpp"
 #include "forward/material/material_card.hpp"
 #include "forward/io/output_directory.hpp"
+#include "forward/scenes/common/sensitivity_brief.hpp"
 #include "forward/scenes/common/sensitivity_check.hpp"
 #include "forward/scenes/sensitivity_refusal.hpp"
 #include "forward/scenes/input_reference.hpp"
@@ -204,6 +205,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& g, int& exit_code) {
     }
     if (!g.quiet) {
       std::printf("%s\n", result->brief_report().c_str());
+      std::printf("%s", scene::sensitivity_brief(*result).c_str());
       for (const auto& w : result->warnings) std::printf("  warning: %s\n", w.c_str());
     }
     exit_code = 0;

@@ -76,6 +76,14 @@ TEST(SensitivityCli, IndentWritesDerivativesBesideUnchangedForces) {
   // by direct differentiation (checked against central differences in shell_model_sensitivity_test).
   EXPECT_NEAR(std::stod(last[7]), 282.82, 0.01);
   EXPECT_NEAR(std::stod(last[4]) * 180.0, std::stod(last[7]), 1e-9 * std::stod(last[7]));  // K = 180 MPa (card C.4)
+  // The terminal says it too, beside the run's line: at the peak Fz, the indent's last increment.
+  EXPECT_NE(r.out.find("sensitivities of the peak Fz (289.40 N at t = "), std::string::npos) << r.out;
+  const auto k_line = r.out.find("    swift.K ");
+  ASSERT_NE(k_line, std::string::npos) << r.out;
+  const std::string said = r.out.substr(k_line, r.out.find('\n', k_line) - k_line);
+  EXPECT_NE(said.find("N/MPa"), std::string::npos) << said;
+  EXPECT_NE(said.find("p dFz/dp      282.8 N"), std::string::npos) << said;
+  EXPECT_NE(r.out.find("    elastic.E "), std::string::npos) << r.out;
   EXPECT_TRUE(fs::exists(out / "plots" / "run_sensitivities.svg"));  // the run report's plot
   // The final VTU step carries the displacement's derivatives, raw and scaled by the value.
   const std::string vtu = slurp(out / "vtu" / "sheet_000001.vtu");
