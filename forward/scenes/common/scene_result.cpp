@@ -1,5 +1,7 @@
 #include "forward/scenes/common/scene_result.hpp"
 
+#include "forward/scenes/common/sensitivity_log.hpp"
+
 #include "forward/scenes/common/tool_force_history.hpp"
 
 #include <algorithm>
@@ -41,9 +43,8 @@ Eigen::Matrix<double, 3, Eigen::Dynamic> SceneResult::force_sensitivity(std::siz
   const ToolForceHistory* force = tool_force();
   if (!table || !force || table->size() != force->samples().size() || i >= table->size()) return Eigen::Matrix<double, 3, Eigen::Dynamic>(3, 0);
   // sensitivities.csv's layout (sensitivity_log.hpp): time, lambda, then per parameter dF and p dF.
-  const std::size_t columns = table->columns().size();
-  if (columns < 8 || (columns - 2) % 6 != 0) return Eigen::Matrix<double, 3, Eigen::Dynamic>(3, 0);
-  const auto q = static_cast<Eigen::Index>((columns - 2) / 6);
+  const auto q = static_cast<Eigen::Index>(sensitivity_log_parameters(*table));
+  if (q == 0) return Eigen::Matrix<double, 3, Eigen::Dynamic>(3, 0);
   Eigen::Matrix<double, 3, Eigen::Dynamic> d(3, q);
   const std::vector<double>& row = table->row(i);
   for (Eigen::Index k = 0; k < q; ++k)

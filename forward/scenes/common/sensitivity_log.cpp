@@ -4,9 +4,7 @@
 #include "forward/model/fe_model.hpp"
 
 namespace spifit::scene {
-namespace {
-
-std::vector<io::Column> columns(const std::vector<std::string>& names, const std::vector<std::string>& units) {
+std::vector<io::Column> sensitivity_log_columns(const std::vector<std::string>& names, const std::vector<std::string>& units) {
   std::vector<io::Column> c{{"time", "s"}, {"lambda", ""}};
   for (std::size_t k = 0; k < names.size(); ++k) {
     const std::string& u = units[k];
@@ -17,12 +15,15 @@ std::vector<io::Column> columns(const std::vector<std::string>& names, const std
   return c;
 }
 
-}  // namespace
+std::size_t sensitivity_log_parameters(const io::Series& table) {
+  const std::size_t columns = table.columns().size();
+  return columns >= 8 && (columns - 2) % 6 == 0 ? (columns - 2) / 6 : 0;
+}
 
 SensitivityLog::SensitivityLog(std::vector<std::string> names, const std::vector<std::string>& units, std::vector<double> values,
                                std::string comment, std::function<Eigen::Vector3d(const Eigen::Vector3d&)> whole, const RunFiles& files)
     : names_(std::move(names)), values_(std::move(values)), comment_(std::move(comment)), whole_(std::move(whole)), files_(files),
-      table_(columns(names_, units)) {}
+      table_(sensitivity_log_columns(names_, units)) {}
 
 void SensitivityLog::after_increment(const IncrementView& v) {
   const auto& d = v.model.contribution_force_sensitivity();

@@ -14,6 +14,12 @@
 
 namespace spifit::scene {
 
+// The table's columns: time, lambda, then per parameter dFx, dFy, dFz/d(name) [N per unit] and
+// name*dFx, dFy, dFz/d(name) [N].
+std::vector<io::Column> sensitivity_log_columns(const std::vector<std::string>& names, const std::vector<std::string>& units);
+// The number of parameters a table of that layout holds; 0 when it is not of that layout.
+std::size_t sensitivity_log_parameters(const io::Series& table);
+
 class SensitivityLog : public RunObserver {
  public:
   // names, units, values: the parameters, their units and values; comment: the first line of the file

@@ -2,6 +2,7 @@
 // the dominant peak component's derivatives at its own sample, raw with their unit and scaled.
 #include "forward/scenes/common/sensitivity_brief.hpp"
 
+#include "forward/scenes/common/sensitivity_log.hpp"
 #include "forward/scenes/common/tool_force_history.hpp"
 
 #include <gtest/gtest.h>
@@ -20,18 +21,14 @@ class TableResult : public SceneResult {
   const io::Series* force_sensitivities() const override { return table.empty() ? nullptr : &table; }
 };
 
-io::Series sensitivity_table(const std::vector<std::pair<std::string, std::string>>& parameters) {
-  std::vector<io::Column> c{{"time", "s"}, {"lambda", ""}};
-  for (const auto& [name, unit] : parameters) {
-    for (const char* f : {"Fx", "Fy", "Fz"}) c.push_back({"d" + std::string(f) + "/d(" + name + ")", unit});
-    for (const char* f : {"Fx", "Fy", "Fz"}) c.push_back({name + "*d" + std::string(f) + "/d(" + name + ")", "N"});
-  }
-  return io::Series(c);
+// The run's own layout (SensitivityLog's columns).
+io::Series sensitivity_table(const std::vector<std::string>& names, const std::vector<std::string>& units) {
+  return io::Series(sensitivity_log_columns(names, units));
 }
 
 TEST(SensitivityBrief, TheDominantPeakComponentAtItsOwnSample) {
   TableResult r;
-  r.table = sensitivity_table({{"swift.K", "N/MPa"}, {"contact.friction", "N"}});
+  r.table = sensitivity_table({"swift.K", "contact.friction"}, {"MPa", ""});
   // Fz's peak (-300 N, the largest magnitude of any component) lies in the second sample.
   const double fz[] = {100.0, -300.0, 200.0};
   for (int i = 0; i < 3; ++i) {
@@ -54,7 +51,7 @@ TEST(SensitivityBrief, NothingWithoutATableThatMatchesTheForces) {
   s.force = Eigen::Vector3d(0.0, 0.0, 10.0);
   r.force.add(s);
   EXPECT_EQ(sensitivity_brief(r), "");  // no sensitivities asked for
-  r.table = sensitivity_table({{"swift.K", "N/MPa"}});
+  r.table = sensitivity_table({"swift.K"}, {"MPa"});
   r.table.add_row({0.0, 0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0});
   EXPECT_NE(sensitivity_brief(r), "");
   r.force.add(s);
