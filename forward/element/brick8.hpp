@@ -30,6 +30,8 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 namespace spifit::element {
 
 // The hourglass stabilisation: the factor on the incompatible-modes stiffness, and the modulus it
@@ -41,6 +43,8 @@ struct HourglassOptions {
 };
 
 using BrickStatus = PointStatus;
+// Derivatives of the 24 corner DOFs (or forces) with respect to the run's parameters.
+using HexSensitivities = Eigen::Matrix<double, 24, material::kSensitivitySlots>;
 
 class Brick8 final : public SolidElement {
  public:
@@ -56,6 +60,22 @@ class Brick8 final : public SolidElement {
   BrickStatus evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) override;
   void commit() override;
   void revert() override;
+
+  // Direct differentiation (docs/design/sensitivities.md, "Solids"), at the corners x of the
+  // converged iterate. enable_sensitivities: the committed state's derivatives (centre, hourglass
+  // amplitudes and forces, the stabilisation's stiffness, thickness) start from the reference
+  // state's, with respect to the parameters seeded in `law` (count of them). sensitivities: with
+  // du null, the pseudo-load (the forces' derivatives at fixed corners) into *load; with du (the
+  // corners' derivatives), the trial derivatives that commit() keeps.
+  void enable_sensitivities(const SensLaw6& law, int count);
+  BrickStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load);
+  // Whether the last evaluate()'s tangent was exact, and the switch (SolidPoint::set_exact_tangents).
+  bool tangent_was_exact() const { return point_.tangent_was_exact(); }
+  void set_exact_tangents(bool exact) { point_.set_exact_tangents(exact); }
+  // The committed thickness_ratio()'s derivatives.
+  const material::SensitivityRow& thickness_ratio_sensitivity() const { return dthickness_; }
+  void save_sensitivities(io::BinaryWriter& w, int count) const;
+  void load_sensitivities(io::BinaryReader& r, int count);
 
   // F (global current <- material-frame reference) at the corners x.
   Eigen::Matrix3d deformation_gradient(const HexCorners& x) const;
@@ -94,6 +114,20 @@ class Brick8 final : public SolidElement {
   Eigen::Matrix<double, 12, 1> g_ = Eigen::Matrix<double, 12, 1>::Zero(), g_trial_ = Eigen::Matrix<double, 12, 1>::Zero();  // hourglass forces
   double volume0_ = 0.0;
   void update_hourglass_stiffness();
+  // The parts of evaluate() that sensitivities() shares: E in the material frame, the hourglass
+  // vectors q of the corners, B = dE/dx and M = dQ/dx.
+  static Voigt6 green_strain(const Eigen::Matrix3d& H);
+  Eigen::Matrix<double, 3, 4> hourglass_vectors(const HexCorners& x) const;
+  Eigen::Matrix<double, 6, 24> strain_matrix(const Eigen::Matrix3d& F) const;
+  Eigen::Matrix<double, 12, 24> amplitude_matrix(const Eigen::Matrix3d& F, const Eigen::Matrix<double, 3, 4>& q) const;
+  // Direct differentiation: dK_q of the committed tangent, and its derivatives.
+  void update_hourglass_stiffness_derivatives();
+  using Mat12 = Eigen::Matrix<double, 12, 12>;
+  using Sens12 = Eigen::Matrix<double, 12, material::kSensitivitySlots>;
+  int sensitivity_count_ = 0;
+  std::vector<Mat12> dkq_elastic_, dkq_;  // per parameter
+  Sens12 dq_ = Sens12::Zero(), dq_trial_ = Sens12::Zero(), dg_ = Sens12::Zero(), dg_trial_ = Sens12::Zero();
+  material::SensitivityRow dthickness_ = material::SensitivityRow::Zero(), dthickness_trial_ = material::SensitivityRow::Zero();
   SolidPoint point_;
   double hourglass_energy_ = 0.0, hourglass_energy_trial_ = 0.0;
   double thickness_ratio_ = 1.0, thickness_ratio_trial_ = 1.0;

@@ -144,13 +144,20 @@ HexMatrix hex_full_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
   return K;
 }
 
-HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
+namespace {
+// The incompatible-modes element's blocks for D, each linear in D: displacements (uu), their
+// coupling to the nine modes (ua) and the modes' own (aa).
+struct IncompatibleBlocks {
+  HexMatrix uu = HexMatrix::Zero();
+  Eigen::Matrix<double, 24, 9> ua = Eigen::Matrix<double, 24, 9>::Zero();
+  Eigen::Matrix<double, 9, 9> aa = Eigen::Matrix<double, 9, 9>::Zero();
+};
+
+IncompatibleBlocks incompatible_blocks(const HexCorners& X, const Voigt6Matrix& D) {
   const Eigen::Matrix3d J0 = hex_jacobian(X, hex_parent_derivatives(Eigen::Vector3d::Zero()));
   const double det0 = checked_determinant(J0, -1);
   const Eigen::Matrix3d J0inv = J0.inverse();
-  HexMatrix Kuu = HexMatrix::Zero();
-  Eigen::Matrix<double, 24, 9> Kua = Eigen::Matrix<double, 24, 9>::Zero();
-  Eigen::Matrix<double, 9, 9> Kaa = Eigen::Matrix<double, 9, 9>::Zero();
+  IncompatibleBlocks k;
   for (int p = 0; p < 8; ++p) {
     const Eigen::Vector3d s = gauss_point(p);
     const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(s);
@@ -162,11 +169,29 @@ HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matr
     Eigen::Matrix3d dP = Eigen::Matrix3d::Zero();
     for (int k = 0; k < 3; ++k) dP(k, k) = -2.0 * s(k);
     const Eigen::Matrix<double, 6, 9> Ba = strain_rows<3>(Eigen::Matrix3d(J0inv * dP * (det0 / det)));
-    Kuu += B.transpose() * D * B * det;
-    Kua += B.transpose() * D * Ba * det;
-    Kaa += Ba.transpose() * D * Ba * det;
+    k.uu += B.transpose() * D * B * det;
+    k.ua += B.transpose() * D * Ba * det;
+    k.aa += Ba.transpose() * D * Ba * det;
   }
-  return Kuu - Kua * Kaa.ldlt().solve(Kua.transpose());
+  return k;
+}
+}  // namespace
+
+HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
+  const IncompatibleBlocks k = incompatible_blocks(X, D);
+  return k.uu - k.ua * k.aa.ldlt().solve(k.ua.transpose());
+}
+
+Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness_derivative(const HexCorners& X, const Voigt6Matrix& D, const Voigt6Matrix& dD) {
+  // K = Kuu - Kua Kaa^-1 Kua^T with every block linear in D, Kaa read from its lower triangle as
+  // the LDL^T factorisation reads it (a consistent tangent with kinematic hardening is not
+  // symmetric): dK = dKuu - dKua S - S^T dKua^T + S^T dKaa S, S = Kaa^-1 Kua^T.
+  const IncompatibleBlocks k = incompatible_blocks(X, D), dk = incompatible_blocks(X, dD);
+  const Eigen::Matrix<double, 9, 24> S = k.aa.ldlt().solve(k.ua.transpose());
+  const Eigen::Matrix<double, 9, 9> daa = dk.aa.selfadjointView<Eigen::Lower>();
+  const HexMatrix dK = dk.uu - dk.ua * S - S.transpose() * dk.ua.transpose() + S.transpose() * daa * S;
+  const Eigen::Matrix<double, 24, 12> H = hex_hourglass_shapes();
+  return H.transpose() * dK * H;
 }
 
 Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness(const HexCorners& X, const Voigt6Matrix& D) {

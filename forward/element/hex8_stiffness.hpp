@@ -63,6 +63,9 @@ HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matr
 // H^T K_im H (12 x 12): the incompatible-modes element's stiffness of unit hourglass amplitudes,
 // in the amplitudes' order of hex_hourglass_operator.
 Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness(const HexCorners& X, const Voigt6Matrix& D);
+// Its derivative along dD at D (direct differentiation: the stabilisation built on a consistent
+// tangent that moves with the parameters).
+Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness_derivative(const HexCorners& X, const Voigt6Matrix& D, const Voigt6Matrix& dD);
 // G^T (H^T K_im H) G: the hourglass stabilisation (K_im the incompatible-modes stiffness).
 HexMatrix hex_stabilisation_stiffness(const HexCorners& X, const Voigt6Matrix& D);
 

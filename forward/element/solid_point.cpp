@@ -5,6 +5,7 @@
 #include <Eigen/Cholesky>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 namespace spifit::element {
@@ -39,15 +40,18 @@ PointStatus SolidPoint::update(const Voigt6& green, Voigt6* S, Voigt6x6* tangent
   const LogStrain3 ls = log_strain_3d(green);
   Voigt6 t;
   Voigt6x6 ct;
-  const PointStatus status = update_log(ls.value, &t, &ct);
+  const PointStatus status = integrate(ls.value, &t, &ct, tangent != nullptr);
   if (!status.ok) return status;
   if (S) *S = ls.first.transpose() * t;
   if (tangent) *tangent = ls.first.transpose() * ct * ls.first + log_strain_3d_second(ls, t);
   return status;
 }
 
-PointStatus SolidPoint::update_log(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent) {
+PointStatus SolidPoint::update_log(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent) { return integrate(eps, T, tangent, tangent != nullptr); }
+
+PointStatus SolidPoint::integrate(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent, bool tangent_wanted) {
   PointStatus status;
+  tangent_exact_ = true;
   eps_trial_ = eps;
   const Voigt6 d_eps = eps - eps_;
   Voigt6x6 ct;
@@ -59,9 +63,16 @@ PointStatus SolidPoint::update_log(const Voigt6& eps, Voigt6* T, Voigt6x6* tange
     return status;
   }
   // Start of an increment (no strain change beyond round-off): the last converged consistent
-  // tangent instead of the elastic one, as the shell's layers do.
-  if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_.cwiseAbs().maxCoeff())) ct = tangent_;
-  tangent_trial_ = ct;
+  // tangent instead of the elastic one, as the shell's layers do (not for exact tangents).
+  if (d_eps.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_.cwiseAbs().maxCoeff())) {
+    tangent_trial_ = tangent_;
+    if (!exact_tangents_) {
+      if (tangent_wanted && ct != tangent_) tangent_exact_ = false;
+      ct = tangent_;
+    }
+  } else {
+    tangent_trial_ = ct;
+  }
   if (T) *T = point_.trial().stress;
   if (tangent) *tangent = ct;
   return status;
@@ -71,12 +82,102 @@ void SolidPoint::commit() {
   point_.commit();
   eps_ = eps_trial_;
   tangent_ = tangent_trial_;
+  if (sensitivities_) d_ = d_trial_;
 }
 
 void SolidPoint::revert() {
   point_.revert();
   eps_trial_ = eps_;
   tangent_trial_ = tangent_;
+  if (sensitivities_) d_trial_ = d_;
+}
+
+void SolidPoint::enable_sensitivities() {
+  sensitivities_ = true;
+  d_ = d_trial_ = SolidPointDerivatives();
+}
+
+PointStatus SolidPoint::sensitivities(const SensLaw6& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T) {
+  using material::derivatives_of;
+  using material::with_derivatives;
+  using S = material::SensitivityScalar;
+  if (!sensitivities_) throw std::logic_error("SolidPoint::sensitivities before enable_sensitivities");
+  // The committed state with its derivatives; the flow stress as a value (the law reads it for
+  // the elastic check alone).
+  const State& c = point_.committed();
+  material::MaterialState<S, 6> s0, s1;
+  for (int i = 0; i < 6; ++i) {
+    s0.stress(i) = with_derivatives(c.stress(i), d_.stress.row(i));
+    s0.plastic_strain(i) = with_derivatives(c.plastic_strain(i), d_.plastic_strain.row(i));
+    s0.back_stress(i) = with_derivatives(c.back_stress(i), d_.back_stress.row(i));
+  }
+  s0.eqps = with_derivatives(c.eqps, d_.eqps);
+  s0.plastic_work = with_derivatives(c.plastic_work, d_.plastic_work);
+  s0.flow_stress = S(c.flow_stress);
+  // The increment as update_log forms it, value for value.
+  const Voigt6 d_eps_value = eps - eps_;
+  Voigt6S d_eps;
+  for (int i = 0; i < 6; ++i) {
+    material::SensitivityRow d = -d_.log_strain.row(i);
+    if (deps) d += deps->row(i);
+    d_eps(i) = with_derivatives(d_eps_value(i), d);
+  }
+  Voigt6x6S ct;
+  const material::UpdateResult r = law.integrate(s0, d_eps, s1, deps ? &ct : nullptr);
+  PointStatus status;
+  if (!r.ok()) {
+    status.ok = false;
+    status.reason = r.reason;
+    status.suggested_scale = r.suggested_scale;
+    return status;
+  }
+  if (T) *T = s1.stress;
+  if (deps) {
+    for (int i = 0; i < 6; ++i) {
+      d_trial_.stress.row(i) = derivatives_of(s1.stress(i));
+      d_trial_.plastic_strain.row(i) = derivatives_of(s1.plastic_strain(i));
+      d_trial_.back_stress.row(i) = derivatives_of(s1.back_stress(i));
+    }
+    d_trial_.eqps = derivatives_of(s1.eqps);
+    d_trial_.plastic_work = derivatives_of(s1.plastic_work);
+    d_trial_.log_strain = *deps;
+    // update_log's choice of tangent: the committed one where the strain did not move.
+    if (d_eps_value.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_.cwiseAbs().maxCoeff())) {
+      d_trial_.tangent = d_.tangent;
+    } else {
+      for (int j = 0; j < 6; ++j)
+        for (int i = 0; i < 6; ++i) d_trial_.tangent.row(6 * j + i) = derivatives_of(ct(i, j));
+    }
+  }
+  return status;
+}
+
+void save_columns(io::BinaryWriter& w, const Eigen::MatrixXd& m, int count) { w.matrix(m.leftCols(count)); }
+
+Eigen::MatrixXd read_columns(io::BinaryReader& r, const char* what, int rows, int count) {
+  Eigen::MatrixXd v = r.matrix();
+  if (v.rows() != rows || v.cols() != count)
+    throw io::ArchiveError(std::string(what) + " derivatives: expected " + std::to_string(rows) + " x " + std::to_string(count) + ", found " +
+                           std::to_string(v.rows()) + " x " + std::to_string(v.cols()));
+  return v;
+}
+
+void SolidPoint::save_sensitivities(io::BinaryWriter& w, int count) const {
+  for (const Eigen::MatrixXd& m : {Eigen::MatrixXd(d_.stress), Eigen::MatrixXd(d_.plastic_strain), Eigen::MatrixXd(d_.back_stress),
+                                   Eigen::MatrixXd(d_.log_strain), Eigen::MatrixXd(d_.eqps), Eigen::MatrixXd(d_.plastic_work), Eigen::MatrixXd(d_.tangent)})
+    save_columns(w, m, count);
+}
+
+void SolidPoint::load_sensitivities(io::BinaryReader& r, int count) {
+  if (!sensitivities_) throw std::logic_error("SolidPoint::load_sensitivities before enable_sensitivities");
+  load_columns(r, "solid point stress", count, &d_.stress);
+  load_columns(r, "solid point plastic strain", count, &d_.plastic_strain);
+  load_columns(r, "solid point back-stress", count, &d_.back_stress);
+  load_columns(r, "solid point log strain", count, &d_.log_strain);
+  load_columns(r, "solid point eqps", count, &d_.eqps);
+  load_columns(r, "solid point plastic work", count, &d_.plastic_work);
+  load_columns(r, "solid point tangent", count, &d_.tangent);
+  d_trial_ = d_;
 }
 
 double SolidPoint::elastic_energy_density() const {

@@ -8,6 +8,7 @@
 // are the second Piola-Kirchhoff stress and its exact tangent (D the consistent tangent).
 #include "forward/element/log_strain_3d.hpp"
 #include "forward/material/material_point.hpp"
+#include "forward/material/sensitivity_scalar.hpp"
 
 #include <string>
 
@@ -28,6 +29,33 @@ struct PointStatus {
 // asks for a smaller step ("element turned inside out").
 PointStatus admissible_green_strain(const Voigt6& green);
 
+// Direct differentiation of a solid point (docs/design/sensitivities.md, "Solids"): the law with
+// its parameters seeded, the Jets of a Voigt vector and matrix, and a point's derivatives with
+// respect to the run's parameters, one column per slot.
+using SensLaw6 = material::ReturnMapping<material::SensitivityScalar, 6>;
+using Voigt6S = Eigen::Matrix<material::SensitivityScalar, 6, 1>;
+using Voigt6x6S = Eigen::Matrix<material::SensitivityScalar, 6, 6>;
+using SensColumns6 = Eigen::Matrix<double, 6, material::kSensitivitySlots>;
+
+// The first `count` columns of a derivative table (checkpoints), and back into a table of the
+// same rows whose other columns become zero (io::ArchiveError, naming `what`, on another size).
+void save_columns(io::BinaryWriter& w, const Eigen::MatrixXd& m, int count);
+Eigen::MatrixXd read_columns(io::BinaryReader& r, const char* what, int rows, int count);
+template <typename M>
+void load_columns(io::BinaryReader& r, const char* what, int count, M* m) {
+  m->setZero();
+  m->leftCols(count) = read_columns(r, what, static_cast<int>(m->rows()), count);
+}
+
+
+struct SolidPointDerivatives {
+  SensColumns6 stress = SensColumns6::Zero(), plastic_strain = SensColumns6::Zero(), back_stress = SensColumns6::Zero();
+  SensColumns6 log_strain = SensColumns6::Zero();
+  material::SensitivityRow eqps = material::SensitivityRow::Zero(), plastic_work = material::SensitivityRow::Zero();
+  // The consistent tangent's, column-major (36 rows).
+  Eigen::Matrix<double, 36, material::kSensitivitySlots> tangent = Eigen::Matrix<double, 36, material::kSensitivitySlots>::Zero();
+};
+
 class SolidPoint {
  public:
   using Law = material::ReturnMapping<double, 6>;
@@ -42,8 +70,29 @@ class SolidPoint {
   // volumetric part): the stress T conjugate to eps and the consistent tangent dT/d eps; either
   // may be null.
   PointStatus update_log(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent);
+  // A point starting an increment at rest (no strain change) gives Newton its last converged
+  // consistent tangent instead of the zero step's (a better first iteration after a pause), which
+  // is not the exact derivative of its stress where the two differ (tangent_was_exact false, for
+  // the last update that asked for a tangent). set_exact_tangents(true): updates give the exact
+  // tangent, and leave the state (the tangent kept for commit) as Newton's would.
+  bool tangent_was_exact() const { return tangent_exact_; }
+  void set_exact_tangents(bool exact) { exact_tangents_ = exact; }
   void commit();
   void revert();
+
+  // Direct differentiation, once enabled (the committed state's derivatives start at zero and
+  // follow commit() and revert()): the stress T at the log strain eps (the value of the last
+  // update_log) with its derivatives, from the committed state's derivatives and the law's seeded
+  // parameters. deps: the log strain's derivatives (the trial derivatives of the state, the log
+  // strain and the consistent tangent are then kept for commit); null: eps held fixed (the
+  // pseudo-stress). T may be null.
+  void enable_sensitivities();
+  bool sensitivities_enabled() const { return sensitivities_; }
+  PointStatus sensitivities(const SensLaw6& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T);
+  const SolidPointDerivatives& committed_derivatives() const { return d_; }
+  // The committed derivatives, slots 0 .. count - 1 (checkpoints).
+  void save_sensitivities(io::BinaryWriter& w, int count) const;
+  void load_sensitivities(io::BinaryReader& r, int count);
 
   const State& committed() const { return point_.committed(); }
   const State& trial() const { return point_.trial(); }
@@ -65,6 +114,10 @@ class SolidPoint {
   material::MaterialPoint<double, 6> point_;
   Voigt6 eps_ = Voigt6::Zero(), eps_trial_ = Voigt6::Zero();
   Voigt6x6 tangent_, tangent_trial_;  // consistent d T / d eps at the committed / trial state
+  bool sensitivities_ = false;
+  SolidPointDerivatives d_, d_trial_;
+  bool exact_tangents_ = false, tangent_exact_ = true;
+  PointStatus integrate(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent, bool tangent_wanted);
 };
 
 }  // namespace spifit::element

@@ -63,6 +63,13 @@ struct MidSurface {
   std::vector<double> thickness;          // the sheet's thickness there [mm]
 };
 
+// MidSurface's derivatives with respect to a run's parameters (after enable_sensitivities): per
+// mid-surface node the current position's (3 x parameters), and the thickness's (a row per node).
+struct MidSurfaceSensitivity {
+  std::vector<Eigen::Matrix<double, 3, Eigen::Dynamic>> current;
+  Eigen::MatrixXd thickness;
+};
+
 class ElementFamily {
  public:
   virtual ~ElementFamily() = default;
@@ -100,6 +107,9 @@ class ElementFamily {
   // The sections' view of the sheet. By default the model's nodes with their directors and
   // FeModel::nodal_thickness (a shell's nodes lie on its mid-surface).
   virtual MidSurface mid_surface(const FeModel& model) const;
+  // Its derivatives: by default the model's nodes' (FeModel::position_sensitivity) and
+  // FeModel::nodal_thickness_sensitivity.
+  virtual MidSurfaceSensitivity mid_surface_sensitivity(const FeModel& model) const;
   // Direct differentiation (docs/design/sensitivities.md), at the trial configuration of the
   // converged iterate. enable_sensitivities: the elements keep their committed states'
   // derivatives with respect to the parameters seeded in `law` (the family's material with

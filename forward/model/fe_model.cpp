@@ -318,4 +318,13 @@ MidSurface ElementFamily::mid_surface(const FeModel& model) const {
   return m;
 }
 
+MidSurfaceSensitivity ElementFamily::mid_surface_sensitivity(const FeModel& model) const {
+  MidSurfaceSensitivity m;
+  const int nodes = static_cast<int>(model.positions().size());
+  m.current.reserve(static_cast<std::size_t>(nodes));
+  for (int i = 0; i < nodes; ++i) m.current.push_back(model.position_sensitivity(i));
+  m.thickness = model.nodal_thickness_sensitivity();
+  return m;
+}
+
 }  // namespace spifit::model

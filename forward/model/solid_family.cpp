@@ -200,6 +200,22 @@ MidSurface SolidFamily::mid_surface(const FeModel& model) const {
   return m;
 }
 
+MidSurfaceSensitivity SolidFamily::mid_surface_sensitivity(const FeModel& model) const {
+  const std::size_t levels = static_cast<std::size_t>(layers_) + 1, n = model.mesh().nodes.size() / levels;
+  const std::size_t top = static_cast<std::size_t>(layers_) * n;
+  const std::vector<Eigen::Vector3d>& x = model.positions();
+  MidSurfaceSensitivity m;
+  m.thickness.resize(static_cast<Eigen::Index>(n), model.sensitivity_count());
+  for (std::size_t i = 0; i < n; ++i) {
+    const Eigen::Matrix<double, 3, Eigen::Dynamic> db = model.position_sensitivity(static_cast<int>(i)),
+                                                   dt = model.position_sensitivity(static_cast<int>(top + i));
+    m.current.push_back(0.5 * (db + dt));
+    const Eigen::Vector3d unit = (x[top + i] - x[i]).normalized();
+    m.thickness.row(static_cast<Eigen::Index>(i)) = unit.transpose() * (dt - db);
+  }
+  return m;
+}
+
 void SolidFamily::save_state(io::BinaryWriter& w) const {
   w.i64(static_cast<std::int64_t>(elements_.size()));
   for (const auto& el : elements_) el->save_state(w);
@@ -208,6 +224,97 @@ void SolidFamily::save_state(io::BinaryWriter& w) const {
 void SolidFamily::load_state(io::BinaryReader& r) {
   r.expect_count((name() + " elements").c_str(), static_cast<std::int64_t>(elements_.size()));
   for (auto& el : elements_) el->load_state(r);
+}
+
+void SolidFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) {
+  if (kind_ != SolidElementKind::brick)
+    throw std::invalid_argument(name() + " elements have no parameter sensitivities yet (the one-point brick has: [sheet] element = \"brick\")");
+  sensitivity_count_ = count;
+  material::ReturnMappingOptions o;
+  o.single_jet_evaluation = true;  // the pseudo-load's pass; the update's asks for the tangent
+  sensitivity_law_ = std::make_unique<element::SensLaw6>(law, o);
+  for (int e = 0; e < num_elements(); ++e) brick_mut(e).enable_sensitivities(*sensitivity_law_, count);
+}
+
+bool SolidFamily::contribution_derivatives(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd* du,
+                                           element::HexSensitivities* load, Eigen::Matrix<double, 3, material::kSensitivitySlots>* tool_force) const {
+  tool_force->setZero();
+  const int face = face_of_element_[static_cast<std::size_t>(e)];
+  if (face < 0 || in.contributions.empty()) return false;
+  // The top face's corners are the element's nodes 4-7, in the shell's p-variables (x_I, d_I)
+  // with no director and no offset, as evaluate() passes them.
+  const mesh::Hex& h = mesh_->hexes[static_cast<std::size_t>(e)];
+  element::NodeVectors x, x0;
+  const element::NodeVectors none{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+  element::SensDofs dx = element::SensDofs::Zero();
+  ElementContribution::ConfigurationDerivatives dc;
+  for (int I = 0; I < 4; ++I) {
+    x[static_cast<std::size_t>(I)] = in.x[static_cast<std::size_t>(h[static_cast<std::size_t>(I + 4)])];
+    x0[static_cast<std::size_t>(I)] = in.x0[static_cast<std::size_t>(h[static_cast<std::size_t>(I + 4)])];
+    dc.x0_d0.block(6 * I, 0, 3, material::kSensitivitySlots) = du0.block(3 * (I + 4), 0, 3, material::kSensitivitySlots);
+    if (du) dx.block(6 * I, 0, 3, material::kSensitivitySlots) = du->block(3 * (I + 4), 0, 3, material::kSensitivitySlots);
+  }
+  if (du) dc.x_d = &dx;
+  const ElementConfiguration config{x, none, x0, none, 0.0};
+  element::SensDofs drp = element::SensDofs::Zero();
+  bool touched = false;
+  for (const auto& c : in.contributions) touched |= c->add_derivatives(face, config, dc, &drp, tool_force, du != nullptr);
+  if (touched && load)
+    for (int I = 0; I < 4; ++I) load->block(3 * (I + 4), 0, 3, material::kSensitivitySlots) += drp.block(6 * I, 0, 3, material::kSensitivitySlots);
+  return touched;
+}
+
+solver::ElementEvaluation SolidFamily::sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) {
+  element::HexSensitivities l;
+  const element::PointStatus s = brick_mut(e).sensitivities(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), *sensitivity_law_, nullptr, &l);
+  if (!s.ok) return {false, name() + " element " + std::to_string(e), s.reason, s.suggested_scale};
+  Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
+  contribution_derivatives(e, in, du0, nullptr, &l, &force);
+  *load = l;
+  return {};
+}
+
+solver::ElementEvaluation SolidFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
+                                                            Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) {
+  const element::HexSensitivities dus = du;
+  const element::PointStatus s = brick_mut(e).sensitivities(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), *sensitivity_law_, &dus, nullptr);
+  if (!s.ok) return {false, name() + " element " + std::to_string(e), s.reason, s.suggested_scale};
+  // Every element with a top face, so that the contributions keep their trial derivatives.
+  Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
+  contribution_derivatives(e, in, du0, &du, nullptr, &force);
+  if (contribution_force) *contribution_force = force;
+  return {};
+}
+
+bool SolidFamily::tangent_was_exact() const {
+  if (kind_ != SolidElementKind::brick) return true;
+  for (int e = 0; e < num_elements(); ++e)
+    if (!brick(e).tangent_was_exact()) return false;
+  return true;
+}
+
+void SolidFamily::set_exact_tangents(bool exact) {
+  if (kind_ != SolidElementKind::brick) return;
+  for (int e = 0; e < num_elements(); ++e) brick_mut(e).set_exact_tangents(exact);
+}
+
+material::SensitivityRow SolidFamily::thickness_sensitivity(int e) const {
+  const int per_layer = num_elements() / layers_;
+  const int q = e % per_layer;
+  material::SensitivityRow d = material::SensitivityRow::Zero();
+  for (int l = 0; l < layers_; ++l) {
+    const int k = l * per_layer + q;
+    d += height0_[static_cast<std::size_t>(k)] * brick(k).thickness_ratio_sensitivity();
+  }
+  return d;
+}
+
+void SolidFamily::save_sensitivities(io::BinaryWriter& w) const {
+  for (int e = 0; e < num_elements(); ++e) brick(e).save_sensitivities(w, sensitivity_count_);
+}
+
+void SolidFamily::load_sensitivities(io::BinaryReader& r) {
+  for (int e = 0; e < num_elements(); ++e) brick_mut(e).load_sensitivities(r, sensitivity_count_);
 }
 
 }  // namespace spifit::model

@@ -74,8 +74,22 @@ class SolidFamily final : public ElementFamily {
   // Each node column's midpoint (reference and current) and the distance between its bottom and
   // top nodes (mesh::extrude_sheet's columns: node k n + i at level k).
   MidSurface mid_surface(const FeModel& model) const override;
+  // Its derivatives: the midpoint's and the distance's, from the column's two end nodes.
+  MidSurfaceSensitivity mid_surface_sensitivity(const FeModel& model) const override;
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
+  // Direct differentiation (docs/design/sensitivities.md, "Solids"): bricks only; solid-shells
+  // refuse with std::invalid_argument.
+  void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) override;
+  solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) override;
+  solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
+                                                 Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
+  material::SensitivityRow thickness_sensitivity(int e) const override;
+  // The bricks' centres at rest (SolidPoint::tangent_was_exact); solid-shells: always exact.
+  bool tangent_was_exact() const override;
+  void set_exact_tangents(bool exact) override;
+  void save_sensitivities(io::BinaryWriter& w) const override;
+  void load_sensitivities(io::BinaryReader& r) override;
 
   const element::SolidElement& element(int e) const { return *elements_[static_cast<std::size_t>(e)]; }
   // Element e as a brick or a solid-shell: std::logic_error for the other kind.
@@ -94,6 +108,14 @@ class SolidFamily final : public ElementFamily {
   mesh::FaceSurface top_;        // the top faces (empty without a face set "top")
   std::vector<int> face_of_element_;  // index into top_ (-1: no top face)
   std::vector<std::string> warnings_;
+  int sensitivity_count_ = 0;
+  std::unique_ptr<element::SensLaw6> sensitivity_law_;
+  element::Brick8& brick_mut(int e) { return static_cast<element::Brick8&>(*elements_[static_cast<std::size_t>(e)]); }
+  // The contributions' derivatives on element e's top face (if it has one): their pseudo-load
+  // (du null) or their trial derivatives (du given), added to *load's rows of the face's
+  // corners, and the derivative of their force on the tool.
+  bool contribution_derivatives(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd* du, element::HexSensitivities* load,
+                                Eigen::Matrix<double, 3, material::kSensitivitySlots>* tool_force) const;
 };
 
 }  // namespace spifit::model

@@ -135,28 +135,28 @@ void ConeObservableLog::after_increment(const IncrementView& v) {
     double max_ratio = 0.0;
     for (const auto& e : radial_elongation(section_nodes(mid))) max_ratio = std::max(max_ratio, e.ratio);
     stage_rows_.add_row({static_cast<double>(stage), stage_wall_angle(scene_, stage), travel, z, -z, max_ratio});
-    // The axis node is a model node of the shell, the family with sensitivities.
-    if (model_.sensitivity_count() > 0 && centre_node_ >= 0) depth_sensitivities_.push_back(-model_.position_sensitivity(centre_node_).row(2));
+    if (model_.sensitivity_count() > 0 && centre_node_ >= 0)
+      depth_sensitivities_.push_back(-model_.family().mid_surface_sensitivity(model_).current[static_cast<std::size_t>(centre_node_)].row(2));
   }
 }
 
-// The section nodes are the shell's model nodes (the family with sensitivities): r = |(x, y)|
-// moves with (x dx + y dy) / r (zero on the axis, whose in-plane translations are tied to zero).
-void ConeObservableLog::add_section_sensitivities(ConeSection* section) const {
+// The section nodes are the mid-surface's: r = |(x, y)| moves with (x dx + y dy) / r (zero on the
+// axis, whose in-plane translations are tied to zero).
+void ConeObservableLog::add_section_sensitivities(const model::MidSurface& mid, ConeSection* section) const {
   const int count = model_.sensitivity_count();
   const auto n = static_cast<Eigen::Index>(line_.size());
   section->dr.resize(n, count);
   section->dz.resize(n, count);
   section->dthickness.resize(n, count);
-  const Eigen::MatrixXd dh = model_.nodal_thickness_sensitivity();
+  const model::MidSurfaceSensitivity dm = model_.family().mid_surface_sensitivity(model_);
   for (Eigen::Index i = 0; i < n; ++i) {
-    const int node = line_[static_cast<std::size_t>(i)];
-    const Eigen::Vector3d& x = model_.position(node);
-    const Eigen::Matrix<double, 3, Eigen::Dynamic> d = model_.position_sensitivity(node);
+    const auto node = static_cast<std::size_t>(line_[static_cast<std::size_t>(i)]);
+    const Eigen::Vector3d& x = mid.current[node];
+    const Eigen::Matrix<double, 3, Eigen::Dynamic>& d = dm.current[node];
     const double r = std::hypot(x.x(), x.y());
     section->dr.row(i) = r > 0.0 ? Eigen::RowVectorXd((x.x() * d.row(0) + x.y() * d.row(1)) / r) : Eigen::RowVectorXd::Zero(count);
     section->dz.row(i) = d.row(2);
-    section->dthickness.row(i) = dh.row(node);
+    section->dthickness.row(i) = dm.thickness.row(static_cast<Eigen::Index>(node));
   }
 }
 
@@ -181,7 +181,7 @@ void ConeObservableLog::at_mark(const Mark& m, const IncrementView& v) {
                                      scene_.name.c_str(), span.stage, span.contour) +
                          elongation_csv(edges));
   profiles_.push_back({span.stage, span.contour, points, {}, {}, {}});
-  if (model_.sensitivity_count() > 0) add_section_sensitivities(&profiles_.back());
+  if (model_.sensitivity_count() > 0) add_section_sensitivities(mid, &profiles_.back());
   const double z = centre_z(mid);
   section_rows_.add_row({static_cast<double>(span.stage), static_cast<double>(span.contour), wall, static_cast<double>(s.plateau_nodes),
                            s.plateau_thickness, s.sine_law_thickness, s.plateau_thickness / s.sine_law_thickness, s.min_thickness,

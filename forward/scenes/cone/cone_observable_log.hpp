@@ -85,7 +85,7 @@ class ConeObservableLog : public RunObserver {
   io::Series section_rows_, stage_rows_, history_rows_;
   std::vector<ConeSection> profiles_;
   std::vector<Eigen::RowVectorXd> depth_sensitivities_;
-  void add_section_sensitivities(ConeSection* section) const;
+  void add_section_sensitivities(const model::MidSurface& mid, ConeSection* section) const;
   std::size_t stages_written_ = 0;
 };
 

@@ -27,17 +27,17 @@ void PathSectionLog::at_mark(const Mark& m, const IncrementView& v) {
     const Eigen::Vector3d& p = mid.current[static_cast<std::size_t>(n)];
     s.nodes.add_row({x0, p.x(), p.y(), p.z(), mid.thickness[static_cast<std::size_t>(n)]});
   }
-  // With sensitivities (shells: the mid-surface nodes are the model's nodes).
+  // With sensitivities, the family's mid-surface's.
   if (const int count = v.model.sensitivity_count(); count > 0) {
     s.dx.resize(static_cast<Eigen::Index>(line.size()), count);
     s.dz.resize(static_cast<Eigen::Index>(line.size()), count);
     s.dthickness.resize(static_cast<Eigen::Index>(line.size()), count);
-    const Eigen::MatrixXd dh = v.model.nodal_thickness_sensitivity();
+    const model::MidSurfaceSensitivity dm = v.model.family().mid_surface_sensitivity(v.model);
     for (std::size_t i = 0; i < line.size(); ++i) {
-      const Eigen::Matrix<double, 3, Eigen::Dynamic> d = v.model.position_sensitivity(line[i].second);
+      const Eigen::Matrix<double, 3, Eigen::Dynamic>& d = dm.current[static_cast<std::size_t>(line[i].second)];
       s.dx.row(static_cast<Eigen::Index>(i)) = d.row(0);
       s.dz.row(static_cast<Eigen::Index>(i)) = d.row(2);
-      s.dthickness.row(static_cast<Eigen::Index>(i)) = dh.row(line[i].second);
+      s.dthickness.row(static_cast<Eigen::Index>(i)) = dm.thickness.row(line[i].second);
     }
   }
   write_file(s);

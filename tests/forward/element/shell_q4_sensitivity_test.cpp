@@ -5,6 +5,7 @@
 #include "forward/element/shell_q4.hpp"
 #include "tests/support/central_differences.hpp"
 #include "tests/support/hex_elements.hpp"
+#include "tests/support/path_seeds.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,24 +17,10 @@ namespace spifit::element {
 namespace {
 
 using material::FieldSeed;
-using material::MaterialField;
-using material::SensitivityRow;
 
 constexpr int kSlots = 6;  // Swift K, n, AF CX, E; slot 4 moves the nodes; slot 5 nu
 
-SensitivityRow unit(int k) {
-  SensitivityRow r = SensitivityRow::Zero();
-  r(k) = 1.0;
-  return r;
-}
-
-std::vector<FieldSeed> seeds(const material::MaterialParams<double>& p) {
-  return {{{MaterialField::hardening, p.hardening.law, 0}, unit(0)},
-          {{MaterialField::hardening, p.hardening.law, 2}, unit(1)},
-          {{MaterialField::kinematic, p.kinematic.law, 0}, unit(2)},
-          {{MaterialField::E, -1, 0}, unit(3)},
-          {{MaterialField::nu, -1, 0}, unit(5)}};
-}
+std::vector<FieldSeed> seeds(const material::MaterialParams<double>& p) { return spifit::test::path_seeds(p); }
 
 // A distorted, slightly warped quad with non-parallel directors.
 const NodeVectors kX = {Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(2.2, 0.1, 0.05), Eigen::Vector3d(2.0, 1.9, -0.04),

@@ -22,9 +22,10 @@ namespace fs = std::filesystem;
 namespace spifit::scene {
 namespace {
 
-// The bundled indent with another card and 20 increments of 0.1 mm instead of 40 of 0.05 mm.
-std::unique_ptr<Scene> indent_with(const std::string& card) {
-  std::string text = test::slurp(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent.toml");
+// The bundled indent (or its brick twin) with another card and 20 increments of 0.1 mm instead
+// of 40 of 0.05 mm.
+std::unique_ptr<Scene> indent_with(const std::string& card, const std::string& scene = "indent.toml", const std::string& friction = "") {
+  std::string text = test::slurp(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/" + scene);
   const auto replace = [&](const std::string& from, const std::string& to) {
     const auto at = text.find(from);
     ASSERT_NE(at, std::string::npos) << from;
@@ -32,6 +33,7 @@ std::unique_ptr<Scene> indent_with(const std::string& card) {
   };
   replace("\"../../../materials/aa3003o_c3c4.toml\"", "\"" + std::string(SPIFIT_SOURCE_DIR) + "/materials/" + card + "\"");
   replace("travel_per_increment = 0.05", "travel_per_increment = 0.1");
+  if (!friction.empty()) replace("friction = 0.0", friction);
   const fs::path file = test::temp_path("indent_" + card);
   std::ofstream(file) << text;
   auto s = read_scene(file.string());
@@ -39,8 +41,9 @@ std::unique_ptr<Scene> indent_with(const std::string& card) {
   return s;
 }
 
-void expect_agreement(const std::string& card, const std::vector<std::string>& names) {
-  const auto scene = indent_with(card);
+void expect_agreement(const std::string& card, const std::vector<std::string>& names, const std::string& scene_file = "indent.toml",
+                      const std::string& friction = "") {
+  const auto scene = indent_with(card, scene_file, friction);
   const SensitivityCheck c = check_sensitivities(*scene, names, 1e-4, 1e-10, {});
   std::printf("%s\n%s", card.c_str(), format_sensitivity_check(c).c_str());
   ASSERT_EQ(c.rows.size(), names.size());
@@ -59,6 +62,17 @@ TEST(SensitivityCheck, ArmstrongFrederickSwiftEps0AndPoissonOnTheIndent) {
 TEST(SensitivityCheck, ZieglerOnTheIndent) { expect_agreement("aa3003o_c8_ziegler_shell.toml", {"ziegler.CA", "ziegler.GA"}); }
 
 TEST(SensitivityCheck, HillCoefficientsOnTheIndent) { expect_agreement("aa3003o_c3c4.toml", {"hill.F", "hill.H", "hill.N"}); }
+
+// The one-point brick in three layers with card C.5 (its centre's 3D return mapping, the hourglass forces and
+// the stabilisation on the consistent tangent) with the tool on its top faces.
+TEST(SensitivityCheck, BricksOnTheIndent) {
+  expect_agreement("aa3003o_c5_af_brick.toml", {"swift.K", "af.CX", "elastic.E", "hill.G", "contact.penalty"}, "indent_brick.toml");
+}
+
+// The same with friction (mu = 0.1): the stick history on the top faces.
+TEST(SensitivityCheck, BricksWithFrictionOnTheIndent) {
+  expect_agreement("aa3003o_c5_af_brick.toml", {"contact.friction", "swift.n"}, "indent_brick.toml", "friction = 0.1");
+}
 
 // A disagreement at the scene's own tolerance, or one looser than 1e-10, also points to
 // --tolerance (the runs' own error); one at 1e-10 points to smaller steps alone.

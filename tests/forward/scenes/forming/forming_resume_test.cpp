@@ -96,6 +96,19 @@ TEST(FormingResume, LineStoppedAtAPathPointOrMidSegmentResumesBitForBit) {
   fs::remove(file);
 }
 
+// A resumed run with sensitivities against the uninterrupted one: the outputs, the derivatives
+// table byte for byte, and the sections' derivatives.
+void expect_same_derivatives(const fs::path& ref, const FormingResult& a, const fs::path& dir, const FormingResult& b) {
+  expect_same(ref, a, dir, b);
+  test::expect_same_outputs(ref, dir, {"sensitivities.csv"}, {});
+  ASSERT_EQ(b.sections.size(), a.sections.size());
+  for (std::size_t i = 0; i < a.sections.size(); ++i) {
+    EXPECT_EQ(b.sections[i].dx, a.sections[i].dx) << a.sections[i].point;
+    EXPECT_EQ(b.sections[i].dz, a.sections[i].dz) << a.sections[i].point;
+    EXPECT_EQ(b.sections[i].dthickness, a.sections[i].dthickness) << a.sections[i].point;
+  }
+}
+
 // A run with sensitivities keeps the state's derivatives in its checkpoints: the layers', the
 // contact points' stick history, the nodes' and the tool force's, and the sections' so far. Stopped
 // after C (its section written) and again between C and D, each resumed run writes the force
@@ -122,18 +135,35 @@ TEST(FormingResume, LineWithSensitivitiesResumesBitForBit) {
     resume.resume = true;
     const FormingResult b = run(s, dir, resume);
     ASSERT_TRUE(b.ok()) << b.message;
-    expect_same(ref, a, dir, b);
-    test::expect_same_outputs(ref, dir, {"sensitivities.csv"}, {});
-    ASSERT_EQ(b.sections.size(), a.sections.size());
-    for (std::size_t i = 0; i < a.sections.size(); ++i) {
-      EXPECT_EQ(b.sections[i].dx, a.sections[i].dx) << a.sections[i].point;
-      EXPECT_EQ(b.sections[i].dz, a.sections[i].dz) << a.sections[i].point;
-      EXPECT_EQ(b.sections[i].dthickness, a.sections[i].dthickness) << a.sections[i].point;
-    }
+    expect_same_derivatives(ref, a, dir, b);
     fs::remove_all(dir);
   }
   fs::remove_all(ref);
   fs::remove(file);
+}
+
+// The bricks' derivatives in the checkpoint (the centres' states and tangents, hourglass amplitudes
+// and forces, thickness ratios): the brick indent with sensitivities, stopped after 21 increments
+// (checkpoint after 16) and resumed, writes the uninterrupted run's derivatives byte for byte.
+TEST(FormingResume, BrickIndentWithSensitivitiesResumesBitForBit) {
+  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_brick.toml");
+  s.checkpoint_increments = 8;
+  RunControl plain;
+  plain.sensitivities = {"swift.K", "elastic.E"};
+  const fs::path ref = temp_path("brick_sens_ref"), dir = temp_path("brick_sens");
+  const FormingResult a = run(s, ref, plain);
+  ASSERT_TRUE(a.ok()) << a.message;
+  RunControl stop = plain;
+  stop.stop_after_increments = 21;
+  ASSERT_EQ(run(s, dir, stop).status, RunStatus::stopped);
+  RunControl resume = plain;
+  resume.resume = true;
+  const FormingResult b = run(s, dir, resume);
+  ASSERT_TRUE(b.ok()) << b.message;
+  expect_same_derivatives(ref, a, dir, b);
+  for (const auto& section : a.sections) EXPECT_GT(section.dthickness.cwiseAbs().maxCoeff(), 0.0) << section.point;
+  fs::remove_all(ref);
+  fs::remove_all(dir);
 }
 
 // A checkpoint holds the derivatives with respect to the parameters it was written with: a resume
