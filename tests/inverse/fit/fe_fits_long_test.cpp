@@ -50,7 +50,7 @@ inverse::FitResult expect_card_recovered(const std::string& fit_file, const std:
 TEST(FeFitsLong, AfIndentRecoversC7) { (void)expect_card_recovered("fit_af_indent.toml", "aa3003o_c7n_af_shell.toml"); }
 
 // The thesis's recipe for C.5: tensile + Bauschinger from C.5 renormalised (H = 0.807), the
-// indent's Fz(depth) computed with three layers of bricks, fitted with bricks (about 40 min).
+// indent's Fz(depth) computed with three layers of bricks, fitted with bricks (about 7 min, exact Jacobian).
 TEST(FeFitsLong, AfIndentWithBricksRecoversC5) { (void)expect_card_recovered("fit_af_indent_brick.toml", "aa3003o_c5n_af_brick.toml"); }
 
 // The same data fitted with shells (about 2 min): no card of this law lets the shell follow the
