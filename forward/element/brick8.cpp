@@ -166,10 +166,18 @@ void Brick8::update_hourglass_stiffness_derivatives() {
   }
   dkq_.assign(static_cast<std::size_t>(sensitivity_count_), Mat12::Zero());
   const auto& dD = point_.committed_derivatives().tangent;
+  std::vector<Voigt6x6> directions;
+  std::vector<int> slots;
   for (int k = 0; k < sensitivity_count_; ++k) {
     const Voigt6x6 dDk = Eigen::Map<const Voigt6x6>(dD.col(k).data());
-    if (dDk.cwiseAbs().maxCoeff() > 0.0) dkq_[static_cast<std::size_t>(k)] = hourglass_.scale * hex_hourglass_stiffness_derivative(reference_, D, dDk);
+    if (dDk.cwiseAbs().maxCoeff() > 0.0) {
+      directions.push_back(dDk);
+      slots.push_back(k);
+    }
   }
+  if (directions.empty()) return;
+  const std::vector<Mat12> d = hex_hourglass_stiffness_derivatives(reference_, D, directions);
+  for (std::size_t i = 0; i < slots.size(); ++i) dkq_[static_cast<std::size_t>(slots[i])] = hourglass_.scale * d[i];
 }
 
 BrickStatus Brick8::sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace spifit::element {
 
@@ -182,16 +183,28 @@ HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matr
   return k.uu - k.ua * k.aa.ldlt().solve(k.ua.transpose());
 }
 
-Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness_derivative(const HexCorners& X, const Voigt6Matrix& D, const Voigt6Matrix& dD) {
+std::vector<Eigen::Matrix<double, 12, 12>> hex_hourglass_stiffness_derivatives(const HexCorners& X, const Voigt6Matrix& D,
+                                                                              const std::vector<Voigt6Matrix>& dD) {
   // K = Kuu - Kua Kaa^-1 Kua^T with every block linear in D, Kaa read from its lower triangle as
   // the LDL^T factorisation reads it (a consistent tangent with kinematic hardening is not
-  // symmetric): dK = dKuu - dKua S - S^T dKua^T + S^T dKaa S, S = Kaa^-1 Kua^T.
-  const IncompatibleBlocks k = incompatible_blocks(X, D), dk = incompatible_blocks(X, dD);
+  // symmetric): dK = dKuu - dKua S - S^T dKua^T + S^T dKaa S, S = Kaa^-1 Kua^T, the same S for
+  // every direction.
+  const IncompatibleBlocks k = incompatible_blocks(X, D);
   const Eigen::Matrix<double, 9, 24> S = k.aa.ldlt().solve(k.ua.transpose());
-  const Eigen::Matrix<double, 9, 9> daa = dk.aa.selfadjointView<Eigen::Lower>();
-  const HexMatrix dK = dk.uu - dk.ua * S - S.transpose() * dk.ua.transpose() + S.transpose() * daa * S;
   const Eigen::Matrix<double, 24, 12> H = hex_hourglass_shapes();
-  return H.transpose() * dK * H;
+  std::vector<Eigen::Matrix<double, 12, 12>> out;
+  out.reserve(dD.size());
+  for (const Voigt6Matrix& d : dD) {
+    const IncompatibleBlocks dk = incompatible_blocks(X, d);
+    const Eigen::Matrix<double, 9, 9> daa = dk.aa.selfadjointView<Eigen::Lower>();
+    const HexMatrix dK = dk.uu - dk.ua * S - S.transpose() * dk.ua.transpose() + S.transpose() * daa * S;
+    out.push_back(H.transpose() * dK * H);
+  }
+  return out;
+}
+
+Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness_derivative(const HexCorners& X, const Voigt6Matrix& D, const Voigt6Matrix& dD) {
+  return hex_hourglass_stiffness_derivatives(X, D, {dD}).front();
 }
 
 Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness(const HexCorners& X, const Voigt6Matrix& D) {

@@ -17,6 +17,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <vector>
 
 namespace spifit::element {
 
@@ -66,6 +67,9 @@ Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness(const HexCorners& X, const
 // Its derivative along dD at D (direct differentiation: the stabilisation built on a consistent
 // tangent that moves with the parameters).
 Eigen::Matrix<double, 12, 12> hex_hourglass_stiffness_derivative(const HexCorners& X, const Voigt6Matrix& D, const Voigt6Matrix& dD);
+// The same along several directions at once (the blocks of D factorised once).
+std::vector<Eigen::Matrix<double, 12, 12>> hex_hourglass_stiffness_derivatives(const HexCorners& X, const Voigt6Matrix& D,
+                                                                              const std::vector<Voigt6Matrix>& dD);
 // G^T (H^T K_im H) G: the hourglass stabilisation (K_im the incompatible-modes stiffness).
 HexMatrix hex_stabilisation_stiffness(const HexCorners& X, const Voigt6Matrix& D);
 
