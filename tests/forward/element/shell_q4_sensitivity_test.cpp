@@ -20,8 +20,6 @@ using material::FieldSeed;
 
 constexpr int kSlots = 6;  // Swift K, n, AF CX, E; slot 4 moves the nodes; slot 5 nu
 
-std::vector<FieldSeed> seeds(const material::MaterialParams<double>& p) { return spifit::test::path_seeds(p); }
-
 // A distorted, slightly warped quad with non-parallel directors.
 const NodeVectors kX = {Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(2.2, 0.1, 0.05), Eigen::Vector3d(2.0, 1.9, -0.04),
                         Eigen::Vector3d(-0.2, 1.7, 0.02)};
@@ -66,7 +64,7 @@ std::vector<Vec24> residuals(const material::MaterialParams<double>& p, double s
 void expect_path_derivatives_match(const ShellOptions& o) {
   const material::MaterialParams<double> p = test::aa3003_af();
   const material::ReturnMapping<double, 3> law(p);
-  const std::vector<FieldSeed> sd = seeds(p);
+  const std::vector<FieldSeed> sd = spifit::test::path_seeds(p);
   const SensLaw slaw(material::seeded_params(p, sd));
   const ThicknessRule rule = gauss_legendre_rule(5);
   ShellQ4 el(kX, kD, 0.4, law, rule, o);
@@ -99,28 +97,9 @@ void expect_path_derivatives_match(const ShellOptions& o) {
     el.commit();
   }
   EXPECT_GT(el.section(0).layer_state(4).eqps, 0.005);
-  for (int k = 0; k < kSlots; ++k) {
-    const double h = k == 0 ? 0.5 : k == 1 ? 1e-4 : k == 2 ? 0.05 : k == 3 ? 50.0 : k == 4 ? 1e-5 : 1e-4;
-    std::vector<Vec24> cd(6), cd4(6);
-    for (double step : {h, h / 4.0}) {
-      material::MaterialParams<double> pp = p, pm = p;
-      double sp = 0.0, sm = 0.0;
-      if (k != 4) {
-        const std::size_t seed = static_cast<std::size_t>(k < 4 ? k : 4);
-        material::material_field(pp, sd[seed].field) += step;
-        material::material_field(pm, sd[seed].field) -= step;
-      } else {
-        sp = step;
-        sm = -step;
-      }
-      const std::vector<Vec24> rp = residuals(pp, sp, o), rm = residuals(pm, sm, o);
-      for (std::size_t n = 0; n < rp.size(); ++n) (step == h ? cd : cd4)[n] = projections[n] * (rp[n] - rm[n]) / (2.0 * step);
-    }
-    std::vector<Vec24> exact;
-    for (const auto& d : ddm) exact.push_back(d.col(k));
-    const double worst = spifit::test::expect_within_central_differences(exact, cd, cd4, 1e-7, "slot " + std::to_string(k));
-    std::printf("slot %d: largest relative difference to central differences (h/4) %.2e\n", k, worst);
-  }
+  spifit::test::expect_path_slots_match<Vec24>(
+      p, ddm, kSlots, [&](const material::MaterialParams<double>& q, double s) { return residuals(q, s, o); },
+      [&](std::size_t n, const Vec24& v) { return Vec24(projections[n] * v); });
 }
 
 TEST(ShellQ4Sensitivity, ResidualDerivativesMatchCentralDifferencesAlongAPath) { expect_path_derivatives_match(ShellOptions{}); }
