@@ -43,8 +43,6 @@ struct HourglassOptions {
 };
 
 using BrickStatus = PointStatus;
-// Derivatives of the 24 corner DOFs (or forces) with respect to the run's parameters.
-using HexSensitivities = Eigen::Matrix<double, 24, material::kSensitivitySlots>;
 
 class Brick8 final : public SolidElement {
  public:
@@ -61,21 +59,16 @@ class Brick8 final : public SolidElement {
   void commit() override;
   void revert() override;
 
-  // Direct differentiation (docs/design/sensitivities.md, "Solids"), at the corners x of the
-  // converged iterate. enable_sensitivities: the committed state's derivatives (centre, hourglass
-  // amplitudes and forces, the stabilisation's stiffness, thickness) start from the reference
-  // state's, with respect to the parameters seeded in `law` (count of them). sensitivities: with
-  // du null, the pseudo-load (the forces' derivatives at fixed corners) into *load; with du (the
-  // corners' derivatives), the trial derivatives that commit() keeps.
-  void enable_sensitivities(const SensLaw6& law, int count);
-  BrickStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load);
-  // Whether the last evaluate()'s tangent was exact, and the switch (SolidPoint::set_exact_tangents).
-  bool tangent_was_exact() const { return point_.tangent_was_exact(); }
-  void set_exact_tangents(bool exact) { point_.set_exact_tangents(exact); }
-  // The committed thickness_ratio()'s derivatives.
-  const material::SensitivityRow& thickness_ratio_sensitivity() const { return dthickness_; }
-  void save_sensitivities(io::BinaryWriter& w, int count) const;
-  void load_sensitivities(io::BinaryReader& r, int count);
+  // Direct differentiation (SolidElement; docs/design/sensitivities.md, "Solids"): the committed
+  // state's derivatives are the centre's, the hourglass amplitudes' and forces', the
+  // stabilisation's stiffness's and the thickness's.
+  void enable_sensitivities(const SensLaw6& law, int count) override;
+  BrickStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) override;
+  bool tangent_was_exact() const override { return point_.tangent_was_exact(); }
+  void set_exact_tangents(bool exact) override { point_.set_exact_tangents(exact); }
+  const material::SensitivityRow& thickness_ratio_sensitivity() const override { return dthickness_; }
+  void save_sensitivities(io::BinaryWriter& w, int count) const override;
+  void load_sensitivities(io::BinaryReader& r, int count) override;
 
   // F (global current <- material-frame reference) at the corners x.
   Eigen::Matrix3d deformation_gradient(const HexCorners& x) const;

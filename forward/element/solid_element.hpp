@@ -1,7 +1,8 @@
 #pragma once
 // What a solid element of a sheet offers its family (model/solid_family.hpp): forces and tangent
 // at its eight corners, a committed state, and what the outputs read of it. The one-point brick
-// (brick8.hpp) and the solid-shell (solid_shell8.hpp) implement it.
+// (brick8.hpp) and the solid-shell (solid_shell8.hpp) implement it, with their parameter
+// sensitivities (docs/design/sensitivities.md, "Solids").
 #include "forward/element/hex8_stiffness.hpp"
 #include "forward/element/solid_point.hpp"
 
@@ -11,6 +12,9 @@ class BinaryReader;
 }  // namespace spifit::io
 
 namespace spifit::element {
+
+// Derivatives of the 24 corner DOFs (or forces) with respect to the run's parameters.
+using HexSensitivities = Eigen::Matrix<double, 24, material::kSensitivitySlots>;
 
 class SolidElement {
  public:
@@ -34,6 +38,24 @@ class SolidElement {
 
   virtual void save_state(io::BinaryWriter& w) const = 0;
   virtual void load_state(io::BinaryReader& r) = 0;
+
+  // Direct differentiation, at the corners x of the converged iterate. enable_sensitivities: the
+  // committed state's derivatives start from the reference state's (zero), with respect to the
+  // parameters seeded in `law` (count of them). sensitivities: with du null, the pseudo-load
+  // (the forces' derivatives at fixed corners) into *load; with du (the corners' derivatives),
+  // the trial derivatives that commit() keeps. Called in that order at a converged iterate.
+  virtual void enable_sensitivities(const SensLaw6& law, int count) = 0;
+  virtual PointStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) = 0;
+  // The committed thickness_ratio()'s derivatives.
+  virtual const material::SensitivityRow& thickness_ratio_sensitivity() const = 0;
+  // Whether the last evaluate()'s tangent was exact (SolidPoint::tangent_was_exact at every
+  // point), and the switch that makes the next evaluations' tangents exact without changing the
+  // state they leave (SolidPoint::set_exact_tangents).
+  virtual bool tangent_was_exact() const = 0;
+  virtual void set_exact_tangents(bool exact) = 0;
+  // The committed derivatives, slots 0 .. count - 1 (checkpoints).
+  virtual void save_sensitivities(io::BinaryWriter& w, int count) const = 0;
+  virtual void load_sensitivities(io::BinaryReader& r, int count) = 0;
 };
 
 }  // namespace spifit::element

@@ -92,8 +92,9 @@ void SolidPoint::revert() {
   if (sensitivities_) d_trial_ = d_;
 }
 
-void SolidPoint::enable_sensitivities() {
+void SolidPoint::enable_sensitivities(bool tangent_derivatives) {
   sensitivities_ = true;
+  tangent_derivatives_ = tangent_derivatives;
   d_ = d_trial_ = SolidPointDerivatives();
 }
 
@@ -123,7 +124,8 @@ PointStatus SolidPoint::sensitivities(const SensLaw6& law, const Voigt6& eps, co
     d_eps(i) = with_derivatives(d_eps_value(i), d);
   }
   Voigt6x6S ct;
-  const material::UpdateResult r = law.integrate(s0, d_eps, s1, deps ? &ct : nullptr);
+  const bool with_tangent = deps && tangent_derivatives_;
+  const material::UpdateResult r = law.integrate(s0, d_eps, s1, with_tangent ? &ct : nullptr);
   PointStatus status;
   if (!r.ok()) {
     status.ok = false;
@@ -142,11 +144,13 @@ PointStatus SolidPoint::sensitivities(const SensLaw6& law, const Voigt6& eps, co
     d_trial_.plastic_work = derivatives_of(s1.plastic_work);
     d_trial_.log_strain = *deps;
     // update_log's choice of tangent: the committed one where the strain did not move.
-    if (d_eps_value.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_.cwiseAbs().maxCoeff())) {
-      d_trial_.tangent = d_.tangent;
-    } else {
-      for (int j = 0; j < 6; ++j)
-        for (int i = 0; i < 6; ++i) d_trial_.tangent.row(6 * j + i) = derivatives_of(ct(i, j));
+    if (with_tangent) {
+      if (d_eps_value.cwiseAbs().maxCoeff() <= 1e-14 * (1.0 + eps_.cwiseAbs().maxCoeff())) {
+        d_trial_.tangent = d_.tangent;
+      } else {
+        for (int j = 0; j < 6; ++j)
+          for (int i = 0; i < 6; ++i) d_trial_.tangent.row(6 * j + i) = derivatives_of(ct(i, j));
+      }
     }
   }
   return status;
@@ -164,8 +168,9 @@ Eigen::MatrixXd read_columns(io::BinaryReader& r, const char* what, int rows, in
 
 void SolidPoint::save_sensitivities(io::BinaryWriter& w, int count) const {
   for (const Eigen::MatrixXd& m : {Eigen::MatrixXd(d_.stress), Eigen::MatrixXd(d_.plastic_strain), Eigen::MatrixXd(d_.back_stress),
-                                   Eigen::MatrixXd(d_.log_strain), Eigen::MatrixXd(d_.eqps), Eigen::MatrixXd(d_.plastic_work), Eigen::MatrixXd(d_.tangent)})
+                                   Eigen::MatrixXd(d_.log_strain), Eigen::MatrixXd(d_.eqps), Eigen::MatrixXd(d_.plastic_work)})
     save_columns(w, m, count);
+  if (tangent_derivatives_) save_columns(w, d_.tangent, count);
 }
 
 void SolidPoint::load_sensitivities(io::BinaryReader& r, int count) {
@@ -176,7 +181,7 @@ void SolidPoint::load_sensitivities(io::BinaryReader& r, int count) {
   load_columns(r, "solid point log strain", count, &d_.log_strain);
   load_columns(r, "solid point eqps", count, &d_.eqps);
   load_columns(r, "solid point plastic work", count, &d_.plastic_work);
-  load_columns(r, "solid point tangent", count, &d_.tangent);
+  if (tangent_derivatives_) load_columns(r, "solid point tangent", count, &d_.tangent);
   d_trial_ = d_;
 }
 

@@ -85,8 +85,9 @@ class SolidPoint {
   // update_log) with its derivatives, from the committed state's derivatives and the law's seeded
   // parameters. deps: the log strain's derivatives (the trial derivatives of the state, the log
   // strain and the consistent tangent are then kept for commit); null: eps held fixed (the
-  // pseudo-stress). T may be null.
-  void enable_sensitivities();
+  // pseudo-stress). T may be null. Without tangent_derivatives the consistent tangent's
+  // derivatives are neither formed nor kept (an element that does not build on the tangent).
+  void enable_sensitivities(bool tangent_derivatives = true);
   bool sensitivities_enabled() const { return sensitivities_; }
   PointStatus sensitivities(const SensLaw6& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T);
   const SolidPointDerivatives& committed_derivatives() const { return d_; }
@@ -114,7 +115,7 @@ class SolidPoint {
   material::MaterialPoint<double, 6> point_;
   Voigt6 eps_ = Voigt6::Zero(), eps_trial_ = Voigt6::Zero();
   Voigt6x6 tangent_, tangent_trial_;  // consistent d T / d eps at the committed / trial state
-  bool sensitivities_ = false;
+  bool sensitivities_ = false, tangent_derivatives_ = true;
   SolidPointDerivatives d_, d_trial_;
   bool exact_tangents_ = false, tangent_exact_ = true;
   PointStatus integrate(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent, bool tangent_wanted);

@@ -25,7 +25,6 @@ constexpr int kVoigtPair[6][2] = {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}
 constexpr double kColumn[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
 constexpr double kShearSample[4][2] = {{0, -1}, {0, 1}, {-1, 0}, {1, 0}};
 constexpr int kMaxEnhancedIterations = 12;
-constexpr double kEnhancedTolerance = 1e-8;
 
 // T with E_material = T e for the convective components e (Voigt, engineering shears), where
 // E_material = Jinv E_conv Jinv^T and Jinv(c, r) = d xi_r / d X_c.
@@ -90,8 +89,9 @@ struct SolidShell8::Sums {
   HexMatrix kuu = HexMatrix::Zero();
 };
 
-SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const ThicknessRule& rule)
-    : axes_(axes), zeta_(rule.zeta), symmetric_(!law.params().kinematic.active()) {
+SolidShell8::SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const ThicknessRule& rule, double enhanced_tolerance)
+    : axes_(axes), zeta_(rule.zeta), symmetric_(!law.params().kinematic.active()), enhanced_tolerance_(enhanced_tolerance) {
+  if (!(enhanced_tolerance > 0.0)) throw std::invalid_argument("solid-shell: the enhanced strains' tolerance must be > 0, got " + std::to_string(enhanced_tolerance));
   if (!((axes.transpose() * axes - Mat3::Identity()).cwiseAbs().maxCoeff() < 1e-10 && axes.determinant() > 0.0))
     throw std::invalid_argument("material axes of a solid-shell must be orthonormal and right-handed");
   if (rule.zeta.empty()) throw std::invalid_argument("a solid-shell needs at least one point through the thickness");
@@ -150,6 +150,62 @@ struct PointKinematics {
   LogStrain3 ls;
 };
 const Voigt6 kTrace = (Voigt6() << 1, 1, 1, 0, 0, 0).finished();
+
+// The sampled transverse shears of a zeta level (reference values ref): e13 at eta = -1, +1,
+// e23 at xi = -1, +1.
+std::array<Sample, 4> shear_samples(const Eigen::Matrix<double, 3, 8>& x, double zeta, const Eigen::Vector4d& ref) {
+  std::array<Sample, 4> shear;
+  for (int m = 0; m < 4; ++m)
+    shear[static_cast<std::size_t>(m)] = sample_product(x, hex_parent_derivatives(Vec3(kShearSample[m][0], kShearSample[m][1], zeta)), m < 2 ? 0 : 1, 2, ref(m));
+  return shear;
+}
+
+// The kinematics at parent point s of the corners x (X the reference ones, T the point's
+// convective-to-material transformation, Gamma its enhanced strains with parameters alpha).
+PointStatus point_kinematics(const Eigen::Matrix<double, 3, 8>& x, const Eigen::Matrix<double, 3, 8>& X, const Vec3& s, const Voigt6x6& T,
+                             const Eigen::Matrix<double, 6, SolidShell8::kEnhanced>& Gamma, const SolidShell8::EnhancedVector& alpha,
+                             const std::array<Sample, 4>& shear, PointKinematics* k) {
+  using RowU = Eigen::Matrix<double, 1, 24>;
+  PointStatus status;
+  const double xi = s(0), eta = s(1);
+  const Grad dN = hex_parent_derivatives(s);
+  const double det = hex_jacobian_determinant(x, dN) / hex_jacobian_determinant(X, dN);
+  if (!(det > 0.0)) {
+    status.ok = false;
+    status.reason = std::isfinite(det) ? "element turned inside out (det F = " + std::to_string(det) + ")" : "non-finite positions";
+    status.suggested_scale = 0.25;
+    return status;
+  }
+  k->e11 = sample_product(x, dN, 0, 0, 0.0);
+  k->e22 = sample_product(x, dN, 1, 1, 0.0);
+  k->e12 = sample_product(x, dN, 0, 1, 0.0);
+  const Vec3 G1 = tangent(X, dN, 0), G2 = tangent(X, dN, 1);
+  k->w13[0] = 0.5 * (1.0 - eta);
+  k->w13[1] = 0.5 * (1.0 + eta);
+  k->w23[0] = 0.5 * (1.0 - xi);
+  k->w23[1] = 0.5 * (1.0 + xi);
+  Voigt6 e;
+  e(0) = k->e11.value - 0.5 * G1.dot(G1);
+  e(1) = k->e22.value - 0.5 * G2.dot(G2);
+  e(3) = k->e12.value - G1.dot(G2);
+  const Vec3 G3 = tangent(X, dN, 2);
+  k->e33 = sample_product(x, dN, 2, 2, 0.5 * G3.dot(G3));
+  e(2) = k->e33.value;
+  e(4) = k->w13[0] * shear[0].value + k->w13[1] * shear[1].value;
+  e(5) = k->w23[0] * shear[2].value + k->w23[1] * shear[3].value;
+  auto set_row = [k](int r, const Grad& g) { k->Bc.row(r) = Eigen::Map<const RowU>(g.data()); };
+  set_row(0, k->e11.grad);
+  set_row(1, k->e22.grad);
+  set_row(3, k->e12.grad);
+  set_row(2, k->e33.grad);
+  set_row(4, k->w13[0] * shear[0].grad + k->w13[1] * shear[1].grad);
+  set_row(5, k->w23[0] * shear[2].grad + k->w23[1] * shear[3].grad);
+  const Voigt6 E = T * e + Gamma * alpha;
+  const PointStatus admissible = admissible_green_strain(E);
+  if (!admissible.ok) return admissible;
+  k->ls = log_strain_3d(E);
+  return status;
+}
 }  // namespace
 
 void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const EnhancedVector& alpha, bool with_kuu, Sums* sums,
@@ -157,16 +213,13 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
   using RowU = Eigen::Matrix<double, 1, 24>;
   using RowA = Eigen::Matrix<double, 1, kEnhanced>;
   *sums = Sums{};
-  std::array<Sample, 4> shear;
   std::array<PointKinematics, 4> pk;
   // The block in x: Bc^T Mc Bc (its lower triangle where the material tangent is symmetric, else
   // all of it) and the rest (geometric and mean-dilatation parts).
   HexMatrix klow = HexMatrix::Zero(), kuu_rest = HexMatrix::Zero();
   for (std::size_t level = 0; level < zeta_.size(); ++level) {
     const double zeta = zeta_[level];
-    for (int m = 0; m < 4; ++m)
-      shear[static_cast<std::size_t>(m)] = sample_product(x, hex_parent_derivatives(Vec3(kShearSample[m][0], kShearSample[m][1], zeta)),
-                                                          m < 2 ? 0 : 1, 2, shear0_[level](m));
+    const std::array<Sample, 4> shear = shear_samples(x, zeta, shear0_[level]);
     // The level's four in-plane points: their log strains and the mean volumetric strain.
     double volume = 0.0, theta = 0.0;
     RowU dtheta_u = RowU::Zero();  // d theta / d x
@@ -175,46 +228,11 @@ void SolidShell8::accumulate(const Eigen::Matrix<double, 3, 8>& x, const Enhance
       const std::size_t p = 4 * level + q;
       const PointGeometry& pg = geometry_[p];
       PointKinematics& k = pk[q];
-      const double xi = pg.s(0), eta = pg.s(1);
-      const Grad dN = hex_parent_derivatives(pg.s);
-      const double det = hex_jacobian_determinant(x, dN) / hex_jacobian_determinant(X_, dN);
-      if (!(det > 0.0)) {
-        status->ok = false;
-        status->reason = std::isfinite(det) ? "element turned inside out (det F = " + std::to_string(det) + ")" : "non-finite positions";
-        status->suggested_scale = 0.25;
+      const PointStatus kinematics = point_kinematics(x, X_, pg.s, pg.T, pg.Gamma, alpha, shear, &k);
+      if (!kinematics.ok) {
+        *status = kinematics;
         return;
       }
-      k.e11 = sample_product(x, dN, 0, 0, 0.0);
-      k.e22 = sample_product(x, dN, 1, 1, 0.0);
-      k.e12 = sample_product(x, dN, 0, 1, 0.0);
-      const Vec3 G1 = tangent(X_, dN, 0), G2 = tangent(X_, dN, 1);
-      k.w13[0] = 0.5 * (1.0 - eta);
-      k.w13[1] = 0.5 * (1.0 + eta);
-      k.w23[0] = 0.5 * (1.0 - xi);
-      k.w23[1] = 0.5 * (1.0 + xi);
-      Voigt6 e;
-      e(0) = k.e11.value - 0.5 * G1.dot(G1);
-      e(1) = k.e22.value - 0.5 * G2.dot(G2);
-      e(3) = k.e12.value - G1.dot(G2);
-      const Vec3 G3 = tangent(X_, dN, 2);
-      k.e33 = sample_product(x, dN, 2, 2, 0.5 * G3.dot(G3));
-      e(2) = k.e33.value;
-      e(4) = k.w13[0] * shear[0].value + k.w13[1] * shear[1].value;
-      e(5) = k.w23[0] * shear[2].value + k.w23[1] * shear[3].value;
-      auto set_row = [&k](int r, const Grad& g) { k.Bc.row(r) = Eigen::Map<const RowU>(g.data()); };
-      set_row(0, k.e11.grad);
-      set_row(1, k.e22.grad);
-      set_row(3, k.e12.grad);
-      set_row(2, k.e33.grad);
-      set_row(4, k.w13[0] * shear[0].grad + k.w13[1] * shear[1].grad);
-      set_row(5, k.w23[0] * shear[2].grad + k.w23[1] * shear[3].grad);
-      const Voigt6 E = pg.T * e + pg.Gamma * alpha;
-      const PointStatus admissible = admissible_green_strain(E);
-      if (!admissible.ok) {
-        *status = admissible;
-        return;
-      }
-      k.ls = log_strain_3d(E);
       // d E / d x = T Bc and d E / d alpha = Gamma: the trace of d eps / d (x, alpha) without
       // forming d E / d x.
       const Eigen::Matrix<double, 1, 6> trace_first = kTrace.transpose() * k.ls.first;
@@ -344,7 +362,8 @@ PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix*
       status.suggested_scale = 0.25;
       return status;
     }
-    if (step.cwiseAbs().maxCoeff() <= kEnhancedTolerance) break;
+    // Exact tangents at the converged iterate: the enhanced parameters it converged to.
+    if (exact_tangents_ || step.cwiseAbs().maxCoeff() <= enhanced_tolerance_) break;
     if (it + 1 == kMaxEnhancedIterations) {
       status.ok = false;
       status.reason = "solid-shell: the enhanced strains did not converge (last change " + std::to_string(step.cwiseAbs().maxCoeff()) + ")";
@@ -358,6 +377,12 @@ PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix*
   if (f) *f = sums.fu - sums.kua * step;
   const Eigen::Matrix<double, kEnhanced, 24> kaa_inv_kau = lu.solve(sums.kau);
   if (K) *K = sums.kuu - sums.kua * kaa_inv_kau;
+  if (sensitivity_count_ > 0) {
+    kaa_inverse_ = lu.inverse();
+    kua_ = sums.kua;
+    dalpha_du_ = -kaa_inv_kau;
+  }
+  if (exact_tangents_) return status;
   alpha_trial_ = alpha;
   x_trial_ = x;
   dalpha_trial_ = -kaa_inv_kau;
@@ -367,6 +392,7 @@ PointStatus SolidShell8::evaluate(const HexCorners& xc, HexVector* f, HexMatrix*
 
 void SolidShell8::commit() {
   for (auto& p : points_) p.commit();
+  dthickness_ = dthickness_trial_;
   alpha_ = alpha_trial_;
   x_committed_ = x_trial_;
   dalpha_ = dalpha_trial_;
@@ -375,6 +401,7 @@ void SolidShell8::commit() {
 
 void SolidShell8::revert() {
   for (auto& p : points_) p.revert();
+  dthickness_trial_ = dthickness_;
   alpha_trial_ = alpha_;
   x_trial_ = x_committed_;
   dalpha_trial_ = dalpha_;
@@ -423,6 +450,118 @@ void SolidShell8::load_state(io::BinaryReader& r) {
   x_committed_ = x_trial_ = Eigen::Map<const Eigen::Matrix<double, 3, 8>>(xc.data());
   dalpha_ = dalpha_trial_ = Eigen::Map<const Eigen::Matrix<double, kEnhanced, 24>>(da.data());
   thickness_ratio_ = thickness_ratio_trial_ = r.f64();
+}
+
+void SolidShell8::enable_sensitivities(const SensLaw6& law, int count) {
+  (void)law;  // the points read it at every pass
+  if (count < 1 || count > material::kSensitivitySlots)
+    throw std::invalid_argument("solid-shell sensitivities: " + std::to_string(count) + " parameters");
+  sensitivity_count_ = count;
+  for (auto& p : points_) p.enable_sensitivities(false);  // no stabilisation built on the tangent
+  dra_.setZero();
+  dthickness_ = dthickness_trial_ = material::SensitivityRow::Zero();
+}
+
+bool SolidShell8::tangent_was_exact() const {
+  for (const auto& p : points_)
+    if (!p.tangent_was_exact()) return false;
+  return true;
+}
+
+void SolidShell8::set_exact_tangents(bool exact) {
+  exact_tangents_ = exact;
+  for (auto& p : points_) p.set_exact_tangents(exact);
+}
+
+PointStatus SolidShell8::sensitivities(const HexCorners& xc, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) {
+  using material::derivatives_of;
+  using SensRow = material::SensitivityRow;
+  using EnhancedColumns = Eigen::Matrix<double, kEnhanced, material::kSensitivitySlots>;
+  if (sensitivity_count_ == 0) throw std::logic_error("SolidShell8::sensitivities before enable_sensitivities");
+  Eigen::Matrix<double, 3, 8> x;
+  for (std::size_t I = 0; I < 8; ++I) x.col(static_cast<int>(I)) = xc[I];
+  // The enhanced parameters of the converged iterate, and with du their derivatives from the
+  // condensed equations (d r_a / d p from the pseudo-load's pass).
+  const EnhancedVector& alpha = alpha_trial_;
+  EnhancedColumns dalpha = EnhancedColumns::Zero();
+  if (du) dalpha = dalpha_du_ * *du - kaa_inverse_ * dra_;
+  HexSensitivities dfu = HexSensitivities::Zero();
+  EnhancedColumns dra = EnhancedColumns::Zero();
+  std::array<PointKinematics, 4> pk;
+  std::array<SensColumns6, 4> dls;
+  std::array<Voigt6S, 4> T;
+  for (std::size_t level = 0; level < zeta_.size(); ++level) {
+    const std::array<Sample, 4> shear = shear_samples(x, zeta_[level], shear0_[level]);
+    // The points' log strains as accumulate() forms them, and with du their derivatives.
+    double volume = 0.0, theta = 0.0;
+    SensRow dtheta = SensRow::Zero();
+    for (std::size_t q = 0; q < 4; ++q) {
+      const PointGeometry& pg = geometry_[4 * level + q];
+      const PointStatus kinematics = point_kinematics(x, X_, pg.s, pg.T, pg.Gamma, alpha, shear, &pk[q]);
+      if (!kinematics.ok) return kinematics;
+      volume += pg.weight;
+      theta += pg.weight * kTrace.dot(pk[q].ls.value);
+      if (du) {
+        dls[q] = pk[q].ls.first * (pg.T * (pk[q].Bc * *du) + pg.Gamma * dalpha);
+        dtheta += pg.weight * kTrace.transpose() * dls[q];
+      }
+    }
+    theta /= volume;
+    dtheta /= volume;
+    SensRow dpressure = SensRow::Zero();
+    std::array<SensColumns6, 4> dT;
+    for (std::size_t q = 0; q < 4; ++q) {
+      const std::size_t p = 4 * level + q;
+      const Voigt6 eps = pk[q].ls.value + kTrace * ((theta - kTrace.dot(pk[q].ls.value)) / 3.0);
+      SensColumns6 deps;
+      if (du) deps = dls[q] + kTrace * ((dtheta - kTrace.transpose() * dls[q]) / 3.0);
+      const PointStatus ps = points_[p].sensitivities(law, eps, du ? &deps : nullptr, load ? &T[q] : nullptr);
+      if (!ps.ok) return ps;
+      if (!load) continue;
+      for (int i = 0; i < 6; ++i) dT[q].row(i) = derivatives_of(T[q](i));
+      dpressure += geometry_[p].weight * kTrace.transpose() * dT[q];
+    }
+    if (!load) continue;
+    dpressure /= volume;
+    // At fixed corners and enhanced parameters only the stresses move: each point's deviator and
+    // the level's mean pressure.
+    for (std::size_t q = 0; q < 4; ++q) {
+      const PointGeometry& pg = geometry_[4 * level + q];
+      const SensColumns6 dTe = dT[q] + kTrace * ((dpressure - kTrace.transpose() * dT[q]) / 3.0);
+      const SensColumns6 dS = pk[q].ls.first.transpose() * dTe;
+      dfu.noalias() += pk[q].Bc.transpose() * (pg.weight * pg.T.transpose() * dS);
+      dra.noalias() += pg.weight * pg.Gamma.transpose() * dS;
+    }
+  }
+  if (load) {
+    dra_ = dra;
+    *load = dfu - kua_ * (kaa_inverse_ * dra);
+    load->rightCols(material::kSensitivitySlots - sensitivity_count_).setZero();
+  }
+  if (du) {
+    // |g_3| / |G_3| at the centre: d|g_3| = g_3 . dg_3 / |g_3|.
+    const Row8 dn = hex_parent_derivatives(Vec3::Zero()).row(2);
+    const Vec3 g3 = x * dn.transpose();
+    dthickness_trial_.setZero();
+    for (int k = 0; k < sensitivity_count_; ++k) {
+      Vec3 dg3 = Vec3::Zero();
+      for (int I = 0; I < 8; ++I) dg3 += dn(I) * du->block<3, 1>(3 * I, k);
+      dthickness_trial_(k) = g3.dot(dg3) / (g3.norm() * g3_norm0_);
+    }
+  }
+  return {};
+}
+
+void SolidShell8::save_sensitivities(io::BinaryWriter& w, int count) const {
+  for (const auto& p : points_) p.save_sensitivities(w, count);
+  save_columns(w, dthickness_, count);
+}
+
+void SolidShell8::load_sensitivities(io::BinaryReader& r, int count) {
+  if (count != sensitivity_count_) throw std::logic_error("SolidShell8::load_sensitivities: another parameter count than enabled");
+  for (auto& p : points_) p.load_sensitivities(r, count);
+  load_columns(r, "solid-shell thickness", count, &dthickness_);
+  dthickness_trial_ = dthickness_;
 }
 
 }  // namespace spifit::element

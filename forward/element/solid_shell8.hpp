@@ -36,6 +36,11 @@
 // the residual left is removed from the forces to first order, and the tangent is the condensed
 // one. After a commit or a revert the previous values are the committed ones, so a run restarted
 // from a checkpoint evaluates as the uninterrupted one.
+// Direct differentiation (docs/design/sensitivities.md, "Solids"): the enhanced parameters carry
+// no history (every evaluation solves for them afresh), so their derivatives follow from the
+// condensed equations alone, d alpha = -K_aa^-1 (K_au du + d r_a / d p), and the pseudo-load of
+// the corners is the condensed one, d f_u / d p - K_ua K_aa^-1 d r_a / d p (both at fixed corners
+// and enhanced parameters, through the points' committed derivatives).
 #include "forward/element/hex8_stiffness.hpp"
 #include "forward/element/solid_element.hpp"
 #include "forward/element/solid_point.hpp"
@@ -52,11 +57,15 @@ class SolidShell8 final : public SolidElement {
   using Law = SolidPoint::Law;
   static constexpr int kEnhanced = 4;
   using EnhancedVector = Eigen::Matrix<double, kEnhanced, 1>;
+  // The enhanced parameters' Newton iteration stops at a change below this.
+  static constexpr double kDefaultEnhancedTolerance = 1e-8;
 
   // X: reference corners; axes: orthonormal material axes as columns (rolling, transverse,
   // normal). Throws std::invalid_argument for a Jacobian that is not positive at a point or axes
-  // that are not orthonormal.
-  SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const ThicknessRule& rule);
+  // that are not orthonormal. enhanced_tolerance: the enhanced parameters' Newton iteration
+  // stops at a change below it (the committed points' states carry an error of that order).
+  SolidShell8(const HexCorners& X, const Eigen::Matrix3d& axes, const Law& law, const ThicknessRule& rule,
+              double enhanced_tolerance = kDefaultEnhancedTolerance);
 
   // Internal forces (24) and the condensed tangent at the corners x; K may be null.
   PointStatus evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) override;
@@ -81,6 +90,18 @@ class SolidShell8 final : public SolidElement {
 
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
+
+  // Direct differentiation (SolidElement): the points' derivatives and the thickness's.
+  void enable_sensitivities(const SensLaw6& law, int count) override;
+  PointStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) override;
+  const material::SensitivityRow& thickness_ratio_sensitivity() const override { return dthickness_; }
+  bool tangent_was_exact() const override;
+  // With exact tangents an evaluation at the converged iterate keeps its enhanced parameters and
+  // their predictor (one pass, no Newton step on them), so that the next increment starts as
+  // Newton's would.
+  void set_exact_tangents(bool exact) override;
+  void save_sensitivities(io::BinaryWriter& w, int count) const override;
+  void load_sensitivities(io::BinaryReader& r, int count) override;
 
  private:
   struct PointGeometry {
@@ -109,6 +130,7 @@ class SolidShell8 final : public SolidElement {
   // xi = -1, +1 (G_i . G_j).
   std::vector<Eigen::Vector4d> shear0_;
   double g3_norm0_ = 0.0;
+  double enhanced_tolerance_ = kDefaultEnhancedTolerance;
   // Committed / trial: enhanced parameters, the corners they belong to, and their derivative
   // d alpha / d x there (the predictor of the next evaluation).
   EnhancedVector alpha_ = EnhancedVector::Zero(), alpha_trial_ = EnhancedVector::Zero();
@@ -116,6 +138,15 @@ class SolidShell8 final : public SolidElement {
   Eigen::Matrix<double, kEnhanced, 24> dalpha_ = Eigen::Matrix<double, kEnhanced, 24>::Zero(), dalpha_trial_ = Eigen::Matrix<double, kEnhanced, 24>::Zero();
   double thickness_ratio_ = 1.0, thickness_ratio_trial_ = 1.0;
   int last_iterations_ = 0;
+  // Direct differentiation: the last evaluation's K_aa^-1, K_ua and -K_aa^-1 K_au (with the
+  // tangents it had), the pseudo-load's d r_a / d p, and the thickness ratio's derivatives.
+  int sensitivity_count_ = 0;
+  bool exact_tangents_ = false;
+  Eigen::Matrix<double, kEnhanced, kEnhanced> kaa_inverse_ = Eigen::Matrix<double, kEnhanced, kEnhanced>::Zero();
+  Eigen::Matrix<double, 24, kEnhanced> kua_ = Eigen::Matrix<double, 24, kEnhanced>::Zero();
+  Eigen::Matrix<double, kEnhanced, 24> dalpha_du_ = Eigen::Matrix<double, kEnhanced, 24>::Zero();
+  Eigen::Matrix<double, kEnhanced, material::kSensitivitySlots> dra_ = Eigen::Matrix<double, kEnhanced, material::kSensitivitySlots>::Zero();
+  material::SensitivityRow dthickness_ = material::SensitivityRow::Zero(), dthickness_trial_ = material::SensitivityRow::Zero();
 };
 
 }  // namespace spifit::element

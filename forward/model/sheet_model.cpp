@@ -27,6 +27,7 @@ std::unique_ptr<FeModel> make_sheet_model(const mesh::Mesh& mid, double thicknes
     options.material_axis = spec.shell.shell.material_axis;
     options.material_axes = spec.shell.material_axes;
     options.hourglass = spec.hourglass;
+    options.enhanced_tolerance = spec.enhanced_tolerance;
     options.thickness_rule = element::make_thickness_rule(spec.shell.shell.thickness_rule, spec.shell.shell.thickness_points);
     options.layers = layers;
     return std::make_unique<FeModel>(*solid, std::make_unique<SolidFamily>(*solid, material, options));

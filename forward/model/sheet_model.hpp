@@ -5,6 +5,7 @@
 // docs/design/numerics-solid.md). A new family adds
 // its name to sheet_element_names() and its construction to make_sheet_model.
 #include "forward/element/brick8.hpp"
+#include "forward/element/solid_shell8.hpp"
 #include "forward/material/material_params.hpp"
 #include "forward/mesh/mesh.hpp"
 #include "forward/model/fe_model.hpp"
@@ -22,6 +23,8 @@ struct SheetModelSpec {
   ShellModelOptions shell;             // the shell's options; its material axes serve every family,
                                        // its thickness rule the solid-shell
   element::HourglassOptions hourglass;  // the brick's stabilisation
+  // The solid-shell's enhanced strains' Newton tolerance.
+  double enhanced_tolerance = element::SolidShell8::kDefaultEnhancedTolerance;
 };
 
 // "shell", "brick", "solid_shell": the scenes' [sheet] element choices.

@@ -59,7 +59,7 @@ SolidFamily::SolidFamily(const mesh::Mesh& mesh, const material::MaterialParams<
     axes.col(2) = n;
     try {
       if (kind_ == SolidElementKind::brick) elements_.push_back(std::make_unique<element::Brick8>(X, axes, law_, options.hourglass));
-      else elements_.push_back(std::make_unique<element::SolidShell8>(X, axes, law_, options.thickness_rule));
+      else elements_.push_back(std::make_unique<element::SolidShell8>(X, axes, law_, options.thickness_rule, options.enhanced_tolerance));
     } catch (const std::invalid_argument& err) {
       throw std::invalid_argument("element " + std::to_string(e) + ": " + err.what());
     }
@@ -227,13 +227,11 @@ void SolidFamily::load_state(io::BinaryReader& r) {
 }
 
 void SolidFamily::enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) {
-  if (kind_ != SolidElementKind::brick)
-    throw std::invalid_argument(name() + " elements have no parameter sensitivities yet (the one-point brick has: [sheet] element = \"brick\")");
   sensitivity_count_ = count;
   material::ReturnMappingOptions o;
   o.single_jet_evaluation = true;  // the pseudo-load's pass; the update's asks for the tangent
   sensitivity_law_ = std::make_unique<element::SensLaw6>(law, o);
-  for (int e = 0; e < num_elements(); ++e) brick_mut(e).enable_sensitivities(*sensitivity_law_, count);
+  for (auto& el : elements_) el->enable_sensitivities(*sensitivity_law_, count);
 }
 
 bool SolidFamily::contribution_derivatives(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd* du,
@@ -266,7 +264,7 @@ bool SolidFamily::contribution_derivatives(int e, const ElementInputs& in, const
 
 solver::ElementEvaluation SolidFamily::sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) {
   element::HexSensitivities l;
-  const element::PointStatus s = brick_mut(e).sensitivities(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), *sensitivity_law_, nullptr, &l);
+  const element::PointStatus s = elements_[static_cast<std::size_t>(e)]->sensitivities(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), *sensitivity_law_, nullptr, &l);
   if (!s.ok) return {false, name() + " element " + std::to_string(e), s.reason, s.suggested_scale};
   Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
   contribution_derivatives(e, in, du0, nullptr, &l, &force);
@@ -277,7 +275,7 @@ solver::ElementEvaluation SolidFamily::sensitivity_load(int e, const ElementInpu
 solver::ElementEvaluation SolidFamily::update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                             Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) {
   const element::HexSensitivities dus = du;
-  const element::PointStatus s = brick_mut(e).sensitivities(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), *sensitivity_law_, &dus, nullptr);
+  const element::PointStatus s = elements_[static_cast<std::size_t>(e)]->sensitivities(corners(mesh_->hexes[static_cast<std::size_t>(e)], in.x), *sensitivity_law_, &dus, nullptr);
   if (!s.ok) return {false, name() + " element " + std::to_string(e), s.reason, s.suggested_scale};
   // Every element with a top face, so that the contributions keep their trial derivatives.
   Eigen::Matrix<double, 3, material::kSensitivitySlots> force;
@@ -287,15 +285,13 @@ solver::ElementEvaluation SolidFamily::update_sensitivities(int e, const Element
 }
 
 bool SolidFamily::tangent_was_exact() const {
-  if (kind_ != SolidElementKind::brick) return true;
-  for (int e = 0; e < num_elements(); ++e)
-    if (!brick(e).tangent_was_exact()) return false;
+  for (const auto& el : elements_)
+    if (!el->tangent_was_exact()) return false;
   return true;
 }
 
 void SolidFamily::set_exact_tangents(bool exact) {
-  if (kind_ != SolidElementKind::brick) return;
-  for (int e = 0; e < num_elements(); ++e) brick_mut(e).set_exact_tangents(exact);
+  for (auto& el : elements_) el->set_exact_tangents(exact);
 }
 
 material::SensitivityRow SolidFamily::thickness_sensitivity(int e) const {
@@ -304,17 +300,17 @@ material::SensitivityRow SolidFamily::thickness_sensitivity(int e) const {
   material::SensitivityRow d = material::SensitivityRow::Zero();
   for (int l = 0; l < layers_; ++l) {
     const int k = l * per_layer + q;
-    d += height0_[static_cast<std::size_t>(k)] * brick(k).thickness_ratio_sensitivity();
+    d += height0_[static_cast<std::size_t>(k)] * element(k).thickness_ratio_sensitivity();
   }
   return d;
 }
 
 void SolidFamily::save_sensitivities(io::BinaryWriter& w) const {
-  for (int e = 0; e < num_elements(); ++e) brick(e).save_sensitivities(w, sensitivity_count_);
+  for (const auto& el : elements_) el->save_sensitivities(w, sensitivity_count_);
 }
 
 void SolidFamily::load_sensitivities(io::BinaryReader& r) {
-  for (int e = 0; e < num_elements(); ++e) brick_mut(e).load_sensitivities(r, sensitivity_count_);
+  for (auto& el : elements_) el->load_sensitivities(r, sensitivity_count_);
 }
 
 }  // namespace spifit::model

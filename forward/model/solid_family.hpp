@@ -33,8 +33,10 @@ struct SolidOptions {
   // The bricks' hourglass stabilisation (element::Brick8): factor 1 on the centre's tangent by
   // default.
   element::HourglassOptions hourglass;
-  // The solid-shells' integration points through the thickness.
+  // The solid-shells' integration points through the thickness, and their enhanced strains'
+  // tolerance (element::SolidShell8).
   element::ThicknessRule thickness_rule = element::gauss_legendre_rule(5);
+  double enhanced_tolerance = element::SolidShell8::kDefaultEnhancedTolerance;
   // Elements through the thickness (mesh::extrude_sheet's layers; 1 for solid-shells).
   int layers = 1;
 };
@@ -78,14 +80,14 @@ class SolidFamily final : public ElementFamily {
   MidSurfaceSensitivity mid_surface_sensitivity(const FeModel& model) const override;
   void save_state(io::BinaryWriter& w) const override;
   void load_state(io::BinaryReader& r) override;
-  // Direct differentiation (docs/design/sensitivities.md, "Solids"): bricks only; solid-shells
-  // refuse with std::invalid_argument.
+  // Direct differentiation (docs/design/sensitivities.md, "Solids"), through the elements'
+  // (element::SolidElement) and the contributions on their top faces.
   void enable_sensitivities(const material::MaterialParams<material::SensitivityScalar>& law, int count) override;
   solver::ElementEvaluation sensitivity_load(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, Eigen::MatrixXd* load) override;
   solver::ElementEvaluation update_sensitivities(int e, const ElementInputs& in, const Eigen::MatrixXd& du0, const Eigen::MatrixXd& du,
                                                  Eigen::Matrix<double, 3, material::kSensitivitySlots>* contribution_force) override;
   material::SensitivityRow thickness_sensitivity(int e) const override;
-  // The bricks' centres at rest (SolidPoint::tangent_was_exact); solid-shells: always exact.
+  // Points that started the increment at rest (element::SolidPoint::tangent_was_exact).
   bool tangent_was_exact() const override;
   void set_exact_tangents(bool exact) override;
   void save_sensitivities(io::BinaryWriter& w) const override;
@@ -110,7 +112,6 @@ class SolidFamily final : public ElementFamily {
   std::vector<std::string> warnings_;
   int sensitivity_count_ = 0;
   std::unique_ptr<element::SensLaw6> sensitivity_law_;
-  element::Brick8& brick_mut(int e) { return static_cast<element::Brick8&>(*elements_[static_cast<std::size_t>(e)]); }
   // The contributions' derivatives on element e's top face (if it has one): their pseudo-load
   // (du null) or their trial derivatives (du given), added to *load's rows of the face's
   // corners, and the derivative of their force on the tool.

@@ -110,7 +110,8 @@ struct RunControl {
   // With sensitivities: hill.G also moves H = 2 - G (a fit with normalise_hill).
   bool sensitivity_h_follows_g = false;
   // > 0: the implicit solver's force and displacement tolerances instead of the scene's (the
-  // derivative checker's runs, so that central differences see the model, not the tolerance).
+  // derivative checker's runs, so that central differences see the model, not the tolerance),
+  // and a thousandth of it the solid-shells' enhanced strains' where that is tighter.
   double newton_tolerance = 0.0;
   // Build the model (its refusals included) and stop before the first increment (status
   // stopped): what sensitivity_refusal.hpp asks before a fit relies on a scene's sensitivities.

@@ -142,15 +142,14 @@ TEST(FormingResume, LineWithSensitivitiesResumesBitForBit) {
   fs::remove(file);
 }
 
-// The bricks' derivatives in the checkpoint (the centres' states and tangents, hourglass amplitudes
-// and forces, thickness ratios): the brick indent with sensitivities, stopped after 21 increments
-// (checkpoint after 16) and resumed, writes the uninterrupted run's derivatives byte for byte.
-TEST(FormingResume, BrickIndentWithSensitivitiesResumesBitForBit) {
-  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/indent_brick.toml");
+// A solid indent with sensitivities, stopped after 21 increments (checkpoint after 16) and
+// resumed, writes the uninterrupted run's derivatives byte for byte.
+void expect_solid_indent_derivatives_resume(const std::string& name) {
+  FormingScene s = read_forming_scene(std::string(SPIFIT_SOURCE_DIR) + "/experiments/aa3003o/scenes/" + name + ".toml");
   s.checkpoint_increments = 8;
   RunControl plain;
   plain.sensitivities = {"swift.K", "elastic.E"};
-  const fs::path ref = temp_path("brick_sens_ref"), dir = temp_path("brick_sens");
+  const fs::path ref = temp_path(name + "_sens_ref"), dir = temp_path(name + "_sens");
   const FormingResult a = run(s, ref, plain);
   ASSERT_TRUE(a.ok()) << a.message;
   RunControl stop = plain;
@@ -165,6 +164,14 @@ TEST(FormingResume, BrickIndentWithSensitivitiesResumesBitForBit) {
   fs::remove_all(ref);
   fs::remove_all(dir);
 }
+
+// The bricks' derivatives in the checkpoint: the centres' states and tangents, hourglass
+// amplitudes and forces, thickness ratios.
+TEST(FormingResume, BrickIndentWithSensitivitiesResumesBitForBit) { expect_solid_indent_derivatives_resume("indent_brick"); }
+
+// The solid-shells': their points' states (without the tangents' derivatives, which nothing
+// builds on) and thickness ratios.
+TEST(FormingResume, SolidShellIndentWithSensitivitiesResumesBitForBit) { expect_solid_indent_derivatives_resume("indent_solid_shell"); }
 
 // A checkpoint holds the derivatives with respect to the parameters it was written with: a resume
 // asking for others, or for none, or a checkpoint without derivatives resumed with them, is
