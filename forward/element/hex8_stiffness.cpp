@@ -2,6 +2,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -188,17 +189,55 @@ std::vector<Eigen::Matrix<double, 12, 12>> hex_hourglass_stiffness_derivatives(c
   // K = Kuu - Kua Kaa^-1 Kua^T with every block linear in D, Kaa read from its lower triangle as
   // the LDL^T factorisation reads it (a consistent tangent with kinematic hardening is not
   // symmetric): dK = dKuu - dKua S - S^T dKua^T + S^T dKaa S, S = Kaa^-1 Kua^T, the same S for
-  // every direction.
-  const IncompatibleBlocks k = incompatible_blocks(X, D);
-  const Eigen::Matrix<double, 9, 24> S = k.aa.ldlt().solve(k.ua.transpose());
+  // every direction. Projected onto the hourglass shapes H point by point, with P = B H and
+  // Q = Ba S H (6 x 12 each): H^T dK H = sum w (P^T d P - X - X^T) + (S H)^T L(dKaa) (S H),
+  // X = P^T d Q, L reading the lower triangle -- products of 6 x 12 blocks instead of the full
+  // 24 x 24 and 24 x 9 ones, and the points' operators formed once for every direction.
+  struct PointOperators {
+    Eigen::Matrix<double, 6, 12> P, Q;
+    Eigen::Matrix<double, 6, 9> Ba;
+    double det = 0.0;
+  };
+  const Eigen::Matrix3d J0 = hex_jacobian(X, hex_parent_derivatives(Eigen::Vector3d::Zero()));
+  const double det0 = checked_determinant(J0, -1);
+  const Eigen::Matrix3d J0inv = J0.inverse();
   const Eigen::Matrix<double, 24, 12> H = hex_hourglass_shapes();
+  std::array<PointOperators, 8> points;
+  std::array<Eigen::Matrix<double, 6, 24>, 8> B;
+  IncompatibleBlocks k;
+  for (int p = 0; p < 8; ++p) {
+    const Eigen::Vector3d s = gauss_point(p);
+    const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(s);
+    const Eigen::Matrix3d J = hex_jacobian(X, dN);
+    PointOperators& o = points[static_cast<std::size_t>(p)];
+    o.det = checked_determinant(J, p);
+    B[static_cast<std::size_t>(p)] = strain_rows<8>(Eigen::Matrix<double, 3, 8>(J.inverse() * dN));
+    Eigen::Matrix3d dP = Eigen::Matrix3d::Zero();
+    for (int c = 0; c < 3; ++c) dP(c, c) = -2.0 * s(c);
+    o.Ba = strain_rows<3>(Eigen::Matrix3d(J0inv * dP * (det0 / o.det)));
+    const Eigen::Matrix<double, 6, 24>& Bp = B[static_cast<std::size_t>(p)];
+    k.ua += Bp.transpose() * D * o.Ba * o.det;
+    k.aa += o.Ba.transpose() * D * o.Ba * o.det;
+  }
+  const Eigen::Matrix<double, 9, 12> SH = k.aa.ldlt().solve(k.ua.transpose()) * H;
+  for (int p = 0; p < 8; ++p) {
+    PointOperators& o = points[static_cast<std::size_t>(p)];
+    o.P = B[static_cast<std::size_t>(p)] * H;
+    o.Q = o.Ba * SH;
+  }
   std::vector<Eigen::Matrix<double, 12, 12>> out;
   out.reserve(dD.size());
   for (const Voigt6Matrix& d : dD) {
-    const IncompatibleBlocks dk = incompatible_blocks(X, d);
-    const Eigen::Matrix<double, 9, 9> daa = dk.aa.selfadjointView<Eigen::Lower>();
-    const HexMatrix dK = dk.uu - dk.ua * S - S.transpose() * dk.ua.transpose() + S.transpose() * daa * S;
-    out.push_back(H.transpose() * dK * H);
+    Eigen::Matrix<double, 12, 12> sum = Eigen::Matrix<double, 12, 12>::Zero(), cross = Eigen::Matrix<double, 12, 12>::Zero();
+    Eigen::Matrix<double, 9, 9> daa = Eigen::Matrix<double, 9, 9>::Zero();
+    for (const PointOperators& o : points) {
+      const Eigen::Matrix<double, 6, 12> dP = o.det * (d * o.P), dQ = o.det * (d * o.Q);
+      sum.noalias() += o.P.transpose() * dP;
+      cross.noalias() += o.P.transpose() * dQ;
+      daa.noalias() += o.det * (o.Ba.transpose() * d * o.Ba);
+    }
+    const Eigen::Matrix<double, 9, 9> daa_lower = daa.selfadjointView<Eigen::Lower>();
+    out.push_back(sum - cross - cross.transpose() + SH.transpose() * daa_lower * SH);
   }
   return out;
 }

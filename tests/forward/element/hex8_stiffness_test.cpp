@@ -146,6 +146,38 @@ double solve_against(const Block& B, const Voigt6Matrix& D, ElementStiffness sti
   return err;
 }
 
+// The hourglass stiffness's derivatives along several directions of the modulus at once, against
+// central differences of hex_hourglass_stiffness: a modulus that is not symmetric (as a consistent
+// tangent with kinematic hardening is) and directions that are not either, on a distorted element.
+TEST(Hex8Stiffness, HourglassStiffnessDerivativesMatchCentralDifferences) {
+  const HexCorners X = distorted();
+  Voigt6Matrix D = isotropic_elasticity(70000.0, 0.33);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 6; ++i) D(i, j) += 3000.0 * u(rng);
+  std::vector<Voigt6Matrix> directions;
+  for (int k = 0; k < 3; ++k) {
+    Voigt6Matrix d;
+    for (int j = 0; j < 6; ++j)
+      for (int i = 0; i < 6; ++i) d(i, j) = 1000.0 * u(rng);
+    directions.push_back(d);
+  }
+  directions.push_back(isotropic_elasticity(1000.0, 0.0));  // along d/dE of an isotropic modulus
+  const std::vector<Eigen::Matrix<double, 12, 12>> exact = hex_hourglass_stiffness_derivatives(X, D, directions);
+  ASSERT_EQ(exact.size(), directions.size());
+  for (std::size_t k = 0; k < directions.size(); ++k) {
+    const double h = 1e-3;  // D moves by about 1e-5 of itself: round-off and truncation near 1e-9
+    const Eigen::Matrix<double, 12, 12> cd =
+        (hex_hourglass_stiffness(X, D + h * directions[k]) - hex_hourglass_stiffness(X, D - h * directions[k])) / (2.0 * h);
+    const double scale = cd.cwiseAbs().maxCoeff();
+    EXPECT_GT(scale, 0.0);
+    std::printf("direction %zu: largest difference %.2e of the largest entry\n", k, (exact[k] - cd).cwiseAbs().maxCoeff() / scale);
+    EXPECT_LT((exact[k] - cd).cwiseAbs().maxCoeff(), 1e-8 * scale) << "direction " << k;
+    EXPECT_LT((hex_hourglass_stiffness_derivative(X, D, directions[k]) - exact[k]).cwiseAbs().maxCoeff(), 1e-12 * scale) << k;
+  }
+}
+
 TEST(Hex8Stiffness, DistortedPatchReproducesALinearField) {
   Block B = block(2.0, 2.0, 2.0, 2, 2, 2);
   std::mt19937 rng(7);
