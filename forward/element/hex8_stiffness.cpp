@@ -147,6 +147,35 @@ HexMatrix hex_full_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
 }
 
 namespace {
+// The incompatible-modes element's strain operators at the eight Gauss points: the displacements'
+// B, the nine modes' Ba and det J.
+struct IncompatibleOperators {
+  std::array<Eigen::Matrix<double, 6, 24>, 8> B;
+  std::array<Eigen::Matrix<double, 6, 9>, 8> Ba;
+  std::array<double, 8> det;
+};
+
+IncompatibleOperators incompatible_operators(const HexCorners& X) {
+  const Eigen::Matrix3d J0 = hex_jacobian(X, hex_parent_derivatives(Eigen::Vector3d::Zero()));
+  const double det0 = checked_determinant(J0, -1);
+  const Eigen::Matrix3d J0inv = J0.inverse();
+  IncompatibleOperators o;
+  for (int p = 0; p < 8; ++p) {
+    const std::size_t i = static_cast<std::size_t>(p);
+    const Eigen::Vector3d s = gauss_point(p);
+    const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(s);
+    const Eigen::Matrix3d J = hex_jacobian(X, dN);
+    o.det[i] = checked_determinant(J, p);
+    o.B[i] = strain_rows<8>(Eigen::Matrix<double, 3, 8>(J.inverse() * dN));
+    // Modes 1 - s_k^2: parent gradient -2 s_k e_k, mapped with the centre's Jacobian and scaled
+    // by det J0 / det J so that each mode's strain integrates to zero (Taylor's patch-test fix).
+    Eigen::Matrix3d dP = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < 3; ++k) dP(k, k) = -2.0 * s(k);
+    o.Ba[i] = strain_rows<3>(Eigen::Matrix3d(J0inv * dP * (det0 / o.det[i])));
+  }
+  return o;
+}
+
 // The incompatible-modes element's blocks for D, each linear in D: displacements (uu), their
 // coupling to the nine modes (ua) and the modes' own (aa).
 struct IncompatibleBlocks {
@@ -155,23 +184,14 @@ struct IncompatibleBlocks {
   Eigen::Matrix<double, 9, 9> aa = Eigen::Matrix<double, 9, 9>::Zero();
 };
 
-IncompatibleBlocks incompatible_blocks(const HexCorners& X, const Voigt6Matrix& D) {
-  const Eigen::Matrix3d J0 = hex_jacobian(X, hex_parent_derivatives(Eigen::Vector3d::Zero()));
-  const double det0 = checked_determinant(J0, -1);
-  const Eigen::Matrix3d J0inv = J0.inverse();
+// With uu only where with_uu (the derivative's projection forms its own).
+IncompatibleBlocks incompatible_blocks(const IncompatibleOperators& o, const Voigt6Matrix& D, bool with_uu = true) {
   IncompatibleBlocks k;
-  for (int p = 0; p < 8; ++p) {
-    const Eigen::Vector3d s = gauss_point(p);
-    const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(s);
-    const Eigen::Matrix3d J = hex_jacobian(X, dN);
-    const double det = checked_determinant(J, p);
-    const Eigen::Matrix<double, 6, 24> B = strain_rows<8>(Eigen::Matrix<double, 3, 8>(J.inverse() * dN));
-    // Modes 1 - s_k^2: parent gradient -2 s_k e_k, mapped with the centre's Jacobian and scaled
-    // by det J0 / det J so that each mode's strain integrates to zero (Taylor's patch-test fix).
-    Eigen::Matrix3d dP = Eigen::Matrix3d::Zero();
-    for (int k = 0; k < 3; ++k) dP(k, k) = -2.0 * s(k);
-    const Eigen::Matrix<double, 6, 9> Ba = strain_rows<3>(Eigen::Matrix3d(J0inv * dP * (det0 / det)));
-    k.uu += B.transpose() * D * B * det;
+  for (std::size_t p = 0; p < 8; ++p) {
+    const Eigen::Matrix<double, 6, 24>& B = o.B[p];
+    const Eigen::Matrix<double, 6, 9>& Ba = o.Ba[p];
+    const double det = o.det[p];
+    if (with_uu) k.uu += B.transpose() * D * B * det;
     k.ua += B.transpose() * D * Ba * det;
     k.aa += Ba.transpose() * D * Ba * det;
   }
@@ -180,7 +200,7 @@ IncompatibleBlocks incompatible_blocks(const HexCorners& X, const Voigt6Matrix& 
 }  // namespace
 
 HexMatrix hex_incompatible_modes_stiffness(const HexCorners& X, const Voigt6Matrix& D) {
-  const IncompatibleBlocks k = incompatible_blocks(X, D);
+  const IncompatibleBlocks k = incompatible_blocks(incompatible_operators(X), D);
   return k.uu - k.ua * k.aa.ldlt().solve(k.ua.transpose());
 }
 
@@ -193,48 +213,29 @@ std::vector<Eigen::Matrix<double, 12, 12>> hex_hourglass_stiffness_derivatives(c
   // Q = Ba S H (6 x 12 each): H^T dK H = sum w (P^T d P - X - X^T) + (S H)^T L(dKaa) (S H),
   // X = P^T d Q, L reading the lower triangle -- products of 6 x 12 blocks instead of the full
   // 24 x 24 and 24 x 9 ones, and the points' operators formed once for every direction.
-  struct PointOperators {
+  struct Projected {
     Eigen::Matrix<double, 6, 12> P, Q;
-    Eigen::Matrix<double, 6, 9> Ba;
-    double det = 0.0;
   };
-  const Eigen::Matrix3d J0 = hex_jacobian(X, hex_parent_derivatives(Eigen::Vector3d::Zero()));
-  const double det0 = checked_determinant(J0, -1);
-  const Eigen::Matrix3d J0inv = J0.inverse();
+  const IncompatibleOperators o = incompatible_operators(X);
+  const IncompatibleBlocks k = incompatible_blocks(o, D, false);
   const Eigen::Matrix<double, 24, 12> H = hex_hourglass_shapes();
-  std::array<PointOperators, 8> points;
-  std::array<Eigen::Matrix<double, 6, 24>, 8> B;
-  IncompatibleBlocks k;
-  for (int p = 0; p < 8; ++p) {
-    const Eigen::Vector3d s = gauss_point(p);
-    const Eigen::Matrix<double, 3, 8> dN = hex_parent_derivatives(s);
-    const Eigen::Matrix3d J = hex_jacobian(X, dN);
-    PointOperators& o = points[static_cast<std::size_t>(p)];
-    o.det = checked_determinant(J, p);
-    B[static_cast<std::size_t>(p)] = strain_rows<8>(Eigen::Matrix<double, 3, 8>(J.inverse() * dN));
-    Eigen::Matrix3d dP = Eigen::Matrix3d::Zero();
-    for (int c = 0; c < 3; ++c) dP(c, c) = -2.0 * s(c);
-    o.Ba = strain_rows<3>(Eigen::Matrix3d(J0inv * dP * (det0 / o.det)));
-    const Eigen::Matrix<double, 6, 24>& Bp = B[static_cast<std::size_t>(p)];
-    k.ua += Bp.transpose() * D * o.Ba * o.det;
-    k.aa += o.Ba.transpose() * D * o.Ba * o.det;
-  }
   const Eigen::Matrix<double, 9, 12> SH = k.aa.ldlt().solve(k.ua.transpose()) * H;
-  for (int p = 0; p < 8; ++p) {
-    PointOperators& o = points[static_cast<std::size_t>(p)];
-    o.P = B[static_cast<std::size_t>(p)] * H;
-    o.Q = o.Ba * SH;
+  std::array<Projected, 8> points;
+  for (std::size_t p = 0; p < 8; ++p) {
+    points[p].P = o.B[p] * H;
+    points[p].Q = o.Ba[p] * SH;
   }
   std::vector<Eigen::Matrix<double, 12, 12>> out;
   out.reserve(dD.size());
   for (const Voigt6Matrix& d : dD) {
     Eigen::Matrix<double, 12, 12> sum = Eigen::Matrix<double, 12, 12>::Zero(), cross = Eigen::Matrix<double, 12, 12>::Zero();
     Eigen::Matrix<double, 9, 9> daa = Eigen::Matrix<double, 9, 9>::Zero();
-    for (const PointOperators& o : points) {
-      const Eigen::Matrix<double, 6, 12> dP = o.det * (d * o.P), dQ = o.det * (d * o.Q);
-      sum.noalias() += o.P.transpose() * dP;
-      cross.noalias() += o.P.transpose() * dQ;
-      daa.noalias() += o.det * (o.Ba.transpose() * d * o.Ba);
+    for (std::size_t p = 0; p < 8; ++p) {
+      const Projected& q = points[p];
+      const Eigen::Matrix<double, 6, 12> dP = o.det[p] * (d * q.P), dQ = o.det[p] * (d * q.Q);
+      sum.noalias() += q.P.transpose() * dP;
+      cross.noalias() += q.P.transpose() * dQ;
+      daa.noalias() += o.det[p] * (o.Ba[p].transpose() * d * o.Ba[p]);
     }
     const Eigen::Matrix<double, 9, 9> daa_lower = daa.selfadjointView<Eigen::Lower>();
     out.push_back(sum - cross - cross.transpose() + SH.transpose() * daa_lower * SH);
