@@ -139,7 +139,7 @@ BrickStatus Brick8::evaluate(const HexCorners& x, HexVector* f, HexMatrix* K) {
   return status;
 }
 
-void Brick8::enable_sensitivities(const SensLaw6& law, int count) {
+void Brick8::enable_sensitivities(const SolidSensitivityLaw& law, int count) {
   if (count < 1 || count > material::kSensitivitySlots) throw std::invalid_argument("brick sensitivities: " + std::to_string(count) + " parameters");
   sensitivity_count_ = count;
   point_.enable_sensitivities();
@@ -149,7 +149,7 @@ void Brick8::enable_sensitivities(const SensLaw6& law, int count) {
   for (int k = 0; k < count; ++k) {
     Voigt6x6 dCe;
     for (int j = 0; j < 6; ++j)
-      for (int i = 0; i < 6; ++i) dCe(i, j) = law.elastic_matrix()(i, j).v(k);
+      for (int i = 0; i < 6; ++i) dCe(i, j) = law.full.elastic_matrix()(i, j).v(k);
     if (dCe.cwiseAbs().maxCoeff() > 0.0) dkq_elastic_[static_cast<std::size_t>(k)] = hourglass_.scale * hex_hourglass_stiffness_derivative(reference_, Ce, dCe);
   }
   dq_ = dq_trial_ = dg_ = dg_trial_ = Sens12::Zero();
@@ -180,7 +180,7 @@ void Brick8::update_hourglass_stiffness_derivatives() {
   for (std::size_t i = 0; i < slots.size(); ++i) dkq_[static_cast<std::size_t>(slots[i])] = hourglass_.scale * d[i];
 }
 
-BrickStatus Brick8::sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) {
+BrickStatus Brick8::sensitivities(const HexCorners& x, const SolidSensitivityLaw& law, const HexSensitivities* du, HexSensitivities* load) {
   if (sensitivity_count_ == 0) throw std::logic_error("Brick8::sensitivities before enable_sensitivities");
   const int n = sensitivity_count_;
   const Mat3 H = displacement_gradient(x);

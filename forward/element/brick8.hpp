@@ -62,8 +62,8 @@ class Brick8 final : public SolidElement {
   // Direct differentiation (SolidElement; docs/design/sensitivities.md, "Solids"): the committed
   // state's derivatives are the centre's, the hourglass amplitudes' and forces', the
   // stabilisation's stiffness's and the thickness's.
-  void enable_sensitivities(const SensLaw6& law, int count) override;
-  BrickStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) override;
+  void enable_sensitivities(const SolidSensitivityLaw& law, int count) override;
+  BrickStatus sensitivities(const HexCorners& x, const SolidSensitivityLaw& law, const HexSensitivities* du, HexSensitivities* load) override;
   bool tangent_was_exact() const override { return point_.tangent_was_exact(); }
   void set_exact_tangents(bool exact) override { point_.set_exact_tangents(exact); }
   const material::SensitivityRow& thickness_ratio_sensitivity() const override { return dthickness_; }

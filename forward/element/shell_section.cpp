@@ -115,12 +115,7 @@ SectionStatus ShellSection::update_sensitivities(const SensLaw& law, const Vec3S
 
 NarrowLaws::NarrowLaws(const material::MaterialParams<Sens>& law, const material::ReturnMappingOptions& options, int count) {
   // The narrow Jets keep the first slots only: the parameters must leave the others empty.
-  bool beyond = false;
-  law.map<double>([&](const Sens& x) {
-    for (int k = std::max(count, 0); k < material::kSensitivitySlots; ++k) beyond = beyond || x.v(k) != 0.0;
-    return 0.0;
-  });
-  if (beyond) throw std::logic_error("NarrowLaws: the law is seeded beyond its " + std::to_string(count) + " parameters' slots");
+  if (material::seeded_beyond(law, count)) throw std::logic_error("NarrowLaws: the law is seeded beyond its " + std::to_string(count) + " parameters' slots");
   if (count + 3 <= 4)
     four = std::make_unique<FourSlotLaw>(material::narrowed_params<4>(law), options);
   else if (count + 3 <= 6)

@@ -44,8 +44,8 @@ class SolidElement {
   // parameters seeded in `law` (count of them). sensitivities: with du null, the pseudo-load
   // (the forces' derivatives at fixed corners) into *load; with du (the corners' derivatives),
   // the trial derivatives that commit() keeps. Called in that order at a converged iterate.
-  virtual void enable_sensitivities(const SensLaw6& law, int count) = 0;
-  virtual PointStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) = 0;
+  virtual void enable_sensitivities(const SolidSensitivityLaw& law, int count) = 0;
+  virtual PointStatus sensitivities(const HexCorners& x, const SolidSensitivityLaw& law, const HexSensitivities* du, HexSensitivities* load) = 0;
   // The committed thickness_ratio()'s derivatives.
   virtual const material::SensitivityRow& thickness_ratio_sensitivity() const = 0;
   // Whether the last evaluate()'s tangent was exact (SolidPoint::tangent_was_exact at every

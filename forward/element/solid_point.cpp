@@ -98,32 +98,50 @@ void SolidPoint::enable_sensitivities(bool tangent_derivatives) {
   d_ = d_trial_ = SolidPointDerivatives();
 }
 
-PointStatus SolidPoint::sensitivities(const SensLaw6& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T) {
-  using material::derivatives_of;
-  using material::with_derivatives;
-  using S = material::SensitivityScalar;
+SolidSensitivityLaw::SolidSensitivityLaw(const material::MaterialParams<material::SensitivityScalar>& law, const material::ReturnMappingOptions& options,
+                                         int count)
+    : full(law, options) {
+  if (material::seeded_beyond(law, count))
+    throw std::logic_error("SolidSensitivityLaw: the law is seeded beyond its " + std::to_string(count) + " parameters' slots");
+  if (count <= 2) two = std::make_unique<const TwoSlotLaw6>(material::narrowed_params<2>(law), options);
+  else if (count <= 4) four = std::make_unique<const FourSlotLaw6>(material::narrowed_params<4>(law), options);
+}
+
+PointStatus SolidPoint::sensitivities(const SolidSensitivityLaw& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T) {
   if (!sensitivities_) throw std::logic_error("SolidPoint::sensitivities before enable_sensitivities");
+  if (law.two) return sensitivities_on<2>(*law.two, eps, deps, T);
+  if (law.four) return sensitivities_on<4>(*law.four, eps, deps, T);
+  return sensitivities_on<material::kSensitivitySlots>(law.full, eps, deps, T);
+}
+
+template <int N>
+PointStatus SolidPoint::sensitivities_on(const material::ReturnMapping<ceres::Jet<double, N>, 6>& law, const Voigt6& eps, const SensColumns6* deps,
+                                         Voigt6S* T) {
+  using J = ceres::Jet<double, N>;
+  // Slot k of a value with the rows' derivatives, and back with the slots beyond N zero.
+  const auto jet = [](double v, const material::SensitivityRow& d) { return material::narrowed<N>(material::with_derivatives(v, d)); };
+  const auto row = [](const J& x) { return material::derivatives_of(material::widened<N>(x)); };
   // The committed state with its derivatives; the flow stress as a value (the law reads it for
   // the elastic check alone).
   const State& c = point_.committed();
-  material::MaterialState<S, 6> s0, s1;
+  material::MaterialState<J, 6> s0, s1;
   for (int i = 0; i < 6; ++i) {
-    s0.stress(i) = with_derivatives(c.stress(i), d_.stress.row(i));
-    s0.plastic_strain(i) = with_derivatives(c.plastic_strain(i), d_.plastic_strain.row(i));
-    s0.back_stress(i) = with_derivatives(c.back_stress(i), d_.back_stress.row(i));
+    s0.stress(i) = jet(c.stress(i), d_.stress.row(i));
+    s0.plastic_strain(i) = jet(c.plastic_strain(i), d_.plastic_strain.row(i));
+    s0.back_stress(i) = jet(c.back_stress(i), d_.back_stress.row(i));
   }
-  s0.eqps = with_derivatives(c.eqps, d_.eqps);
-  s0.plastic_work = with_derivatives(c.plastic_work, d_.plastic_work);
-  s0.flow_stress = S(c.flow_stress);
+  s0.eqps = jet(c.eqps, d_.eqps);
+  s0.plastic_work = jet(c.plastic_work, d_.plastic_work);
+  s0.flow_stress = J(c.flow_stress);
   // The increment as update_log forms it, value for value.
   const Voigt6 d_eps_value = eps - eps_;
-  Voigt6S d_eps;
+  Eigen::Matrix<J, 6, 1> d_eps;
   for (int i = 0; i < 6; ++i) {
     material::SensitivityRow d = -d_.log_strain.row(i);
     if (deps) d += deps->row(i);
-    d_eps(i) = with_derivatives(d_eps_value(i), d);
+    d_eps(i) = jet(d_eps_value(i), d);
   }
-  Voigt6x6S ct;
+  Eigen::Matrix<J, 6, 6> ct;
   const bool with_tangent = deps && tangent_derivatives_;
   const material::UpdateResult r = law.integrate(s0, d_eps, s1, with_tangent ? &ct : nullptr);
   PointStatus status;
@@ -133,15 +151,16 @@ PointStatus SolidPoint::sensitivities(const SensLaw6& law, const Voigt6& eps, co
     status.suggested_scale = r.suggested_scale;
     return status;
   }
-  if (T) *T = s1.stress;
+  if (T)
+    for (int i = 0; i < 6; ++i) (*T)(i) = material::widened<N>(s1.stress(i));
   if (deps) {
     for (int i = 0; i < 6; ++i) {
-      d_trial_.stress.row(i) = derivatives_of(s1.stress(i));
-      d_trial_.plastic_strain.row(i) = derivatives_of(s1.plastic_strain(i));
-      d_trial_.back_stress.row(i) = derivatives_of(s1.back_stress(i));
+      d_trial_.stress.row(i) = row(s1.stress(i));
+      d_trial_.plastic_strain.row(i) = row(s1.plastic_strain(i));
+      d_trial_.back_stress.row(i) = row(s1.back_stress(i));
     }
-    d_trial_.eqps = derivatives_of(s1.eqps);
-    d_trial_.plastic_work = derivatives_of(s1.plastic_work);
+    d_trial_.eqps = row(s1.eqps);
+    d_trial_.plastic_work = row(s1.plastic_work);
     d_trial_.log_strain = *deps;
     // update_log's choice of tangent: the committed one where the strain did not move.
     if (with_tangent) {
@@ -149,7 +168,7 @@ PointStatus SolidPoint::sensitivities(const SensLaw6& law, const Voigt6& eps, co
         d_trial_.tangent = d_.tangent;
       } else {
         for (int j = 0; j < 6; ++j)
-          for (int i = 0; i < 6; ++i) d_trial_.tangent.row(6 * j + i) = derivatives_of(ct(i, j));
+          for (int i = 0; i < 6; ++i) d_trial_.tangent.row(6 * j + i) = row(ct(i, j));
       }
     }
   }

@@ -10,6 +10,7 @@
 #include "forward/material/material_point.hpp"
 #include "forward/material/sensitivity_scalar.hpp"
 
+#include <memory>
 #include <string>
 
 namespace spifit::io {
@@ -36,6 +37,21 @@ using SensLaw6 = material::ReturnMapping<material::SensitivityScalar, 6>;
 using Voigt6S = Eigen::Matrix<material::SensitivityScalar, 6, 1>;
 using Voigt6x6S = Eigen::Matrix<material::SensitivityScalar, 6, 6>;
 using SensColumns6 = Eigen::Matrix<double, 6, material::kSensitivitySlots>;
+
+// The seeded law of a run's derivative pass, and the same law on the narrowest Jets that hold its
+// `count` parameters (two slots for one or two, four for three or four; none from five on): the
+// points' Jet arithmetic scales with the slots (docs/design/sensitivities.md, "Cost"). Slot k of
+// a narrow law is slot k of the full one, and its results come back with the other slots zero.
+using TwoSlotLaw6 = material::ReturnMapping<ceres::Jet<double, 2>, 6>;
+using FourSlotLaw6 = material::ReturnMapping<material::FourSlotScalar, 6>;
+struct SolidSensitivityLaw {
+  // std::logic_error when the law is seeded beyond its count's slots.
+  explicit SolidSensitivityLaw(const material::MaterialParams<material::SensitivityScalar>& law, const material::ReturnMappingOptions& options = {},
+                               int count = material::kSensitivitySlots);
+  SensLaw6 full;
+  std::unique_ptr<const TwoSlotLaw6> two;
+  std::unique_ptr<const FourSlotLaw6> four;
+};
 
 // The first `count` columns of a derivative table (checkpoints), and back into a table of the
 // same rows whose other columns become zero (io::ArchiveError, naming `what`, on another size).
@@ -89,7 +105,7 @@ class SolidPoint {
   // derivatives are neither formed nor kept (an element that does not build on the tangent).
   void enable_sensitivities(bool tangent_derivatives = true);
   bool sensitivities_enabled() const { return sensitivities_; }
-  PointStatus sensitivities(const SensLaw6& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T);
+  PointStatus sensitivities(const SolidSensitivityLaw& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T);
   const SolidPointDerivatives& committed_derivatives() const { return d_; }
   // The committed derivatives, slots 0 .. count - 1 (checkpoints).
   void save_sensitivities(io::BinaryWriter& w, int count) const;
@@ -119,6 +135,8 @@ class SolidPoint {
   SolidPointDerivatives d_, d_trial_;
   bool exact_tangents_ = false, tangent_exact_ = true;
   PointStatus integrate(const Voigt6& eps, Voigt6* T, Voigt6x6* tangent, bool tangent_wanted);
+  template <int N>
+  PointStatus sensitivities_on(const material::ReturnMapping<ceres::Jet<double, N>, 6>& law, const Voigt6& eps, const SensColumns6* deps, Voigt6S* T);
 };
 
 }  // namespace spifit::element

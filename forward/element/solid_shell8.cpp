@@ -452,7 +452,7 @@ void SolidShell8::load_state(io::BinaryReader& r) {
   thickness_ratio_ = thickness_ratio_trial_ = r.f64();
 }
 
-void SolidShell8::enable_sensitivities(const SensLaw6& law, int count) {
+void SolidShell8::enable_sensitivities(const SolidSensitivityLaw& law, int count) {
   (void)law;  // the points read it at every pass
   if (count < 1 || count > material::kSensitivitySlots)
     throw std::invalid_argument("solid-shell sensitivities: " + std::to_string(count) + " parameters");
@@ -473,7 +473,7 @@ void SolidShell8::set_exact_tangents(bool exact) {
   for (auto& p : points_) p.set_exact_tangents(exact);
 }
 
-PointStatus SolidShell8::sensitivities(const HexCorners& xc, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) {
+PointStatus SolidShell8::sensitivities(const HexCorners& xc, const SolidSensitivityLaw& law, const HexSensitivities* du, HexSensitivities* load) {
   using material::derivatives_of;
   using SensRow = material::SensitivityRow;
   using EnhancedColumns = Eigen::Matrix<double, kEnhanced, material::kSensitivitySlots>;

@@ -92,8 +92,8 @@ class SolidShell8 final : public SolidElement {
   void load_state(io::BinaryReader& r) override;
 
   // Direct differentiation (SolidElement): the points' derivatives and the thickness's.
-  void enable_sensitivities(const SensLaw6& law, int count) override;
-  PointStatus sensitivities(const HexCorners& x, const SensLaw6& law, const HexSensitivities* du, HexSensitivities* load) override;
+  void enable_sensitivities(const SolidSensitivityLaw& law, int count) override;
+  PointStatus sensitivities(const HexCorners& x, const SolidSensitivityLaw& law, const HexSensitivities* du, HexSensitivities* load) override;
   const material::SensitivityRow& thickness_ratio_sensitivity() const override { return dthickness_; }
   bool tangent_was_exact() const override;
   // With exact tangents an evaluation at the converged iterate keeps its enhanced parameters and

@@ -204,7 +204,8 @@ class ReturnMapping {
     Mat Minv;  // inverse of Mat(dl): closed-form cofactors for 3x3, LU for 6x6
     // Registered yield function: d sigma_eq / d xi, the weighted flow w n, d (dl w n) / d dl and
     // d (w n) / d xi at xi (evaluate_general).
-    Vec grad, wn, n;
+    // Set (zero) even where unused, so that copies of an evaluation read no indeterminate values.
+    Vec grad = Vec::Zero(), wn = Vec::Zero(), n = Vec::Zero();
     Mat hess;
     T dl;  // the multiplier of this evaluation
     bool valid = false;

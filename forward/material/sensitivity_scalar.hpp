@@ -53,6 +53,16 @@ inline SensitivityScalar narrowed<kSensitivitySlots>(const SensitivityScalar& s)
 template <>
 inline SensitivityScalar widened<kSensitivitySlots>(const SensitivityScalar& s) { return s; }
 
+// Whether a seeded law has derivatives in a slot from `count` on (narrowing it would drop them).
+inline bool seeded_beyond(const MaterialParams<SensitivityScalar>& law, int count) {
+  bool beyond = false;
+  law.map<double>([&](const SensitivityScalar& x) {
+    for (int k = count < 0 ? 0 : count; k < kSensitivitySlots; ++k) beyond = beyond || x.v(k) != 0.0;
+    return 0.0;
+  });
+  return beyond;
+}
+
 // The seeded parameters with their first N slots.
 template <int N>
 MaterialParams<ceres::Jet<double, N>> narrowed_params(const MaterialParams<SensitivityScalar>& p) {

@@ -230,7 +230,7 @@ void SolidFamily::enable_sensitivities(const material::MaterialParams<material::
   sensitivity_count_ = count;
   material::ReturnMappingOptions o;
   o.single_jet_evaluation = true;  // the pseudo-load's pass; the update's asks for the tangent
-  sensitivity_law_ = std::make_unique<element::SensLaw6>(law, o);
+  sensitivity_law_ = std::make_unique<element::SolidSensitivityLaw>(law, o, count);
   for (auto& el : elements_) el->enable_sensitivities(*sensitivity_law_, count);
 }
 

@@ -111,7 +111,7 @@ class SolidFamily final : public ElementFamily {
   std::vector<int> face_of_element_;  // index into top_ (-1: no top face)
   std::vector<std::string> warnings_;
   int sensitivity_count_ = 0;
-  std::unique_ptr<element::SensLaw6> sensitivity_law_;
+  std::unique_ptr<element::SolidSensitivityLaw> sensitivity_law_;
   // The contributions' derivatives on element e's top face (if it has one): their pseudo-load
   // (du null) or their trial derivatives (du given), added to *load's rows of the face's
   // corners, and the derivative of their force on the tool.

@@ -73,7 +73,7 @@ inline std::unique_ptr<SolidElement> expect_path_derivatives_match(const SolidFa
   constexpr int kSlots = 6;
   const material::MaterialParams<double> p = aa3003_af();
   const SolidPoint::Law law(p);
-  const SensLaw6 slaw(material::seeded_params(p, spifit::test::path_seeds(p)));
+  const SolidSensitivityLaw slaw(material::seeded_params(p, spifit::test::path_seeds(p)));
   std::unique_ptr<SolidElement> el = make(law);
   el->enable_sensitivities(slaw, kSlots);
   std::vector<Eigen::Matrix<double, 24, kSlots>> ddm;
@@ -102,7 +102,7 @@ inline std::unique_ptr<SolidElement> expect_path_derivatives_match(const SolidFa
 inline void expect_thickness_ratio_follows_the_corners(const SolidFactory& make) {
   const material::MaterialParams<double> p = aa3003();
   const SolidPoint::Law law(p);
-  const SensLaw6 slaw(material::seeded_params(p, {}));
+  const SolidSensitivityLaw slaw(material::seeded_params(p, {}), {}, 1);
   const std::unique_ptr<SolidElement> el = make(law);
   el->enable_sensitivities(slaw, 1);
   const int n = 3;
